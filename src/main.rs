@@ -1,1 +1,114 @@
-fn main() {}
+//! The `thrustline` binary: `thrustline serve [--addr HOST:PORT]` runs the service,
+//! `thrustline openapi` prints the OpenAPI document.
+
+use std::net::SocketAddr;
+use std::process::ExitCode;
+
+use thrustline::Settings;
+
+const USAGE: &str =
+    "usage: thrustline serve [--addr HOST:PORT]   run the service (default 127.0.0.1:8080)
+       thrustline openapi                    print the OpenAPI document
+
+Environment: THRUSTLINE_ADDR, THRUSTLINE_MAX_RUNNING, THRUSTLINE_MAX_QUEUED,
+THRUSTLINE_BODY_LIMIT, THRUSTLINE_SOLVE_TIMEOUT_SECS, RUST_LOG (default info).";
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("openapi") => {
+            print!("{}", thrustline::openapi::openapi_json());
+            ExitCode::SUCCESS
+        }
+        Some("serve") => match parse_serve(&args[1..]) {
+            Ok(settings) => run(settings),
+            Err(message) => {
+                eprintln!("{message}\n\n{USAGE}");
+                ExitCode::from(2)
+            }
+        },
+        Some("-h" | "--help" | "help") => {
+            println!("{USAGE}");
+            ExitCode::SUCCESS
+        }
+        _ => {
+            eprintln!("{USAGE}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn parse_serve(args: &[String]) -> Result<Settings, String> {
+    let mut settings = Settings::from_env()?;
+    let mut rest = args.iter();
+    while let Some(arg) = rest.next() {
+        let value = match arg.split_once('=') {
+            Some(("--addr", value)) => value.to_owned(),
+            _ if arg == "--addr" => rest.next().ok_or("--addr needs HOST:PORT")?.clone(),
+            _ => return Err(format!("unknown argument {arg:?}")),
+        };
+        settings.addr = value
+            .parse::<SocketAddr>()
+            .map_err(|_| format!("--addr {value:?} is not HOST:PORT"))?;
+    }
+    Ok(settings)
+}
+
+fn run(settings: Settings) -> ExitCode {
+    tracing_subscriber::fmt()
+        .with_env_filter(
+            tracing_subscriber::EnvFilter::try_from_default_env()
+                .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info")),
+        )
+        .init();
+    let runtime = match tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()
+    {
+        Ok(runtime) => runtime,
+        Err(error) => {
+            eprintln!("cannot start the runtime: {error}");
+            return ExitCode::FAILURE;
+        }
+    };
+    runtime.block_on(async move {
+        let listener = match tokio::net::TcpListener::bind(settings.addr).await {
+            Ok(listener) => listener,
+            Err(error) => {
+                eprintln!("cannot listen on {}: {error}", settings.addr);
+                return ExitCode::FAILURE;
+            }
+        };
+        tracing::info!(addr = %settings.addr, "thrustline listening");
+        match thrustline::serve(listener, settings, shutdown_signal()).await {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("server error: {error}");
+                ExitCode::FAILURE
+            }
+        }
+    })
+}
+
+/// Completes on Ctrl-C or SIGTERM.
+async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let terminate = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut signal) => {
+                signal.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let terminate = std::future::pending::<()>();
+    tokio::select! {
+        () = ctrl_c => {},
+        () = terminate => {},
+    }
+    tracing::info!("shutting down: finishing in-flight requests");
+}

@@ -163,7 +163,8 @@ impl SlopeGeometry {
             f64::MAX,
             "a finite number ≥ 0",
         )?;
-        let lower_end = (-circle.lower_end_factor * h, 0.0);
+        // `+ 0.0` turns −0.0 (F_e = 0) into 0.0.
+        let lower_end = (-circle.lower_end_factor * h + 0.0, 0.0);
         let centre = (lower_end.0 + circle.x, circle.y);
         let radius = circle.x.hypot(circle.y);
 

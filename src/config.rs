@@ -1,0 +1,69 @@
+//! Service settings, read once at start-up from flags and `THRUSTLINE_*` environment variables
+//! and passed down; there is no global configuration.
+
+use std::net::SocketAddr;
+use std::time::Duration;
+
+/// Settings of a running service.
+#[derive(Debug, Clone)]
+pub struct Settings {
+    /// Address to listen on. Defaults to 127.0.0.1:8080 (`THRUSTLINE_ADDR`).
+    pub addr: SocketAddr,
+    /// Solves running at once. Defaults to the number of CPUs (`THRUSTLINE_MAX_RUNNING`).
+    pub max_running: usize,
+    /// Solves allowed to wait for a worker before requests get 503. Defaults to 64
+    /// (`THRUSTLINE_MAX_QUEUED`).
+    pub max_queued: usize,
+    /// Largest request body in bytes. Defaults to 4 MiB (`THRUSTLINE_BODY_LIMIT`).
+    pub body_limit: usize,
+    /// Time a request may wait for its solve before a 503. Defaults to 30 s
+    /// (`THRUSTLINE_SOLVE_TIMEOUT_SECS`).
+    pub solve_timeout: Duration,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            addr: SocketAddr::from(([127, 0, 0, 1], 8080)),
+            max_running: std::thread::available_parallelism().map_or(2, |n| n.get()),
+            max_queued: 64,
+            body_limit: 4 * 1024 * 1024,
+            solve_timeout: Duration::from_secs(30),
+        }
+    }
+}
+
+impl Settings {
+    /// Defaults overridden by the `THRUSTLINE_*` environment variables that are set.
+    pub fn from_env() -> Result<Self, String> {
+        let mut settings = Self::default();
+        fn read<T: std::str::FromStr>(name: &str) -> Result<Option<T>, String> {
+            match std::env::var(name) {
+                Ok(text) => text
+                    .parse()
+                    .map(Some)
+                    .map_err(|_| format!("{name}={text:?} is not valid")),
+                Err(_) => Ok(None),
+            }
+        }
+        if let Some(addr) = read("THRUSTLINE_ADDR")? {
+            settings.addr = addr;
+        }
+        if let Some(n) = read::<usize>("THRUSTLINE_MAX_RUNNING")? {
+            settings.max_running = n.max(1);
+        }
+        if let Some(n) = read("THRUSTLINE_MAX_QUEUED")? {
+            settings.max_queued = n;
+        }
+        if let Some(n) = read("THRUSTLINE_BODY_LIMIT")? {
+            settings.body_limit = n;
+        }
+        if let Some(seconds) = read::<f64>("THRUSTLINE_SOLVE_TIMEOUT_SECS")? {
+            if !(seconds.is_finite() && seconds > 0.0) {
+                return Err("THRUSTLINE_SOLVE_TIMEOUT_SECS must be a positive number".to_owned());
+            }
+            settings.solve_timeout = Duration::from_secs_f64(seconds);
+        }
+        Ok(settings)
+    }
+}

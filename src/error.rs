@@ -1,0 +1,181 @@
+//! The service's error type and its problem+json form (RFC 9457).
+//!
+//! Every error a client can cause comes out as `application/problem+json` with a `detail` that
+//! names the offending field and, where there is one, the allowed range. Server faults (a solver
+//! panic, a lost worker) are logged once here and answered with a bare 500 that says nothing of
+//! the internals.
+
+use axum::extract::rejection::JsonRejection;
+use axum::extract::FromRequest;
+use axum::http::{header, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use serde::Serialize;
+use utoipa::ToSchema;
+
+/// Media type of error bodies.
+pub const PROBLEM_JSON: &str = "application/problem+json";
+
+/// An RFC 9457 problem details body.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct Problem {
+    /// A URI reference that identifies the problem type (`about:blank` for the plain HTTP meaning).
+    #[schema(example = "about:blank")]
+    pub r#type: String,
+    /// Short summary of the problem type.
+    #[schema(example = "Unprocessable Content")]
+    pub title: String,
+    /// The HTTP status code.
+    #[schema(example = 422)]
+    pub status: u16,
+    /// What went wrong, naming the offending field and the allowed range.
+    #[schema(example = "slices = 0 is out of range: an integer 1 ≤ slices ≤ 10000")]
+    pub detail: String,
+    /// The offending field as a dotted path into the request body, when there is one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = "slices")]
+    pub field: Option<String>,
+}
+
+/// Everything a handler can fail with.
+#[derive(Debug, thiserror::Error)]
+pub enum ApiError {
+    /// The body is not JSON, or not the JSON of this request type.
+    #[error("{detail}")]
+    BadRequest {
+        /// Status to answer with (400, 413, 415 or 422).
+        status: StatusCode,
+        /// The message for the client.
+        detail: String,
+    },
+    /// The request is well-formed but a value is out of range or inconsistent.
+    #[error("{field}: {detail}")]
+    Invalid {
+        /// Dotted path of the field at fault.
+        field: String,
+        /// What is wrong with it and what is allowed.
+        detail: String,
+    },
+    /// The bearer token is missing or wrong.
+    #[error("missing or invalid bearer token")]
+    Unauthorized,
+    /// The solve queue is full; try again later.
+    #[error("the service is at capacity: {queued} solves are waiting")]
+    Overloaded {
+        /// Solves already waiting.
+        queued: usize,
+    },
+    /// The solve did not finish within the request's time limit.
+    #[error("the calculation did not finish within {seconds} s")]
+    TimedOut {
+        /// The limit that was exceeded.
+        seconds: f64,
+    },
+    /// A fault of the server (a panic in a solve, a lost worker).
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+impl ApiError {
+    /// A validation failure of `field`.
+    pub fn invalid(field: impl Into<String>, detail: impl Into<String>) -> Self {
+        Self::Invalid {
+            field: field.into(),
+            detail: detail.into(),
+        }
+    }
+
+    /// The HTTP status of this error.
+    pub fn status(&self) -> StatusCode {
+        match self {
+            Self::BadRequest { status, .. } => *status,
+            Self::Invalid { .. } => StatusCode::UNPROCESSABLE_ENTITY,
+            Self::Unauthorized => StatusCode::UNAUTHORIZED,
+            Self::Overloaded { .. } => StatusCode::SERVICE_UNAVAILABLE,
+            Self::TimedOut { .. } => StatusCode::SERVICE_UNAVAILABLE,
+            Self::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
+        }
+    }
+
+    fn problem(&self) -> Problem {
+        let status = self.status();
+        let (detail, field) = match self {
+            Self::Invalid { field, detail } if detail.starts_with("Failed to deserialize") => {
+                (detail.clone(), Some(field.clone()))
+            }
+            Self::Invalid { field, detail } => (format!("{field}: {detail}"), Some(field.clone())),
+            Self::Internal(_) => (
+                "the server failed to complete the calculation".to_owned(),
+                None,
+            ),
+            other => (other.to_string(), None),
+        };
+        Problem {
+            r#type: "about:blank".to_owned(),
+            title: status.canonical_reason().unwrap_or("Error").to_owned(),
+            status: status.as_u16(),
+            detail,
+            field,
+        }
+    }
+}
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        let status = self.status();
+        if status.is_server_error()
+            && !matches!(self, Self::Overloaded { .. } | Self::TimedOut { .. })
+        {
+            // The one place a 5xx is logged; the client gets no internals.
+            tracing::error!(error = %self, "request failed");
+        }
+        let body = serde_json::to_vec(&self.problem()).unwrap_or_default();
+        let mut response = (status, body).into_response();
+        let headers = response.headers_mut();
+        headers.insert(header::CONTENT_TYPE, HeaderValue::from_static(PROBLEM_JSON));
+        if matches!(self, Self::Overloaded { .. } | Self::TimedOut { .. }) {
+            headers.insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
+        }
+        if matches!(self, Self::Unauthorized) {
+            headers.insert(header::WWW_AUTHENTICATE, HeaderValue::from_static("Bearer"));
+        }
+        response
+    }
+}
+
+impl From<JsonRejection> for ApiError {
+    fn from(rejection: JsonRejection) -> Self {
+        let status = match &rejection {
+            // Wrong types, missing or unknown fields: the body is JSON but not this request.
+            JsonRejection::JsonDataError(_) => StatusCode::UNPROCESSABLE_ENTITY,
+            JsonRejection::JsonSyntaxError(_) => StatusCode::BAD_REQUEST,
+            JsonRejection::MissingJsonContentType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            other => other.status(),
+        };
+        let detail = rejection.body_text();
+        match data_error_field(&detail) {
+            Some(field) if status == StatusCode::UNPROCESSABLE_ENTITY => Self::Invalid {
+                field: field.to_owned(),
+                detail: detail.clone(),
+            },
+            _ => Self::BadRequest { status, detail },
+        }
+    }
+}
+
+/// The field path serde reports in a data error ("…target type: slope.foo: unknown field…").
+fn data_error_field(detail: &str) -> Option<&str> {
+    let rest = detail.split_once("target type: ")?.1;
+    let (path, _) = rest.split_once(": ")?;
+    (!path.is_empty() && !path.contains(' ')).then_some(path)
+}
+
+/// `axum::Json` whose rejections are problem+json.
+#[derive(Debug, FromRequest)]
+#[from_request(via(axum::Json), rejection(ApiError))]
+pub struct ApiJson<T>(pub T);
+
+impl<T: Serialize> IntoResponse for ApiJson<T> {
+    fn into_response(self) -> Response {
+        axum::Json(self.0).into_response()
+    }
+}

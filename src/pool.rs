@@ -1,0 +1,89 @@
+//! The bounded pool that runs solves off the async workers.
+//!
+//! A solve takes an admission permit (solves running plus waiting, bounded: beyond it the
+//! request is answered 503 with `Retry-After` instead of queueing without end), then a worker
+//! permit (solves running at once), and runs in tokio's blocking pool inside the request's
+//! tracing span. `spawn_blocking` cannot be cancelled, so every solve carries its own iteration
+//! and time limits; the deadline here only stops the client from waiting past it.
+
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use tokio::sync::Semaphore;
+
+use crate::error::ApiError;
+
+/// Limits of the solve pool.
+#[derive(Debug, Clone)]
+pub struct SolvePool {
+    running: Arc<Semaphore>,
+    admitted: Arc<Semaphore>,
+    max_running: usize,
+    max_queued: usize,
+    deadline: Duration,
+}
+
+impl SolvePool {
+    /// A pool running at most `max_running` solves at once with at most `max_queued` waiting;
+    /// a solve that has not answered within `deadline` is answered 503.
+    pub fn new(max_running: usize, max_queued: usize, deadline: Duration) -> Self {
+        let max_running = max_running.max(1);
+        Self {
+            running: Arc::new(Semaphore::new(max_running)),
+            admitted: Arc::new(Semaphore::new(max_running + max_queued)),
+            max_running,
+            max_queued,
+            deadline,
+        }
+    }
+
+    /// Solves admitted but waiting for a worker right now.
+    pub fn queue_depth(&self) -> usize {
+        let admitted = self.max_running + self.max_queued - self.admitted.available_permits();
+        let running = self.max_running - self.running.available_permits();
+        admitted.saturating_sub(running)
+    }
+
+    /// Solves running right now.
+    pub fn running(&self) -> usize {
+        self.max_running - self.running.available_permits()
+    }
+
+    /// Runs `solve` on the blocking pool and returns its value with the time it took.
+    pub async fn run<T, F>(&self, solve: F) -> Result<(T, Duration), ApiError>
+    where
+        T: Send + 'static,
+        F: FnOnce() -> T + Send + 'static,
+    {
+        let _admission =
+            self.admitted
+                .clone()
+                .try_acquire_owned()
+                .map_err(|_| ApiError::Overloaded {
+                    queued: self.max_queued,
+                })?;
+        let running = self
+            .running
+            .clone()
+            .acquire_owned()
+            .await
+            .map_err(|_| ApiError::Internal("solve pool closed".to_owned()))?;
+        let span = tracing::Span::current();
+        let task = tokio::task::spawn_blocking(move || {
+            let _entered = span.enter();
+            let _running = running;
+            let start = Instant::now();
+            let value = solve();
+            (value, start.elapsed())
+        });
+        match tokio::time::timeout(self.deadline, task).await {
+            Ok(Ok(result)) => Ok(result),
+            Ok(Err(join_error)) => Err(ApiError::Internal(format!(
+                "solve task failed: {join_error}"
+            ))),
+            Err(_) => Err(ApiError::TimedOut {
+                seconds: self.deadline.as_secs_f64(),
+            }),
+        }
+    }
+}

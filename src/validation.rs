@@ -1,0 +1,70 @@
+//! Range checks applied to a request once, at the edge, before anything reaches the solver.
+//! Each failure names the field by its dotted path in the body and states the allowed range.
+
+use crate::error::ApiError;
+
+/// A finite number in `[min, max]`; `min_open` excludes `min` itself.
+pub fn number(
+    field: &str,
+    value: f64,
+    min: f64,
+    min_open: bool,
+    max: f64,
+) -> Result<f64, ApiError> {
+    let above = if min_open { value > min } else { value >= min };
+    if value.is_finite() && above && value <= max {
+        return Ok(value);
+    }
+    let lower = match (min_open, min == f64::MIN) {
+        (_, true) => String::new(),
+        (true, false) => format!("{min} < "),
+        (false, false) => format!("{min} ≤ "),
+    };
+    let upper = if max == f64::MAX {
+        String::new()
+    } else {
+        format!(" ≤ {max}")
+    };
+    Err(ApiError::invalid(
+        field,
+        format!("{value} is out of range: allowed is a finite number {lower}{field}{upper}"),
+    ))
+}
+
+/// Any finite number.
+pub fn finite(field: &str, value: f64) -> Result<f64, ApiError> {
+    number(field, value, f64::MIN, false, f64::MAX)
+}
+
+/// An integer count in `[min, max]`.
+pub fn count(field: &str, value: usize, min: usize, max: usize) -> Result<usize, ApiError> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(ApiError::invalid(
+            field,
+            format!("{value} is out of range: allowed is an integer {min} ≤ {field} ≤ {max}"),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_the_field_and_the_range() {
+        let err = number("slope.height", -1.0, 0.0, true, f64::MAX).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "slope.height: -1 is out of range: allowed is a finite number 0 < slope.height"
+        );
+        let err = count("slices", 0, 1, 10_000).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "slices: 0 is out of range: allowed is an integer 1 ≤ slices ≤ 10000"
+        );
+        assert!(finite("x", f64::NAN).is_err());
+        assert!(finite("x", f64::INFINITY).is_err());
+    }
+}

@@ -1,0 +1,124 @@
+//! A real server on 127.0.0.1:0 for the HTTP tests, and the SPEC's example requests.
+#![allow(dead_code)]
+// Test scaffolding: a failed bind or request should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+use serde_json::{json, Value};
+
+/// A running server; it stops when the test's runtime ends.
+pub struct Server {
+    pub base: String,
+    pub client: reqwest::Client,
+}
+
+impl Server {
+    pub async fn start() -> Self {
+        Self::start_with(thrustline::Settings::default()).await
+    }
+
+    pub async fn start_with(mut settings: thrustline::Settings) -> Self {
+        let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+        settings.addr = listener.local_addr().unwrap();
+        let base = format!("http://{}", settings.addr);
+        tokio::spawn(thrustline::serve(
+            listener,
+            settings,
+            std::future::pending(),
+        ));
+        Self {
+            base,
+            client: reqwest::Client::new(),
+        }
+    }
+
+    /// POSTs `body` to `path`; returns the status, the content type and the JSON body.
+    pub async fn post(&self, path: &str, body: &Value) -> (u16, String, Value) {
+        let response = self
+            .client
+            .post(format!("{}{path}", self.base))
+            .json(body)
+            .send()
+            .await
+            .unwrap();
+        Self::parts(response).await
+    }
+
+    pub async fn post_raw(
+        &self,
+        path: &str,
+        content_type: &str,
+        body: &str,
+    ) -> (u16, String, Value) {
+        let response = self
+            .client
+            .post(format!("{}{path}", self.base))
+            .header("content-type", content_type)
+            .body(body.to_owned())
+            .send()
+            .await
+            .unwrap();
+        Self::parts(response).await
+    }
+
+    pub async fn get(&self, path: &str) -> (u16, String, Value) {
+        let response = self
+            .client
+            .get(format!("{}{path}", self.base))
+            .send()
+            .await
+            .unwrap();
+        Self::parts(response).await
+    }
+
+    async fn parts(response: reqwest::Response) -> (u16, String, Value) {
+        let status = response.status().as_u16();
+        let content_type = response
+            .headers()
+            .get("content-type")
+            .map(|v| v.to_str().unwrap().to_owned())
+            .unwrap_or_default();
+        let text = response.text().await.unwrap();
+        let body = serde_json::from_str(&text).unwrap_or(Value::String(text));
+        (status, content_type, body)
+    }
+}
+
+/// Spencer (1967) example, SPEC §3.
+pub fn spencer_example() -> Value {
+    json!({
+        "slope": { "height": 30.48, "length": 60.96 },
+        "circle": { "x": 9.63168, "y": 63.76416, "lower_end_factor": 0.0 },
+        "slices": 100,
+        "soil": { "unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
+                  "pore_pressure_ratio": 0.5 }
+    })
+}
+
+/// Sets `body[path] = value` for a dotted path (creating nothing: the path must exist).
+pub fn with(mut body: Value, path: &str, value: Value) -> Value {
+    let mut target = &mut body;
+    let parts: Vec<&str> = path.split('.').collect();
+    for part in &parts[..parts.len() - 1] {
+        target = &mut target[*part];
+    }
+    target[parts[parts.len() - 1]] = value;
+    body
+}
+
+/// Asserts an RFC 9457 problem whose detail names `field`.
+pub fn assert_problem(
+    status: u16,
+    content_type: &str,
+    body: &Value,
+    expected_status: u16,
+    field: &str,
+) {
+    assert_eq!(status, expected_status, "{body}");
+    assert_eq!(content_type, "application/problem+json", "{body}");
+    assert_eq!(body["status"], expected_status, "{body}");
+    let detail = body["detail"].as_str().unwrap();
+    assert!(
+        detail.contains(field),
+        "detail {detail:?} does not name {field}"
+    );
+}

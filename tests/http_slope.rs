@@ -1,0 +1,169 @@
+//! `POST /slope/spencer` over a real socket.
+
+mod common;
+
+use common::{assert_problem, spencer_example, with, Server};
+use serde_json::json;
+
+#[tokio::test]
+async fn spencer_example_over_http() {
+    let server = Server::start().await;
+    let (status, content_type, body) = server.post("/slope/spencer", &spencer_example()).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(content_type, "application/json");
+    // Thesis §5.6 at N = 100: F = 1.06958, θ = 22.432 (half a unit in the last printed digit).
+    let f = body["factor_of_safety"].as_f64().unwrap();
+    let theta = body["theta_deg"].as_f64().unwrap();
+    assert!((f - 1.06958).abs() <= 5e-6, "F = {f}");
+    assert!((theta - 22.432).abs() <= 5e-4, "θ = {theta}");
+    assert_eq!(body["converged"], true);
+    assert_eq!(body["status"], "converged");
+    // SPEC §2.3: radius 64.4875, upper exit x ≈ 64.87, Bishop ≈ 1.040.
+    assert!((body["radius"].as_f64().unwrap() - 64.4875).abs() < 5e-5);
+    assert!((body["circle"]["upper_exit"]["x"].as_f64().unwrap() - 64.87).abs() < 5e-3);
+    assert!((body["bishop_factor_of_safety"].as_f64().unwrap() - 1.040).abs() < 5e-4);
+    assert_eq!(body["slices"].as_array().unwrap().len(), 100);
+    assert_eq!(body["thrust_line"].as_array().unwrap().len(), 99);
+    assert_eq!(body["slices"][0]["slice"], 1);
+    assert!(body["iterations"].as_u64().unwrap() >= 1);
+}
+
+#[tokio::test]
+async fn converged_spencer_example_at_1000_slices() {
+    // SPEC §2.3: F = 1.0695 ± 2e-4 and θ = 22.43° ± 0.01°.
+    let server = Server::start().await;
+    let body = with(spencer_example(), "slices", json!(1000));
+    let (status, _, body) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200);
+    assert!((body["factor_of_safety"].as_f64().unwrap() - 1.0695).abs() < 2e-4);
+    assert!((body["theta_deg"].as_f64().unwrap() - 22.43).abs() < 0.01);
+}
+
+#[tokio::test]
+async fn out_of_range_numbers_are_422_naming_the_field() {
+    let server = Server::start().await;
+    let cases = [
+        ("slope.height", json!(-30.48)),
+        ("slope.height", json!(0.0)),
+        ("slope.length", json!(0)),
+        ("slices", json!(0)),
+        ("slices", json!(1_000_000)),
+        ("circle.y", json!(-5.0)),
+        ("circle.lower_end_factor", json!(-1.0)),
+        ("soil.unit_weight", json!(0.0)),
+        ("soil.cohesion", json!(-1.0)),
+        ("soil.friction_angle_deg", json!(90.0)),
+        ("soil.pore_pressure_ratio", json!(1.5)),
+    ];
+    for (field, value) in cases {
+        let body = with(spencer_example(), field, value.clone());
+        let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &body, 422, field);
+        assert_eq!(body["field"], field, "{value}");
+    }
+}
+
+#[tokio::test]
+async fn soil_with_no_strength_is_422() {
+    let server = Server::start().await;
+    let body = with(spencer_example(), "soil.cohesion", json!(0.0));
+    let body = with(body, "soil.friction_angle_deg", json!(0.0));
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "soil.cohesion");
+}
+
+#[tokio::test]
+async fn circle_that_misses_the_slope_is_422() {
+    let server = Server::start().await;
+    // Centre behind the lower end, in front of the toe: the arc rises out of level ground.
+    let body = with(
+        spencer_example(),
+        "circle",
+        json!({"x": -5.0, "y": 40.0, "lower_end_factor": 0.5}),
+    );
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "circle.x");
+    // Centre so low that the lower half of the circle never comes back to the surface.
+    let body = with(spencer_example(), "circle", json!({"x": 90.0, "y": 5.0}));
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "circle.y");
+}
+
+#[tokio::test]
+async fn external_load_on_a_missing_slice_is_422() {
+    let server = Server::start().await;
+    let body = with(spencer_example(), "slices", json!(10));
+    let mut body = body;
+    body["external_loads"] = json!([{"slice": 11, "fx": 0.0, "fy": -1.0, "moment": 0.0}]);
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "external_loads[0].slice");
+}
+
+#[tokio::test]
+async fn unknown_and_missing_fields_and_bad_json() {
+    let server = Server::start().await;
+    let body = with(spencer_example(), "slope.foo", json!(1));
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "slope.foo");
+    assert_eq!(body["field"], "slope.foo");
+
+    let mut body = spencer_example();
+    body.as_object_mut().unwrap().remove("soil");
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "soil");
+
+    let body = with(spencer_example(), "slices", json!("many"));
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &body, 422, "slices");
+
+    let (status, content_type, body) = server
+        .post_raw("/slope/spencer", "application/json", "{\"slope\"")
+        .await;
+    assert_eq!(status, 400);
+    assert_eq!(content_type, "application/problem+json");
+    assert!(body["detail"].as_str().unwrap().contains("JSON"));
+
+    let (status, content_type, _) = server.post_raw("/slope/spencer", "text/plain", "{}").await;
+    assert_eq!(status, 415);
+    assert_eq!(content_type, "application/problem+json");
+
+    // A number too large for f64 is not Infinity: it is rejected by the parser.
+    let text = spencer_example().to_string().replace("30.48", "1e999");
+    let (status, content_type, _) = server
+        .post_raw("/slope/spencer", "application/json", &text)
+        .await;
+    assert!(status == 400 || status == 422, "{status}");
+    assert_eq!(content_type, "application/problem+json");
+}
+
+#[tokio::test]
+async fn oversized_body_is_413() {
+    let server = Server::start_with(thrustline::Settings {
+        body_limit: 1024,
+        ..Default::default()
+    })
+    .await;
+    let mut body = spencer_example();
+    body["external_loads"] = json!(vec![json!({"slice": 1, "fx": 0.0}); 200]);
+    let (status, content_type, _) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 413);
+    assert_eq!(content_type, "application/problem+json");
+}
+
+#[tokio::test]
+async fn healthz_openapi_docs_and_unknown_routes() {
+    let server = Server::start().await;
+    let (status, _, body) = server.get("/healthz").await;
+    assert_eq!(status, 200);
+    assert_eq!(body["status"], "ok");
+    let (status, _, body) = server.get("/openapi.json").await;
+    assert_eq!(status, 200);
+    assert_eq!(body["openapi"], "3.1.0");
+    assert!(body["paths"]["/slope/spencer"]["post"].is_object());
+    let (status, _, body) = server.get("/docs/").await;
+    assert_eq!(status, 200);
+    assert!(body.as_str().unwrap().contains("swagger"), "{body}");
+    let (status, content_type, _) = server.get("/nowhere").await;
+    assert_eq!(status, 404);
+    assert_eq!(content_type, "application/problem+json");
+}
