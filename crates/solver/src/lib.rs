@@ -10,5 +10,6 @@
 //! - [`slope`]: Spencer's method for one slip circle (SPEC §2).
 #![warn(missing_docs)]
 
+pub mod arch;
 pub mod roots;
 pub mod slope;

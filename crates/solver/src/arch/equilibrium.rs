@@ -1,0 +1,127 @@
+//! The equilibrium equations H r + λ₀·w + λ·p = 0 of a rigid-block assembly (Livesley 1978,
+//! §2.2): three rows per block (force in x, force in y, moment about the block centroid), three
+//! columns per interface (q, s, t). See the module `arch` for the sign conventions.
+//!
+//! The system is assembled non-dimensionally so that the linear programme is well scaled
+//! whatever the units: forces are divided by the total dead weight W and moments by W·L, L being
+//! the size of the assembly. Resultants therefore come out of the solver in units of W.
+
+use super::geometry::Assembly;
+
+/// Number of stress resultants per interface (q, s, t).
+pub const RESULTANTS_PER_INTERFACE: usize = 3;
+/// Number of equilibrium equations per block (x, y, moment).
+pub const EQUATIONS_PER_BLOCK: usize = 3;
+
+/// A live load: a force (fx, fy) applied at `point` of block `block` plus a moment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LiveLoad {
+    /// Index of the loaded block (0-based).
+    pub block: usize,
+    /// Point of application.
+    pub point: (f64, f64),
+    /// Horizontal force component.
+    pub fx: f64,
+    /// Vertical force component (up positive).
+    pub fy: f64,
+    /// Applied moment, counter-clockwise positive.
+    pub moment: f64,
+}
+
+/// The assembled, scaled equilibrium equations.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Equilibrium {
+    /// Number of rows (3 per block).
+    pub rows: usize,
+    /// Number of resultant columns (3 per interface).
+    pub columns: usize,
+    /// Non-zeros of H as (row, column, value).
+    pub triplets: Vec<(usize, usize, f64)>,
+    /// Dead-load vector w, scaled by the total weight.
+    pub dead: Vec<f64>,
+    /// Live-load vector p, scaled by the total weight.
+    pub live: Vec<f64>,
+    /// Force scale: the total dead weight W.
+    pub force_scale: f64,
+    /// Length scale L (moments are divided by W·L).
+    pub length_scale: f64,
+}
+
+fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
+    a.0 * b.1 - a.1 * b.0
+}
+
+/// Assembles H, w and p for `assembly` with dead weight `unit_weight`·area per block.
+pub fn assemble_equilibrium(
+    assembly: &Assembly,
+    unit_weight: f64,
+    live_loads: &[LiveLoad],
+) -> Equilibrium {
+    let n = assembly.blocks.len();
+    let force_scale = (unit_weight * assembly.total_area()).max(f64::MIN_POSITIVE);
+    let length_scale = assembly.length_scale();
+    let mut triplets = Vec::with_capacity(18 * n);
+    for (k, interface) in assembly.interfaces.iter().enumerate() {
+        // Interface k pushes block k along +ν and block k−1 along −ν.
+        let neighbours = [(k < n).then_some((k, 1.0)), (k >= 1).then(|| (k - 1, -1.0))];
+        for (block, sign) in neighbours.into_iter().flatten() {
+            let g = assembly.blocks[block].centroid;
+            let arm_q = (interface.extrados.0 - g.0, interface.extrados.1 - g.1);
+            let arm_s = (interface.intrados.0 - g.0, interface.intrados.1 - g.1);
+            let (nu, tau) = (interface.normal, interface.tangent);
+            let (row, col) = (EQUATIONS_PER_BLOCK * block, RESULTANTS_PER_INTERFACE * k);
+            triplets.extend([
+                (row, col, sign * nu.0),
+                (row + 1, col, sign * nu.1),
+                (row + 2, col, sign * cross(arm_q, nu) / length_scale),
+                (row, col + 1, sign * nu.0),
+                (row + 1, col + 1, sign * nu.1),
+                (row + 2, col + 1, sign * cross(arm_s, nu) / length_scale),
+                (row, col + 2, sign * tau.0),
+                (row + 1, col + 2, sign * tau.1),
+                (row + 2, col + 2, sign * cross(arm_s, tau) / length_scale),
+            ]);
+        }
+    }
+    let rows = EQUATIONS_PER_BLOCK * n;
+    let mut dead = vec![0.0; rows];
+    for (b, block) in assembly.blocks.iter().enumerate() {
+        // The weight acts through the centroid: no moment about it.
+        dead[EQUATIONS_PER_BLOCK * b + 1] = -unit_weight * block.area / force_scale;
+    }
+    let mut live = vec![0.0; rows];
+    for load in live_loads {
+        let g = assembly.blocks[load.block].centroid;
+        let arm = (load.point.0 - g.0, load.point.1 - g.1);
+        let row = EQUATIONS_PER_BLOCK * load.block;
+        live[row] += load.fx / force_scale;
+        live[row + 1] += load.fy / force_scale;
+        live[row + 2] +=
+            (load.moment + cross(arm, (load.fx, load.fy))) / (force_scale * length_scale);
+    }
+    Equilibrium {
+        rows,
+        columns: RESULTANTS_PER_INTERFACE * assembly.interfaces.len(),
+        triplets,
+        dead,
+        live,
+        force_scale,
+        length_scale,
+    }
+}
+
+impl Equilibrium {
+    /// The residual H r + λ₀·w + λ·p for resultants `r` in the scaled units.
+    pub fn residual(&self, r: &[f64], dead_factor: f64, live_factor: f64) -> Vec<f64> {
+        let mut out: Vec<f64> = self
+            .dead
+            .iter()
+            .zip(&self.live)
+            .map(|(w, p)| dead_factor * w + live_factor * p)
+            .collect();
+        for &(i, j, v) in &self.triplets {
+            out[i] += v * r[j];
+        }
+        out
+    }
+}

@@ -1,0 +1,721 @@
+//! The limit-analysis linear programmes of a rigid-block assembly (Livesley 1978, §2.3–2.6),
+//! solved with Clarabel's interior-point method.
+//!
+//! # Formulations
+//! An interior-point method needs a feasible set with an interior. The textbook dead-load
+//! programme — maximise λ₀ with H r + λ₀ w = 0 and the yield limits — does not have one when the
+//! structure is too thin (with Heyman's limits its feasible set is then the single point r = 0).
+//! So the dead load is measured by a **margin** programme that is always well posed:
+//!
+//! ```text
+//!   margin(λ) = min δ   subject to  H r + λ w = 0,
+//!                                    every finite limit relaxed by δ·W  (r⁻ − δW ≤ r ≤ r⁺ + δW,
+//!                                    friction rows μ(q+s) ∓ t ≥ −δW),  δ ≥ −1,
+//! ```
+//!
+//! W being the total weight. margin(λ) ≤ 0 exactly when λ·w can be carried; it is convex and
+//! piecewise linear in λ with margin(0) ≤ 0 (r = 0 is admissible when every limit admits zero
+//! force). Hence λ₀ = 1 when margin(1) ≤ 0; with homogeneous limits (all finite limits zero:
+//! Heyman's case, friction) the feasible set is a cone and λ₀ = 0 otherwise; in general λ₀ is the
+//! root of margin(λ), found by Newton's method on the convex function (monotone from the right,
+//! finite on a piecewise-linear function) with the slope dmargin/dλ = w·y from the multipliers.
+//!
+//! The live load is the textbook programme, max λ subject to H r + w + λ p = 0 and the limits,
+//! solved once the dead load is known to be carried (then r is strictly admissible at λ = 0
+//! unless the structure sits exactly at its limit). λ is capped to detect loads that cause no
+//! collapse.
+//!
+//! # Multipliers
+//! With Clarabel's convention (min c'x, Ax + s = b, s ∈ K; dual A'z + c = 0) the multipliers y of
+//! the equilibrium rows satisfy Hᵀy = z_lower − z_upper: y are the block velocities (u, v, ω)
+//! of the collapse mechanism and z the plastic multipliers of the limits, with the loads doing
+//! positive work. See [`super::mechanism`].
+
+use std::time::Instant;
+
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
+    SupportedConeT, ZeroConeT,
+};
+
+use super::equilibrium::{assemble_equilibrium, Equilibrium, LiveLoad, RESULTANTS_PER_INTERFACE};
+use super::geometry::Assembly;
+use super::mechanism::{read_mechanism, Bound, Mechanism, Resultant};
+use super::ArchError;
+
+/// Limits on the stress resultants of every interface (absolute forces; `None` = unbounded).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceLimits {
+    /// Lower limit of q (0 = no tension at the extrados end).
+    pub q_min: Option<f64>,
+    /// Upper limit of q (crushing).
+    pub q_max: Option<f64>,
+    /// Lower limit of s (0 = no tension at the intrados end).
+    pub s_min: Option<f64>,
+    /// Upper limit of s (crushing).
+    pub s_max: Option<f64>,
+    /// Lower limit of the shear t.
+    pub t_min: Option<f64>,
+    /// Upper limit of the shear t.
+    pub t_max: Option<f64>,
+}
+
+impl InterfaceLimits {
+    /// Heyman's assumptions: no tension, infinite compressive strength, no sliding.
+    pub fn heyman() -> Self {
+        Self {
+            q_min: Some(0.0),
+            q_max: None,
+            s_min: Some(0.0),
+            s_max: None,
+            t_min: None,
+            t_max: None,
+        }
+    }
+
+    fn bounds(&self) -> [(Resultant, Bound, Option<f64>); 6] {
+        [
+            (Resultant::Q, Bound::Lower, self.q_min),
+            (Resultant::Q, Bound::Upper, self.q_max),
+            (Resultant::S, Bound::Lower, self.s_min),
+            (Resultant::S, Bound::Upper, self.s_max),
+            (Resultant::T, Bound::Lower, self.t_min),
+            (Resultant::T, Bound::Upper, self.t_max),
+        ]
+    }
+
+    /// Whether every finite limit is zero: the admissible set is then a cone.
+    pub fn is_homogeneous(&self) -> bool {
+        self.bounds()
+            .iter()
+            .all(|(_, _, v)| v.is_none_or(|v| v == 0.0))
+    }
+}
+
+/// A rigid-block structure with its loads and limits, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArchProblem {
+    assembly: Assembly,
+    unit_weight: f64,
+    limits: InterfaceLimits,
+    friction: Option<f64>,
+    live_loads: Vec<LiveLoad>,
+}
+
+impl ArchProblem {
+    /// Checks the numbers: unit weight > 0; each limit finite with min ≤ 0 ≤ max (the unloaded
+    /// state must be admissible); friction coefficient finite ≥ 0; loads on existing blocks.
+    pub fn new(
+        assembly: Assembly,
+        unit_weight: f64,
+        limits: InterfaceLimits,
+        friction: Option<f64>,
+        live_loads: Vec<LiveLoad>,
+    ) -> Result<Self, ArchError> {
+        if !(unit_weight.is_finite() && unit_weight > 0.0) {
+            return Err(ArchError::range(
+                "unit_weight",
+                unit_weight,
+                "a finite number > 0",
+            ));
+        }
+        let names = ["q_min", "q_max", "s_min", "s_max", "t_min", "t_max"];
+        for ((_, bound, value), name) in limits.bounds().iter().zip(names) {
+            if let Some(v) = *value {
+                let ok = v.is_finite()
+                    && match bound {
+                        Bound::Lower => v <= 0.0,
+                        Bound::Upper => v >= 0.0,
+                    };
+                if !ok {
+                    let allowed = match bound {
+                        Bound::Lower => "a finite number ≤ 0 or null (unbounded)",
+                        Bound::Upper => "a finite number ≥ 0 or null (unbounded)",
+                    };
+                    return Err(ArchError::range(
+                        format!("interface_limits.{name}"),
+                        v,
+                        allowed,
+                    ));
+                }
+            }
+        }
+        if let Some(mu) = friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(ArchError::range(
+                    "friction_coefficient",
+                    mu,
+                    "a finite number ≥ 0 or null (no sliding)",
+                ));
+            }
+        }
+        for (i, load) in live_loads.iter().enumerate() {
+            if load.block >= assembly.blocks.len() {
+                return Err(ArchError::range(
+                    format!("loads[{i}].block"),
+                    (load.block + 1) as f64,
+                    format!("a block number 1 ≤ block ≤ {}", assembly.blocks.len()),
+                ));
+            }
+            let values = [load.point.0, load.point.1, load.fx, load.fy, load.moment];
+            if values.iter().any(|v| !v.is_finite()) {
+                return Err(ArchError::range(
+                    format!("loads[{i}]"),
+                    f64::NAN,
+                    "finite numbers",
+                ));
+            }
+        }
+        Ok(Self {
+            assembly,
+            unit_weight,
+            limits,
+            friction,
+            live_loads,
+        })
+    }
+
+    /// The blocks and interfaces.
+    pub fn assembly(&self) -> &Assembly {
+        &self.assembly
+    }
+
+    /// The unit weight γ.
+    pub fn unit_weight(&self) -> f64 {
+        self.unit_weight
+    }
+}
+
+/// Settings of the interior-point solves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LimitSettings {
+    /// Clarabel's gap and feasibility tolerances (relative). Defaults to 1e-10.
+    pub tolerance: f64,
+    /// A dead-load margin at or below this (a fraction of the total weight) counts as carried.
+    /// Defaults to 1e-9.
+    pub margin_tolerance: f64,
+    /// Interior-point iterations per programme. Defaults to 200.
+    pub max_iterations: u32,
+    /// Time limit of one programme in seconds. Defaults to 30.
+    pub time_limit_secs: f64,
+}
+
+impl Default for LimitSettings {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            margin_tolerance: 1e-9,
+            max_iterations: 200,
+            time_limit_secs: 30.0,
+        }
+    }
+}
+
+/// How a limit analysis ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LimitStatus {
+    /// The load factor was found.
+    Solved,
+    /// Live load only: the dead load is not carried, so there is no live-load factor.
+    DeadLoadNotCarried,
+    /// Live load only: no finite multiple of the live load causes collapse.
+    Unbounded,
+    /// The interior-point method stopped without an answer it can vouch for.
+    SolverFailed(SolverFailure),
+}
+
+/// Why Clarabel stopped without a solution (its status, named).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SolverFailure {
+    /// Reached only reduced accuracy.
+    ReducedAccuracy,
+    /// Iteration limit.
+    MaxIterations,
+    /// Time limit.
+    MaxTime,
+    /// Numerical error or lack of progress.
+    Numerical,
+    /// Reported the programme infeasible, which the formulations exclude.
+    Infeasible,
+}
+
+/// What a limit analysis found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LimitSolution {
+    /// How it ended.
+    pub status: LimitStatus,
+    /// The dead-load factor λ₀ (dead load) or live-load factor λ (live load), when solved.
+    pub load_factor: Option<f64>,
+    /// Whether the dead load is carried (λ₀ = 1); `None` if that could not be decided.
+    pub dead_load_carried: Option<bool>,
+    /// Dead-load margin δ at full dead load, a fraction of the total weight: negative is a
+    /// reserve (every limit is met with that much to spare), positive a shortfall.
+    pub dead_load_margin: Option<f64>,
+    /// Resultants (q, s, t) per interface in force units at the load factor (empty when there
+    /// is no admissible state to show).
+    pub resultants: Vec<[f64; 3]>,
+    /// The collapse mechanism, when the structure is at its limit.
+    pub mechanism: Option<Mechanism>,
+    /// Interior-point iterations over all programmes.
+    pub iterations: u32,
+    /// Linear programmes solved.
+    pub programmes: usize,
+    /// Wall time of the solves in seconds.
+    pub solve_time_secs: f64,
+}
+
+/// Which side of the bound a row is, and of which resultant, for reading multipliers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct RowTag {
+    pub interface: usize,
+    pub resultant: Resultant,
+    pub bound: Bound,
+}
+
+/// An inequality row a·x ≤ b.
+struct Row {
+    entries: [(usize, f64); 3],
+    len: usize,
+    b: f64,
+    tag: RowTag,
+}
+
+/// The yield rows of every interface, in scaled units (forces divided by the total weight).
+fn limit_rows(problem: &ArchProblem, eq: &Equilibrium) -> Vec<Row> {
+    let w = eq.force_scale;
+    let mut rows = Vec::new();
+    for k in 0..problem.assembly.interfaces.len() {
+        let col = RESULTANTS_PER_INTERFACE * k;
+        for (resultant, bound, value) in problem.limits.bounds() {
+            let Some(value) = value else { continue };
+            let offset = match resultant {
+                Resultant::Q => 0,
+                Resultant::S => 1,
+                _ => 2,
+            };
+            // Lower: −r ≤ −r⁻; upper: r ≤ r⁺.
+            let sign = match bound {
+                Bound::Lower => -1.0,
+                Bound::Upper => 1.0,
+            };
+            rows.push(Row {
+                entries: [(col + offset, sign), (col, 0.0), (col, 0.0)],
+                len: 1,
+                b: sign * value / w,
+                tag: RowTag {
+                    interface: k,
+                    resultant,
+                    bound,
+                },
+            });
+        }
+        if let Some(mu) = problem.friction {
+            // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
+            // −v ≤ 0; only where friction is finite.
+            for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
+                rows.push(Row {
+                    entries: [(col, -mu), (col + 1, -mu), (col + 2, t_sign)],
+                    len: 3,
+                    b: 0.0,
+                    tag: RowTag {
+                        interface: k,
+                        resultant,
+                        bound: Bound::Lower,
+                    },
+                });
+            }
+        }
+    }
+    rows
+}
+
+/// Outcome of one programme.
+struct Programme {
+    status: SolverStatus,
+    x: Vec<f64>,
+    z: Vec<f64>,
+    iterations: u32,
+}
+
+/// Solves min c'x subject to the equilibrium rows (H r + extra_col·x_extra = b_eq) and the
+/// inequality rows, with one extra column beyond the resultants.
+fn solve_programme(
+    eq: &Equilibrium,
+    extra_equilibrium: &[f64],
+    b_eq: &[f64],
+    rows: &[Row],
+    extra_in_rows: Option<(usize, f64)>,
+    cap: (f64, f64),
+    objective_extra: f64,
+    settings: &LimitSettings,
+) -> Programme {
+    let n = eq.columns + 1;
+    let extra = eq.columns;
+    let m_eq = eq.rows;
+    let m = m_eq + rows.len() + 1;
+    let mut ti = Vec::with_capacity(eq.triplets.len() + m_eq + 3 * rows.len() + 1);
+    let mut tj = Vec::with_capacity(ti.capacity());
+    let mut tv = Vec::with_capacity(ti.capacity());
+    for &(i, j, v) in &eq.triplets {
+        ti.push(i);
+        tj.push(j);
+        tv.push(v);
+    }
+    for (i, &v) in extra_equilibrium.iter().enumerate() {
+        if v != 0.0 {
+            ti.push(i);
+            tj.push(extra);
+            tv.push(v);
+        }
+    }
+    let mut b = b_eq.to_vec();
+    for (r, row) in rows.iter().enumerate() {
+        for &(j, v) in &row.entries[..row.len] {
+            ti.push(m_eq + r);
+            tj.push(j);
+            tv.push(v);
+        }
+        if let Some((_, coefficient)) = extra_in_rows {
+            ti.push(m_eq + r);
+            tj.push(extra);
+            tv.push(coefficient);
+        }
+        b.push(row.b);
+    }
+    // Cap on the extra variable: cap.0·x_extra ≤ cap.1.
+    ti.push(m - 1);
+    tj.push(extra);
+    tv.push(cap.0);
+    b.push(cap.1);
+    let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
+    let p = CscMatrix::zeros((n, n));
+    let mut c = vec![0.0; n];
+    c[extra] = objective_extra;
+    let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(m_eq), NonnegativeConeT(rows.len() + 1)];
+    let tol = settings.tolerance;
+    let clarabel_settings = DefaultSettingsBuilder::default()
+        .verbose(false)
+        .max_iter(settings.max_iterations)
+        .time_limit(settings.time_limit_secs)
+        .tol_gap_abs(tol)
+        .tol_gap_rel(tol)
+        .tol_feas(tol)
+        .tol_ktratio(tol.sqrt() * 1e-2)
+        .build()
+        .expect("the settings are within Clarabel's ranges");
+    let mut solver = match DefaultSolver::new(&p, &c, &a, &b, &cones, clarabel_settings) {
+        Ok(solver) => solver,
+        Err(_) => {
+            return Programme {
+                status: SolverStatus::NumericalError,
+                x: Vec::new(),
+                z: Vec::new(),
+                iterations: 0,
+            }
+        }
+    };
+    solver.solve();
+    let solution = solver.solution;
+    Programme {
+        status: solution.status,
+        x: solution.x,
+        z: solution.z,
+        iterations: solution.iterations,
+    }
+}
+
+/// Live loads are scaled to a unit largest component; λ above this counts as no collapse.
+const LIVE_LOAD_CAP: f64 = 1e6;
+
+fn failure(status: SolverStatus) -> Option<SolverFailure> {
+    match status {
+        SolverStatus::Solved => None,
+        SolverStatus::AlmostSolved => Some(SolverFailure::ReducedAccuracy),
+        SolverStatus::MaxIterations => Some(SolverFailure::MaxIterations),
+        SolverStatus::MaxTime => Some(SolverFailure::MaxTime),
+        SolverStatus::PrimalInfeasible
+        | SolverStatus::AlmostPrimalInfeasible
+        | SolverStatus::DualInfeasible
+        | SolverStatus::AlmostDualInfeasible => Some(SolverFailure::Infeasible),
+        SolverStatus::Unsolved
+        | SolverStatus::NumericalError
+        | SolverStatus::InsufficientProgress
+        | SolverStatus::CallbackTerminated => Some(SolverFailure::Numerical),
+    }
+}
+
+/// margin(λ) with its state and multipliers.
+struct MarginEvaluation {
+    lambda: f64,
+    value: f64,
+    programme: Programme,
+}
+
+struct Context<'a> {
+    problem: &'a ArchProblem,
+    eq: Equilibrium,
+    rows: Vec<Row>,
+    settings: &'a LimitSettings,
+    iterations: u32,
+    programmes: usize,
+}
+
+impl<'a> Context<'a> {
+    fn new(problem: &'a ArchProblem, settings: &'a LimitSettings) -> Self {
+        let eq = assemble_equilibrium(&problem.assembly, problem.unit_weight, &problem.live_loads);
+        let rows = limit_rows(problem, &eq);
+        Self {
+            problem,
+            eq,
+            rows,
+            settings,
+            iterations: 0,
+            programmes: 0,
+        }
+    }
+
+    fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
+        let b_eq: Vec<f64> = self.eq.dead.iter().map(|w| -lambda * w).collect();
+        let zeros = vec![0.0; self.eq.rows];
+        let programme = solve_programme(
+            &self.eq,
+            &zeros,
+            &b_eq,
+            &self.rows,
+            Some((self.eq.columns, -1.0)),
+            (-1.0, 1.0),
+            1.0,
+            self.settings,
+        );
+        self.iterations += programme.iterations;
+        self.programmes += 1;
+        if let Some(f) = failure(programme.status) {
+            return Err(f);
+        }
+        let value = programme.x[self.eq.columns];
+        Ok(MarginEvaluation {
+            lambda,
+            value,
+            programme,
+        })
+    }
+
+    /// Slope dmargin/dλ = w·y at the multipliers of `evaluation`.
+    fn slope(&self, evaluation: &MarginEvaluation) -> f64 {
+        self.eq
+            .dead
+            .iter()
+            .zip(&evaluation.programme.z)
+            .map(|(w, y)| w * y)
+            .sum()
+    }
+
+    fn resultants(&self, x: &[f64]) -> Vec<[f64; 3]> {
+        let w = self.eq.force_scale;
+        x[..self.eq.columns]
+            .chunks_exact(RESULTANTS_PER_INTERFACE)
+            .map(|r| [r[0] * w, r[1] * w, r[2] * w])
+            .collect()
+    }
+
+    fn mechanism(&self, programme: &Programme) -> Option<Mechanism> {
+        let m_eq = self.eq.rows;
+        let tags: Vec<RowTag> = self.rows.iter().map(|r| r.tag).collect();
+        read_mechanism(
+            &self.problem.assembly,
+            self.eq.length_scale,
+            &programme.z[..m_eq],
+            &programme.z[m_eq..m_eq + self.rows.len()],
+            &tags,
+        )
+    }
+
+    fn finish(
+        &self,
+        status: LimitStatus,
+        load_factor: Option<f64>,
+        dead_load_carried: Option<bool>,
+        dead_load_margin: Option<f64>,
+        resultants: Vec<[f64; 3]>,
+        mechanism: Option<Mechanism>,
+        start: Instant,
+    ) -> LimitSolution {
+        LimitSolution {
+            status,
+            load_factor,
+            dead_load_carried,
+            dead_load_margin,
+            resultants,
+            mechanism,
+            iterations: self.iterations,
+            programmes: self.programmes,
+            solve_time_secs: start.elapsed().as_secs_f64(),
+        }
+    }
+
+    fn failed(&self, failure: SolverFailure, start: Instant) -> LimitSolution {
+        self.finish(
+            LimitStatus::SolverFailed(failure),
+            None,
+            None,
+            None,
+            Vec::new(),
+            None,
+            start,
+        )
+    }
+}
+
+/// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
+/// carried, the mechanism in which the structure collapses under it.
+pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
+    let start = Instant::now();
+    let mut cx = Context::new(problem, settings);
+    let full = match cx.margin(1.0) {
+        Ok(e) => e,
+        Err(f) => return cx.failed(f, start),
+    };
+    let tol = settings.margin_tolerance;
+    if full.value <= tol {
+        let resultants = cx.resultants(&full.programme.x);
+        return cx.finish(
+            LimitStatus::Solved,
+            Some(1.0),
+            Some(true),
+            Some(full.value),
+            resultants,
+            None,
+            start,
+        );
+    }
+    if problem.limits.is_homogeneous() {
+        // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0.
+        let mechanism = cx.mechanism(&full.programme);
+        return cx.finish(
+            LimitStatus::Solved,
+            Some(0.0),
+            Some(false),
+            Some(full.value),
+            Vec::new(),
+            mechanism,
+            start,
+        );
+    }
+    // Newton from the right on the convex margin(λ), safeguarded by bisection on [lo, hi].
+    let full_margin = full.value;
+    let (mut lo, mut hi) = (0.0, full);
+    let mut carried: Option<MarginEvaluation> = None;
+    for _ in 0..60 {
+        let slope = cx.slope(&hi);
+        let newton = hi.lambda - hi.value / slope;
+        let lambda = if slope > 0.0 && newton.is_finite() && newton > lo && newton < hi.lambda {
+            newton
+        } else {
+            0.5 * (lo + hi.lambda)
+        };
+        let e = match cx.margin(lambda) {
+            Ok(e) => e,
+            Err(f) => return cx.failed(f, start),
+        };
+        if e.value <= tol {
+            lo = lambda;
+            let done = e.value >= -tol || hi.lambda - lo <= 1e-12;
+            carried = Some(e);
+            if done {
+                break;
+            }
+        } else {
+            hi = e;
+        }
+        if hi.lambda - lo <= 1e-12 {
+            break;
+        }
+    }
+    let resultants = carried
+        .map(|e| cx.resultants(&e.programme.x))
+        .unwrap_or_default();
+    let mechanism = cx.mechanism(&hi.programme);
+    cx.finish(
+        LimitStatus::Solved,
+        Some(lo),
+        Some(false),
+        Some(full_margin),
+        resultants,
+        mechanism,
+        start,
+    )
+}
+
+/// The live-load factor λ (Livesley's live-load problem), given that the dead load is carried.
+pub fn solve_live_load(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+) -> Result<LimitSolution, ArchError> {
+    let start = Instant::now();
+    let mut cx = Context::new(problem, settings);
+    let scale = cx.eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(scale > 0.0) {
+        return Err(ArchError::range(
+            "loads",
+            0.0,
+            "at least one load with a non-zero force or moment",
+        ));
+    }
+    let full = match cx.margin(1.0) {
+        Ok(e) => e,
+        Err(f) => return Ok(cx.failed(f, start)),
+    };
+    if full.value > settings.margin_tolerance {
+        let mechanism = cx.mechanism(&full.programme);
+        return Ok(cx.finish(
+            LimitStatus::DeadLoadNotCarried,
+            None,
+            Some(false),
+            Some(full.value),
+            Vec::new(),
+            mechanism,
+            start,
+        ));
+    }
+    let live: Vec<f64> = cx.eq.live.iter().map(|p| p / scale).collect();
+    let b_eq: Vec<f64> = cx.eq.dead.iter().map(|w| -w).collect();
+    let programme = solve_programme(
+        &cx.eq,
+        &live,
+        &b_eq,
+        &cx.rows,
+        None,
+        (1.0, LIVE_LOAD_CAP),
+        -1.0,
+        settings,
+    );
+    cx.iterations += programme.iterations;
+    cx.programmes += 1;
+    if let Some(f) = failure(programme.status) {
+        return Ok(cx.failed(f, start));
+    }
+    let lambda_scaled = programme.x[cx.eq.columns];
+    if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
+        return Ok(cx.finish(
+            LimitStatus::Unbounded,
+            None,
+            Some(true),
+            Some(full.value),
+            Vec::new(),
+            None,
+            start,
+        ));
+    }
+    let resultants = cx.resultants(&programme.x);
+    let mechanism = cx.mechanism(&programme);
+    Ok(cx.finish(
+        LimitStatus::Solved,
+        Some(lambda_scaled / scale),
+        Some(true),
+        Some(full.value),
+        resultants,
+        mechanism,
+        start,
+    ))
+}

@@ -1,0 +1,77 @@
+//! Limit analysis of structures formed from rigid blocks (Livesley 1978), with the circular
+//! arch of the thesis' "Arch Stability" program as the main generator.
+//!
+//! Conventions, fixed here once for the whole module:
+//! - Blocks are numbered 0..n in the crate (the service prints 1..n); interface k separates
+//!   block k−1 and block k, interface 0 and interface n are the supports (springings).
+//! - Each interface runs from its **intrados** point P_s to its **extrados** point P_q. Its
+//!   stress resultants are Livesley's r = (q, s, t): q and s are compressive normal forces at
+//!   P_q and P_s, t the shear along P_s→P_q. The unit normal ν points into the higher-numbered
+//!   block; the resultant acts on that block as (q + s)·ν + t·τ and on the lower one oppositely.
+//! - Equilibrium of block b is written for forces in x, y and the moment about its centroid,
+//!   counter-clockwise positive: H r + λ_dead·w + λ·p = 0 with w, p the applied loads.
+//!
+//! - [`geometry`]: blocks, interfaces, the circular arch generator and block chains.
+//! - [`equilibrium`]: the sparse equilibrium matrix H and the load vectors.
+//! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
+//! - [`mechanism`]: the collapse mechanism read from the multipliers.
+//! - [`thrust_line`]: the points of action of the interface resultants.
+
+pub mod equilibrium;
+pub mod geometry;
+pub mod limit;
+pub mod mechanism;
+pub mod thrust_line;
+
+pub use equilibrium::LiveLoad;
+pub use geometry::{Assembly, Block, CircularArch, Interface, VoussoirShape};
+pub use limit::{
+    solve_dead_load, solve_live_load, ArchProblem, InterfaceLimits, LimitSettings, LimitSolution,
+    LimitStatus, SolverFailure,
+};
+pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
+pub use thrust_line::{thrust_line, ThrustPoint};
+
+/// Input the arch solver cannot accept; `parameter` names the offending input.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ArchError {
+    /// A number is outside its allowed range.
+    #[error("{parameter} = {value} is out of range: allowed is {allowed}")]
+    OutOfRange {
+        /// Name of the input, as the service spells it.
+        parameter: String,
+        /// The rejected value.
+        value: f64,
+        /// The allowed range in words.
+        allowed: String,
+    },
+    /// The blocks do not form a valid assembly.
+    #[error("{parameter}: {reason}")]
+    InvalidGeometry {
+        /// Name of the input at fault.
+        parameter: String,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+impl ArchError {
+    pub(crate) fn range(
+        parameter: impl Into<String>,
+        value: f64,
+        allowed: impl Into<String>,
+    ) -> Self {
+        Self::OutOfRange {
+            parameter: parameter.into(),
+            value,
+            allowed: allowed.into(),
+        }
+    }
+
+    pub(crate) fn geometry(parameter: impl Into<String>, reason: impl Into<String>) -> Self {
+        Self::InvalidGeometry {
+            parameter: parameter.into(),
+            reason: reason.into(),
+        }
+    }
+}
