@@ -1,0 +1,397 @@
+//! Limit analysis of arches, grouped by problem class, against the literature (SPEC §1.4) and
+//! against independent computations written here: block equilibrium summed by hand from the
+//! returned resultants, and the virtual-work equation of the returned mechanism.
+
+use std::num::NonZeroUsize;
+
+use thrustline_solver::arch::*;
+
+fn circular(n: usize, radius: f64, thickness: f64, shape: VoussoirShape) -> CircularArch {
+    CircularArch::new(
+        radius,
+        thickness,
+        NonZeroUsize::new(n).unwrap(),
+        0.0,
+        0.0,
+        shape,
+    )
+    .unwrap()
+}
+
+fn heyman(assembly: Assembly, loads: Vec<LiveLoad>) -> ArchProblem {
+    ArchProblem::new(assembly, 1.0, InterfaceLimits::heyman(), None, loads).unwrap()
+}
+
+fn dead(problem: &ArchProblem) -> LimitSolution {
+    let s = solve_dead_load(problem, &LimitSettings::default());
+    assert_eq!(s.status, LimitStatus::Solved);
+    s
+}
+
+fn live(problem: &ArchProblem) -> LimitSolution {
+    let s = solve_live_load(problem, &LimitSettings::default()).unwrap();
+    assert_eq!(s.status, LimitStatus::Solved);
+    s
+}
+
+/// A downward unit point load at the centroid of block `b`.
+fn point_load(assembly: &Assembly, b: usize, fy: f64) -> Vec<LiveLoad> {
+    vec![LiveLoad {
+        block: b,
+        point: assembly.blocks[b].centroid,
+        fx: 0.0,
+        fy,
+        moment: 0.0,
+    }]
+}
+
+/// Independent equilibrium check: for every block, sum the interface forces (q at the extrados
+/// end and s at the intrados end along the joint normal, t along the joint), the weight and the
+/// loads, and their moments about the origin. Returns the largest residual relative to the
+/// total weight (forces) and weight × span (moments).
+fn equilibrium_residual(
+    problem: &ArchProblem,
+    r: &[[f64; 3]],
+    dead_factor: f64,
+    loads: &[LiveLoad],
+    live_factor: f64,
+) -> f64 {
+    let a = problem.assembly();
+    let n = a.blocks.len();
+    let mut sums = vec![[0.0f64; 3]; n];
+    let cross = |p: (f64, f64), f: (f64, f64)| p.0 * f.1 - p.1 * f.0;
+    for (k, (i, &[q, s, t])) in a.interfaces.iter().zip(r).enumerate() {
+        // The normal of joint k, pointing from block k−1 into block k, by hand.
+        let tangent = (i.extrados.0 - i.intrados.0, i.extrados.1 - i.intrados.1);
+        let len = tangent.0.hypot(tangent.1);
+        let tau = (tangent.0 / len, tangent.1 / len);
+        let mut nu = (-tau.1, tau.0);
+        let into = if k < n {
+            a.blocks[k].centroid
+        } else {
+            a.blocks[n - 1].centroid
+        };
+        let m = i.middle();
+        let side = nu.0 * (into.0 - m.0) + nu.1 * (into.1 - m.1);
+        if (k < n && side < 0.0) || (k == n && side > 0.0) {
+            nu = (-nu.0, -nu.1);
+        }
+        let forces = [
+            (i.extrados, (q * nu.0, q * nu.1)),
+            (i.intrados, (s * nu.0, s * nu.1)),
+            (i.intrados, (t * tau.0, t * tau.1)),
+        ];
+        for (block, sign) in [(k, 1.0), (k.wrapping_sub(1), -1.0)] {
+            if block < n {
+                for (p, f) in forces {
+                    sums[block][0] += sign * f.0;
+                    sums[block][1] += sign * f.1;
+                    sums[block][2] += sign * cross(p, f);
+                }
+            }
+        }
+    }
+    let gamma = problem.unit_weight();
+    for (b, block) in a.blocks.iter().enumerate() {
+        let w = dead_factor * gamma * block.area;
+        sums[b][1] -= w;
+        sums[b][2] += cross(block.centroid, (0.0, -w));
+    }
+    for l in loads {
+        let f = (live_factor * l.fx, live_factor * l.fy);
+        sums[l.block][0] += f.0;
+        sums[l.block][1] += f.1;
+        sums[l.block][2] += cross(l.point, f) + live_factor * l.moment;
+    }
+    let weight = gamma * a.total_area();
+    let span = a.length_scale();
+    sums.iter()
+        .map(|s| {
+            (s[0].abs() / weight)
+                .max(s[1].abs() / weight)
+                .max(s[2].abs() / (weight * span))
+        })
+        .fold(0.0, f64::max)
+}
+
+mod dead_load {
+    use super::*;
+
+    #[test]
+    fn milankovitch_1800_voussoirs_thickness_1_0748_stands() {
+        // SPEC §1.4: N = 1800 curved voussoirs, R = 10, D = 1.0748: λ₀ = 1, no active limits.
+        let arch = circular(1800, 10.0, 1.0748, VoussoirShape::Curved);
+        let p = heyman(arch.assembly(), vec![]);
+        let s = dead(&p);
+        assert_eq!(s.load_factor, Some(1.0));
+        assert_eq!(s.dead_load_carried, Some(true));
+        assert!(s.mechanism.is_none());
+        // The returned state is the independent proof: in equilibrium (1e-9: interior-point
+        // tolerance 1e-10 on scaled rows) and without tension.
+        assert!(equilibrium_residual(&p, &s.resultants, 1.0, &[], 0.0) < 1e-9);
+        let weight = p.assembly().total_area();
+        assert!(s
+            .resultants
+            .iter()
+            .all(|r| r[0] >= -1e-9 * weight && r[1] >= -1e-9 * weight));
+    }
+
+    #[test]
+    fn milankovitch_1800_voussoirs_thickness_1_0747_collapses_in_five_hinges() {
+        // SPEC §1.4: D = 1.0747: λ₀ = 0 and the active limits are interface 1 s (0.0°, hinge at
+        // the extrados), 356 q (35.5°, intrados), 901 s (90.0°, extrados), 1446 q (144.5°,
+        // intrados), 1801 s (180.0°, extrados). Interfaces are 0-based here.
+        let arch = circular(1800, 10.0, 1.0747, VoussoirShape::Curved);
+        let s = dead(&heyman(arch.assembly(), vec![]));
+        assert_eq!(s.load_factor, Some(0.0));
+        assert_eq!(s.dead_load_carried, Some(false));
+        let m = s.mechanism.unwrap();
+        let active: Vec<(usize, Resultant, Bound, Option<HingeSide>)> = m
+            .active
+            .iter()
+            .map(|a| (a.interface + 1, a.resultant, a.bound, a.hinge))
+            .collect();
+        use Bound::Lower;
+        use HingeSide::{Extrados, Intrados};
+        assert_eq!(
+            active,
+            vec![
+                (1, Resultant::S, Lower, Some(Extrados)),
+                (356, Resultant::Q, Lower, Some(Intrados)),
+                (901, Resultant::S, Lower, Some(Extrados)),
+                (1446, Resultant::Q, Lower, Some(Intrados)),
+                (1801, Resultant::S, Lower, Some(Extrados)),
+            ]
+        );
+        let angles: Vec<f64> = m.active.iter().map(|a| a.angle_deg).collect();
+        for (a, e) in angles.iter().zip([0.0, 35.5, 90.0, 144.5, 180.0]) {
+            assert!((a - e).abs() < 1e-9, "{angles:?}");
+        }
+        // Symmetric mechanism: the crown block moves straight down (u = 0 to 1e-6).
+        let crown = &m.velocities[899..901];
+        assert!(crown.iter().all(|v| v[1] < 0.0));
+        assert!((m.velocities[899][0] + m.velocities[900][0]).abs() < 1e-6);
+    }
+
+    #[test]
+    fn one_two_or_three_voussoirs_stand_however_thin() {
+        // SPEC §1.4: no mechanism can form under symmetric dead load with N ≤ 3.
+        for n in 1..=3 {
+            for d in [1e-3, 0.01, 0.1] {
+                let arch = circular(n, 1.0, d, VoussoirShape::Curved);
+                let s = dead(&heyman(arch.assembly(), vec![]));
+                assert_eq!(s.load_factor, Some(1.0), "N = {n}, D = {d}");
+            }
+        }
+        // …while four thin voussoirs do not.
+        let s = dead(&heyman(
+            circular(4, 1.0, 0.01, VoussoirShape::Curved).assembly(),
+            vec![],
+        ));
+        assert_eq!(s.load_factor, Some(0.0));
+    }
+
+    #[test]
+    fn shear_capacity_gives_a_fractional_dead_load_factor() {
+        // Hand computation: a unit square block between two vertical walls. Normal forces on
+        // vertical joints are horizontal, so the weight W = 1 can only be carried by the shear
+        // of the two joints, |t| ≤ 0.25 each: λ₀ = 2·0.25/1 = 0.5 exactly.
+        let block = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)];
+        let block = [block[0], block[1], block[2], block[3]];
+        // Joints: start face (0,0)-(0,1), end face (1,0)-(1,1).
+        let assembly = Assembly::from_quadrilaterals(&[block]).unwrap();
+        let limits = InterfaceLimits {
+            t_min: Some(-0.25),
+            t_max: Some(0.25),
+            ..InterfaceLimits::heyman()
+        };
+        let p = ArchProblem::new(assembly, 1.0, limits, None, vec![]).unwrap();
+        let s = dead(&p);
+        let lambda = s.load_factor.unwrap();
+        // 1e-8: interior-point tolerance.
+        assert!((lambda - 0.5).abs() < 1e-8, "λ₀ = {lambda}");
+        assert_eq!(s.dead_load_carried, Some(false));
+        assert!(equilibrium_residual(&p, &s.resultants, lambda, &[], 0.0) < 1e-8);
+        let m = s.mechanism.unwrap();
+        assert_eq!(m.sliding, vec![0, 1]);
+    }
+
+    #[test]
+    fn friction_too_low_makes_the_springings_slide() {
+        // A thick semicircle stands without sliding limits, but its springing joints are
+        // horizontal: with μ below the thrust ratio H/V there they slide.
+        let arch = circular(20, 10.0, 3.0, VoussoirShape::Curved);
+        assert_eq!(
+            dead(&heyman(arch.assembly(), vec![])).load_factor,
+            Some(1.0)
+        );
+        let p = ArchProblem::new(
+            arch.assembly(),
+            1.0,
+            InterfaceLimits::heyman(),
+            Some(0.1),
+            vec![],
+        )
+        .unwrap();
+        let s = dead(&p);
+        assert_eq!(s.load_factor, Some(0.0));
+        let m = s.mechanism.unwrap();
+        // Both springings slide (and, at μ = 0.1, two joints near 54° from the crown too).
+        assert!(
+            m.sliding.contains(&0) && m.sliding.contains(&20),
+            "{:?}",
+            m.sliding
+        );
+        assert!(m.involves_friction());
+    }
+}
+
+mod live_load {
+    use super::*;
+
+    fn quarter_span(n: usize, thickness: f64) -> (ArchProblem, Vec<LiveLoad>) {
+        let a = circular(n, 10.0, thickness, VoussoirShape::Curved).assembly();
+        let loads = point_load(&a, n / 4, -1.0);
+        (heyman(a, loads.clone()), loads)
+    }
+
+    #[test]
+    fn point_load_near_quarter_span_makes_four_hinges() {
+        let (p, loads) = quarter_span(100, 1.5);
+        let s = live(&p);
+        let lambda = s.load_factor.unwrap();
+        let m = s.mechanism.clone().unwrap();
+        assert_eq!(m.hinges.len(), 4, "{:?}", m.hinges);
+        // Hinges alternate intrados/extrados, one under the load, both springings take part.
+        let sides: Vec<HingeSide> = m.hinges.iter().map(|h| h.side).collect();
+        assert_eq!(
+            sides,
+            [
+                HingeSide::Intrados,
+                HingeSide::Extrados,
+                HingeSide::Intrados,
+                HingeSide::Extrados
+            ]
+        );
+        assert_eq!(m.hinges[3].interface, 100);
+        // Lower bound: the returned state is admissible and in equilibrium at λ.
+        assert!(equilibrium_residual(&p, &s.resultants, 1.0, &loads, lambda) < 1e-9);
+        assert!(s.resultants.iter().all(|r| r[0] >= -1e-9 && r[1] >= -1e-9));
+        // Upper bound: virtual work of the mechanism, by hand. With Heyman's limits the hinges
+        // dissipate nothing, so λ·(p·V) + (w·V) = 0.
+        let a = p.assembly();
+        let dead_work: f64 = a
+            .blocks
+            .iter()
+            .zip(&m.velocities)
+            .map(|(b, v)| -b.area * v[1])
+            .sum();
+        let l = &loads[0];
+        let v = m.velocities[l.block];
+        let g = a.blocks[l.block].centroid;
+        let velocity_at_load = (
+            v[0] - v[2] * (l.point.1 - g.1),
+            v[1] + v[2] * (l.point.0 - g.0),
+        );
+        let live_work = l.fx * velocity_at_load.0 + l.fy * velocity_at_load.1;
+        let lambda_kinematic = -dead_work / live_work;
+        // 1e-6: the mechanism comes from multipliers at interior-point accuracy.
+        assert!(
+            (lambda_kinematic - lambda).abs() < 1e-6 * lambda,
+            "{lambda_kinematic} vs {lambda}"
+        );
+    }
+
+    #[test]
+    fn load_factor_scales_exactly_with_the_loads_and_not_with_units() {
+        let (p, _) = quarter_span(60, 1.5);
+        let base = live(&p).load_factor.unwrap();
+        // Twice the load: half the factor. 1e-8 relative: interior-point tolerance.
+        let a = p.assembly().clone();
+        let doubled = heyman(a.clone(), point_load(&a, 15, -2.0));
+        let lambda = live(&doubled).load_factor.unwrap();
+        assert!(
+            (2.0 * lambda - base).abs() < 1e-8 * base,
+            "{lambda} vs {base}"
+        );
+        // γ × 10⁶ with loads × 10⁶ and γ × 10⁻⁶ with loads × 10⁻⁶: the same factor.
+        for scale in [1e-6, 1e6] {
+            let scaled = ArchProblem::new(
+                a.clone(),
+                scale,
+                InterfaceLimits::heyman(),
+                None,
+                point_load(&a, 15, -scale),
+            )
+            .unwrap();
+            let lambda = live(&scaled).load_factor.unwrap();
+            assert!(
+                (lambda - base).abs() < 1e-8 * base,
+                "scale {scale}: {lambda} vs {base}"
+            );
+        }
+        // Lengths × 1000 (weight grows as area, so loads × 10⁶): the same factor.
+        let big = circular(60, 10_000.0, 1_500.0, VoussoirShape::Curved).assembly();
+        let lambda = live(&heyman(big.clone(), point_load(&big, 15, -1e6)))
+            .load_factor
+            .unwrap();
+        assert!((lambda - base).abs() < 1e-8 * base, "{lambda} vs {base}");
+    }
+
+    #[test]
+    fn large_friction_coefficient_recovers_the_frictionless_answer() {
+        let (p, loads) = quarter_span(40, 1.5);
+        let frictionless = live(&p).load_factor.unwrap();
+        let a = p.assembly().clone();
+        let rough = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(1e3), loads).unwrap();
+        let s = live(&rough);
+        assert!((s.load_factor.unwrap() - frictionless).abs() < 1e-7 * frictionless);
+        assert!(!s.mechanism.unwrap().involves_friction());
+    }
+
+    #[test]
+    fn quadrilateral_chain_reproduces_the_generator() {
+        let arch = circular(30, 10.0, 1.5, VoussoirShape::Quadrilateral).assembly();
+        let corners: Vec<_> = arch.blocks.iter().map(|b| b.corners).collect();
+        let chain = Assembly::from_quadrilaterals(&corners).unwrap();
+        let a = live(&heyman(arch.clone(), point_load(&arch, 7, -1.0)))
+            .load_factor
+            .unwrap();
+        let b = live(&heyman(chain.clone(), point_load(&chain, 7, -1.0)))
+            .load_factor
+            .unwrap();
+        assert!((a - b).abs() < 1e-9 * a, "{a} vs {b}");
+    }
+
+    #[test]
+    fn thin_arch_that_cannot_carry_its_weight_has_no_live_load_factor() {
+        let (p, _) = quarter_span(100, 0.5);
+        let s = solve_live_load(&p, &LimitSettings::default()).unwrap();
+        assert_eq!(s.status, LimitStatus::DeadLoadNotCarried);
+        assert_eq!(s.load_factor, None);
+        assert!(s.mechanism.is_some());
+    }
+
+    #[test]
+    fn two_voussoirs_cannot_form_a_mechanism() {
+        // Two blocks have three joints: at most three hinges, a structure, not a mechanism.
+        let a = circular(2, 10.0, 0.5, VoussoirShape::Curved).assembly();
+        let s = solve_live_load(
+            &heyman(a.clone(), point_load(&a, 0, -1.0)),
+            &LimitSettings::default(),
+        )
+        .unwrap();
+        assert_eq!(s.status, LimitStatus::Unbounded);
+        assert_eq!(s.load_factor, None);
+    }
+
+    #[test]
+    fn no_load_is_an_error() {
+        let a = circular(10, 10.0, 1.5, VoussoirShape::Curved).assembly();
+        assert!(solve_live_load(
+            &heyman(a.clone(), point_load(&a, 0, 0.0)),
+            &LimitSettings::default()
+        )
+        .is_err());
+    }
+}
