@@ -8,6 +8,7 @@
 //! - [`app`] builds the router (used by `main` and by the tests with `oneshot`);
 //! - [`serve`] runs it on a listener until the shutdown future completes.
 
+pub mod arch;
 pub mod config;
 pub mod error;
 pub mod health;
@@ -34,6 +35,8 @@ pub use config::Settings;
 pub struct AppState {
     /// The bounded pool that runs solves.
     pub pool: pool::SolvePool,
+    /// Time limit of one solve (the solvers' own limit: `spawn_blocking` cannot be cancelled).
+    pub solve_time_limit: std::time::Duration,
 }
 
 impl AppState {
@@ -45,7 +48,13 @@ impl AppState {
                 settings.max_queued,
                 settings.solve_timeout,
             ),
+            solve_time_limit: settings.solve_timeout,
         }
+    }
+
+    /// The solvers' time limit in seconds.
+    pub fn solve_time_limit_secs(&self) -> f64 {
+        self.solve_time_limit.as_secs_f64()
     }
 }
 
@@ -54,6 +63,8 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
     let api = Router::new()
         .route("/healthz", get(health::healthz))
         .route("/slope/spencer", post(slope::spencer))
+        .route("/arch/dead-load", post(arch::dead_load))
+        .route("/arch/live-load", post(arch::live_load))
         .with_state(state);
     Router::new()
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))

@@ -15,8 +15,14 @@ use utoipa::OpenApi;
                        application/problem+json (RFC 9457) naming the field at fault.",
         license(name = "MIT OR Apache-2.0")
     ),
-    paths(crate::health::healthz, crate::slope::spencer),
+    paths(
+        crate::health::healthz,
+        crate::arch::dead_load,
+        crate::arch::live_load,
+        crate::slope::spencer
+    ),
     tags(
+        (name = "arch", description = "Limit analysis of rigid-block arches (Livesley 1978)"),
         (name = "slope", description = "Embankment stability by Spencer's method"),
         (name = "service", description = "Health and description of the service")
     )

@@ -2,6 +2,9 @@
 //! against independent computations written here: block equilibrium summed by hand from the
 //! returned resultants, and the virtual-work equation of the returned mechanism.
 
+// Fixtures: a failed construction should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
 use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::*;

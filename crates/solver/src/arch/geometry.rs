@@ -263,7 +263,8 @@ impl Assembly {
                 .iter()
                 .flat_map(|p| c.iter().map(move |q| (p.0 - q.0).hypot(p.1 - q.1)))
                 .fold(0.0, f64::max);
-            if !(signed_area.abs() > 1e-12 * extent * extent) || is_self_intersecting(c) {
+            let has_area = signed_area.abs() > 1e-12 * extent * extent;
+            if !has_area || is_self_intersecting(c) {
                 return Err(ArchError::geometry(
                     format!("geometry.blocks[{b}].corners"),
                     "the block is degenerate or self-intersecting (corners must be intrados-start, \
@@ -300,7 +301,8 @@ impl Assembly {
                 (blocks[n - 1].corners[3], blocks[n - 1].corners[2])
             };
             let length = (extrados.0 - intrados.0).hypot(extrados.1 - intrados.1);
-            if !(length > 1e-12 * scale) {
+            let has_length = length > 1e-12 * scale;
+            if !has_length {
                 return Err(ArchError::geometry(
                     format!("geometry.blocks[{}].corners", k.min(n - 1)),
                     format!("interface {k} has zero length"),

@@ -89,7 +89,7 @@ impl InterfaceLimits {
     pub fn is_homogeneous(&self) -> bool {
         self.bounds()
             .iter()
-            .all(|(_, _, v)| v.is_none_or(|v| v == 0.0))
+            .all(|(_, _, v)| v.unwrap_or(0.0) == 0.0)
     }
 }
 
@@ -338,18 +338,30 @@ struct Programme {
     iterations: u32,
 }
 
-/// Solves min c'x subject to the equilibrium rows (H r + extra_col·x_extra = b_eq) and the
-/// inequality rows, with one extra column beyond the resultants.
+/// One programme over the resultants r and one extra variable x (δ or λ):
+/// min objective·x subject to H r + extra_equilibrium·x = b_eq, the limit rows (each with
+/// `row_extra`·x added), and cap.0·x ≤ cap.1.
+struct ProgrammeSpec<'a> {
+    extra_equilibrium: &'a [f64],
+    b_eq: &'a [f64],
+    row_extra: Option<f64>,
+    cap: (f64, f64),
+    objective: f64,
+}
+
 fn solve_programme(
     eq: &Equilibrium,
-    extra_equilibrium: &[f64],
-    b_eq: &[f64],
     rows: &[Row],
-    extra_in_rows: Option<(usize, f64)>,
-    cap: (f64, f64),
-    objective_extra: f64,
+    spec: &ProgrammeSpec,
     settings: &LimitSettings,
 ) -> Programme {
+    let ProgrammeSpec {
+        extra_equilibrium,
+        b_eq,
+        row_extra,
+        cap,
+        objective: objective_extra,
+    } = *spec;
     let n = eq.columns + 1;
     let extra = eq.columns;
     let m_eq = eq.rows;
@@ -376,7 +388,7 @@ fn solve_programme(
             tj.push(j);
             tv.push(v);
         }
-        if let Some((_, coefficient)) = extra_in_rows {
+        if let Some(coefficient) = row_extra {
             ti.push(m_eq + r);
             tj.push(extra);
             tv.push(coefficient);
@@ -445,6 +457,16 @@ fn failure(status: SolverStatus) -> Option<SolverFailure> {
     }
 }
 
+/// The answer of a solve, before the solve statistics are added.
+struct Found {
+    status: LimitStatus,
+    load_factor: Option<f64>,
+    dead_load_carried: Option<bool>,
+    dead_load_margin: Option<f64>,
+    resultants: Vec<[f64; 3]>,
+    mechanism: Option<Mechanism>,
+}
+
 /// margin(λ) with its state and multipliers.
 struct MarginEvaluation {
     lambda: f64,
@@ -478,16 +500,14 @@ impl<'a> Context<'a> {
     fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
         let b_eq: Vec<f64> = self.eq.dead.iter().map(|w| -lambda * w).collect();
         let zeros = vec![0.0; self.eq.rows];
-        let programme = solve_programme(
-            &self.eq,
-            &zeros,
-            &b_eq,
-            &self.rows,
-            Some((self.eq.columns, -1.0)),
-            (-1.0, 1.0),
-            1.0,
-            self.settings,
-        );
+        let spec = ProgrammeSpec {
+            extra_equilibrium: &zeros,
+            b_eq: &b_eq,
+            row_extra: Some(-1.0),
+            cap: (-1.0, 1.0),
+            objective: 1.0,
+        };
+        let programme = solve_programme(&self.eq, &self.rows, &spec, self.settings);
         self.iterations += programme.iterations;
         self.programmes += 1;
         if let Some(f) = failure(programme.status) {
@@ -531,16 +551,15 @@ impl<'a> Context<'a> {
         )
     }
 
-    fn finish(
-        &self,
-        status: LimitStatus,
-        load_factor: Option<f64>,
-        dead_load_carried: Option<bool>,
-        dead_load_margin: Option<f64>,
-        resultants: Vec<[f64; 3]>,
-        mechanism: Option<Mechanism>,
-        start: Instant,
-    ) -> LimitSolution {
+    fn finish(&self, found: Found, start: Instant) -> LimitSolution {
+        let Found {
+            status,
+            load_factor,
+            dead_load_carried,
+            dead_load_margin,
+            resultants,
+            mechanism,
+        } = found;
         LimitSolution {
             status,
             load_factor,
@@ -556,12 +575,14 @@ impl<'a> Context<'a> {
 
     fn failed(&self, failure: SolverFailure, start: Instant) -> LimitSolution {
         self.finish(
-            LimitStatus::SolverFailed(failure),
-            None,
-            None,
-            None,
-            Vec::new(),
-            None,
+            Found {
+                status: LimitStatus::SolverFailed(failure),
+                load_factor: None,
+                dead_load_carried: None,
+                dead_load_margin: None,
+                resultants: Vec::new(),
+                mechanism: None,
+            },
             start,
         )
     }
@@ -580,12 +601,14 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
     if full.value <= tol {
         let resultants = cx.resultants(&full.programme.x);
         return cx.finish(
-            LimitStatus::Solved,
-            Some(1.0),
-            Some(true),
-            Some(full.value),
-            resultants,
-            None,
+            Found {
+                status: LimitStatus::Solved,
+                load_factor: Some(1.0),
+                dead_load_carried: Some(true),
+                dead_load_margin: Some(full.value),
+                resultants,
+                mechanism: None,
+            },
             start,
         );
     }
@@ -593,12 +616,14 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
         // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0.
         let mechanism = cx.mechanism(&full.programme);
         return cx.finish(
-            LimitStatus::Solved,
-            Some(0.0),
-            Some(false),
-            Some(full.value),
-            Vec::new(),
-            mechanism,
+            Found {
+                status: LimitStatus::Solved,
+                load_factor: Some(0.0),
+                dead_load_carried: Some(false),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism,
+            },
             start,
         );
     }
@@ -637,12 +662,14 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
         .unwrap_or_default();
     let mechanism = cx.mechanism(&hi.programme);
     cx.finish(
-        LimitStatus::Solved,
-        Some(lo),
-        Some(false),
-        Some(full_margin),
-        resultants,
-        mechanism,
+        Found {
+            status: LimitStatus::Solved,
+            load_factor: Some(lo),
+            dead_load_carried: Some(false),
+            dead_load_margin: Some(full_margin),
+            resultants,
+            mechanism,
+        },
         start,
     )
 }
@@ -655,7 +682,8 @@ pub fn solve_live_load(
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
     let scale = cx.eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !(scale > 0.0) {
+    let has_load = scale > 0.0;
+    if !has_load {
         return Err(ArchError::range(
             "loads",
             0.0,
@@ -669,27 +697,27 @@ pub fn solve_live_load(
     if full.value > settings.margin_tolerance {
         let mechanism = cx.mechanism(&full.programme);
         return Ok(cx.finish(
-            LimitStatus::DeadLoadNotCarried,
-            None,
-            Some(false),
-            Some(full.value),
-            Vec::new(),
-            mechanism,
+            Found {
+                status: LimitStatus::DeadLoadNotCarried,
+                load_factor: None,
+                dead_load_carried: Some(false),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism,
+            },
             start,
         ));
     }
     let live: Vec<f64> = cx.eq.live.iter().map(|p| p / scale).collect();
     let b_eq: Vec<f64> = cx.eq.dead.iter().map(|w| -w).collect();
-    let programme = solve_programme(
-        &cx.eq,
-        &live,
-        &b_eq,
-        &cx.rows,
-        None,
-        (1.0, LIVE_LOAD_CAP),
-        -1.0,
-        settings,
-    );
+    let spec = ProgrammeSpec {
+        extra_equilibrium: &live,
+        b_eq: &b_eq,
+        row_extra: None,
+        cap: (1.0, LIVE_LOAD_CAP),
+        objective: -1.0,
+    };
+    let programme = solve_programme(&cx.eq, &cx.rows, &spec, settings);
     cx.iterations += programme.iterations;
     cx.programmes += 1;
     if let Some(f) = failure(programme.status) {
@@ -698,24 +726,28 @@ pub fn solve_live_load(
     let lambda_scaled = programme.x[cx.eq.columns];
     if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
         return Ok(cx.finish(
-            LimitStatus::Unbounded,
-            None,
-            Some(true),
-            Some(full.value),
-            Vec::new(),
-            None,
+            Found {
+                status: LimitStatus::Unbounded,
+                load_factor: None,
+                dead_load_carried: Some(true),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism: None,
+            },
             start,
         ));
     }
     let resultants = cx.resultants(&programme.x);
     let mechanism = cx.mechanism(&programme);
     Ok(cx.finish(
-        LimitStatus::Solved,
-        Some(lambda_scaled / scale),
-        Some(true),
-        Some(full.value),
-        resultants,
-        mechanism,
+        Found {
+            status: LimitStatus::Solved,
+            load_factor: Some(lambda_scaled / scale),
+            dead_load_carried: Some(true),
+            dead_load_margin: Some(full.value),
+            resultants,
+            mechanism,
+        },
         start,
     ))
 }

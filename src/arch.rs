@@ -1,0 +1,721 @@
+//! `POST /arch/dead-load` and `POST /arch/live-load`: limit analysis of rigid-block arches
+//! (Livesley 1978; SPEC §1, §3).
+//!
+//! Blocks and interfaces are numbered from 1 in requests and responses, in order of increasing
+//! polar angle for circular arches (interface 1 at the right springing), as the thesis prints
+//! them. Angles are polar angles in degrees (for block chains: the direction of the joint from
+//! its intrados to its extrados end).
+
+use std::num::NonZeroUsize;
+
+use axum::extract::State;
+use serde::{Deserialize, Deserializer, Serialize};
+use thrustline_solver::arch::{
+    solve_dead_load, solve_live_load, thrust_line, ArchError, ArchProblem, Assembly, Bound,
+    CircularArch, HingeSide, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, LiveLoad,
+    Resultant, SolverFailure, VoussoirShape,
+};
+use utoipa::ToSchema;
+
+use crate::error::{ApiError, ApiJson, Problem};
+use crate::validation::{count, finite, number};
+use crate::AppState;
+
+/// Largest number of voussoirs (or blocks) a request may ask for.
+pub const MAX_VOUSSOIRS: usize = 10_000;
+/// Largest number of live loads in one request.
+pub const MAX_LOADS: usize = 10_000;
+
+/// Shape of the voussoirs of a circular arch.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum VoussoirDto {
+    /// Annular sectors (curved intrados and extrados; exact centroid).
+    #[default]
+    Curved,
+    /// Straight intrados and extrados between the corners (polygon centroid).
+    Quadrilateral,
+}
+
+/// One block of an explicit chain.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BlockCornersDto {
+    /// Corners [x, y] in the order intrados-start, extrados-start, extrados-end, intrados-end;
+    /// a block's start face is the previous block's end face.
+    #[schema(value_type = Vec<Vec<f64>>, min_items = 4, max_items = 4, example = json!([[9.5, 0.0], [10.5, 0.0], [10.5, 1.0], [9.5, 1.0]]))]
+    pub corners: [[f64; 2]; 4],
+}
+
+/// The structure: the thesis' circular arch, or any chain of quadrilateral blocks.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum GeometryDto {
+    /// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
+    /// 180° − B (left springing), N voussoirs of equal angle.
+    Circular {
+        /// Middle radius R (> 0).
+        #[schema(exclusive_minimum = 0.0, example = 10.0)]
+        radius: f64,
+        /// Voussoir thickness D, 0 < D < 2R.
+        #[schema(exclusive_minimum = 0.0, example = 1.0748)]
+        thickness: f64,
+        /// Number of voussoirs N, 1 ≤ N ≤ 10000.
+        #[schema(minimum = 1, maximum = 10000, example = 1800)]
+        voussoirs: usize,
+        /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
+        /// horseshoe). Defaults to 0.
+        #[serde(default)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        left_base_angle_deg: f64,
+        /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
+        #[serde(default)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        right_base_angle_deg: f64,
+        /// Voussoir shape. Defaults to `curved`.
+        #[serde(default)]
+        voussoir: VoussoirDto,
+    },
+    /// A chain of quadrilateral blocks; the first block's start face and the last block's end
+    /// face rest on supports.
+    Blocks {
+        /// The blocks, 1 to 10000 of them, in order.
+        #[schema(min_items = 1, max_items = 10000)]
+        blocks: Vec<BlockCornersDto>,
+    },
+}
+
+/// Limits on the interface resultants (absolute forces). A missing field takes Heyman's value
+/// (q_min = s_min = 0, the rest unbounded); `null` means unbounded.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InterfaceLimitsDto {
+    /// Lower limit of q, the normal force at the extrados end (≤ 0; 0 = no tension).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    pub q_min: Option<Option<f64>>,
+    /// Upper limit of q (≥ 0; crushing).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub q_max: Option<Option<f64>>,
+    /// Lower limit of s, the normal force at the intrados end (≤ 0; 0 = no tension).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    pub s_min: Option<Option<f64>>,
+    /// Upper limit of s (≥ 0; crushing).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub s_max: Option<Option<f64>>,
+    /// Lower limit of the shear t (≤ 0).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0)]
+    pub t_min: Option<Option<f64>>,
+    /// Upper limit of the shear t (≥ 0).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub t_max: Option<Option<f64>>,
+}
+
+/// Tells a field that is present (possibly `null`) from one that is absent.
+fn present<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<Option<f64>>, D::Error> {
+    Option::<f64>::deserialize(deserializer).map(Some)
+}
+
+/// A live load: a force and a moment on one block.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LoadDto {
+    /// Block number (1-based).
+    #[schema(minimum = 1, maximum = 10000, example = 5)]
+    pub block: usize,
+    /// x of the point of application. Defaults to the block centroid.
+    #[serde(default)]
+    pub x: Option<f64>,
+    /// y of the point of application. Defaults to the block centroid.
+    #[serde(default)]
+    pub y: Option<f64>,
+    /// Horizontal force component. Defaults to 0.
+    #[serde(default)]
+    pub fx: f64,
+    /// Vertical force component (up positive). Defaults to 0.
+    #[serde(default)]
+    #[schema(example = -1.0)]
+    pub fy: f64,
+    /// Applied moment, counter-clockwise positive. Defaults to 0.
+    #[serde(default)]
+    pub moment: f64,
+}
+
+/// Livesley's dead-load problem: does the structure carry its own weight?
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+#[schema(example = json!({
+    "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800,
+                 "left_base_angle_deg": 0.0, "right_base_angle_deg": 0.0, "voussoir": "curved"},
+    "unit_weight": 1.0,
+    "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null, "t_min": null, "t_max": null},
+    "friction_coefficient": null
+}))]
+pub struct DeadLoadRequest {
+    /// The structure.
+    pub geometry: GeometryDto,
+    /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
+    #[serde(default = "unit")]
+    #[schema(exclusive_minimum = 0.0, default = 1.0, example = 1.0)]
+    pub unit_weight: f64,
+    /// Limits on the interface resultants. Defaults to Heyman's (no tension, no crushing).
+    #[serde(default)]
+    pub interface_limits: InterfaceLimitsDto,
+    /// Coulomb friction coefficient μ ≥ 0 at every interface; null = no sliding. Defaults to
+    /// null.
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 1000000.0)]
+    pub friction_coefficient: Option<f64>,
+}
+
+/// Livesley's live-load problem: the factor on the live loads at collapse.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+#[schema(example = json!({
+    "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+    "unit_weight": 1.0,
+    "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
+}))]
+pub struct LiveLoadRequest {
+    /// The structure.
+    pub geometry: GeometryDto,
+    /// Unit weight γ (> 0). Defaults to 1.
+    #[serde(default = "unit")]
+    #[schema(exclusive_minimum = 0.0, default = 1.0, example = 1.0)]
+    pub unit_weight: f64,
+    /// Limits on the interface resultants. Defaults to Heyman's.
+    #[serde(default)]
+    pub interface_limits: InterfaceLimitsDto,
+    /// Coulomb friction coefficient μ ≥ 0; null = no sliding.
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 1000000.0)]
+    pub friction_coefficient: Option<f64>,
+    /// The live loads (1 to 10000), multiplied together by the load factor.
+    #[schema(min_items = 1, max_items = 10000)]
+    pub loads: Vec<LoadDto>,
+}
+
+fn unit() -> f64 {
+    1.0
+}
+
+/// An active limit of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ActiveConstraintDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// The resultant: q, s (normal forces at the extrados/intrados ends), t (shear), u, v
+    /// (friction: μ(q+s) ∓ t).
+    #[schema(example = "s")]
+    pub resultant: &'static str,
+    /// Which limit: lower or upper.
+    #[schema(example = "lower")]
+    pub bound: &'static str,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// Where the hinge forms, for q and s at their lower limits: q → intrados, s → extrados.
+    #[schema(example = "extrados")]
+    pub hinge: Option<&'static str>,
+    /// The multiplier (plastic rate), with velocities normalised to a fastest corner speed of 1.
+    pub multiplier: f64,
+}
+
+/// A hinge of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct HingeDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// intrados or extrados.
+    pub location: &'static str,
+    /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
+    pub rotation: f64,
+}
+
+/// Virtual velocity of one block in the mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct BlockVelocityDto {
+    /// Block number (1-based).
+    pub block: usize,
+    /// Velocity of the centroid in x.
+    pub u: f64,
+    /// Velocity of the centroid in y.
+    pub v: f64,
+    /// Rotation rate (counter-clockwise).
+    pub rotation: f64,
+}
+
+/// The collapse mechanism, normalised so that the fastest block corner moves at speed 1.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MechanismDto {
+    /// Velocity of every block.
+    pub blocks: Vec<BlockVelocityDto>,
+}
+
+/// The resultant at one interface.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ThrustPointDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// x of the point of action of the normal force; null where it vanishes.
+    pub x: Option<f64>,
+    /// y of the point of action; null where it vanishes.
+    pub y: Option<f64>,
+    /// Normal force q + s (compression positive).
+    pub normal_force: f64,
+    /// Shear force t.
+    pub shear_force: f64,
+    /// Distance of the point of action from the middle of the joint, towards the extrados.
+    pub eccentricity: Option<f64>,
+}
+
+/// How the solve ended.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SolverDto {
+    /// solved; unbounded (no finite live load causes collapse); dead_load_not_carried;
+    /// reduced_accuracy, max_iterations, max_time, numerical_error, infeasible (the
+    /// interior-point method stopped without an answer it can vouch for: no factor reported).
+    #[schema(example = "solved")]
+    pub status: &'static str,
+    /// Interior-point iterations over all linear programmes.
+    pub iterations: u32,
+    /// Linear programmes solved.
+    pub programmes: usize,
+    /// Wall time of the solve in milliseconds.
+    pub time_ms: f64,
+}
+
+/// Everything common to the dead- and live-load answers.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ArchOutcomeDto {
+    /// Whether the structure carries its own weight (λ₀ = 1); null if that could not be decided.
+    pub stable: Option<bool>,
+    /// Dead-load margin at full dead load, as a fraction of the total weight: negative is a
+    /// reserve (every limit met with that much to spare), positive a shortfall.
+    pub dead_load_margin: Option<f64>,
+    /// The limits active in the collapse mechanism (empty when nothing collapses).
+    pub active_constraints: Vec<ActiveConstraintDto>,
+    /// The hinges of the mechanism.
+    pub hinges: Vec<HingeDto>,
+    /// Interfaces that slide in the mechanism.
+    pub sliding_interfaces: Vec<usize>,
+    /// Interfaces that crush in the mechanism.
+    pub crushing_interfaces: Vec<usize>,
+    /// The collapse mechanism; null when nothing collapses.
+    pub mechanism: Option<MechanismDto>,
+    /// True when the mechanism slides under Coulomb friction: the linear programme assumes an
+    /// associated flow rule, so the load factor may over-estimate the true one (Livesley
+    /// §2.7–2.9).
+    pub friction_may_overestimate: bool,
+    /// The line of thrust of the admissible state at the load factor (empty when there is none).
+    pub thrust_line: Vec<ThrustPointDto>,
+    /// How the solve ended.
+    pub solver: SolverDto,
+}
+
+/// Answer to the dead-load problem.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct DeadLoadResponse {
+    /// λ₀ ≤ 1, the largest fraction of the dead load that can be carried; null if the solver
+    /// failed.
+    #[schema(example = 1.0)]
+    pub dead_load_factor: Option<f64>,
+    /// Details.
+    #[serde(flatten)]
+    pub outcome: ArchOutcomeDto,
+}
+
+/// Answer to the live-load problem.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct LiveLoadResponse {
+    /// λ, the factor on the live loads at collapse; null when the dead load is not carried, no
+    /// finite factor causes collapse, or the solver failed.
+    pub load_factor: Option<f64>,
+    /// Details.
+    #[serde(flatten)]
+    pub outcome: ArchOutcomeDto,
+}
+
+/// Dead-load limit analysis (Livesley's λ₀).
+#[utoipa::path(
+    post,
+    path = "/arch/dead-load",
+    tag = "arch",
+    request_body = DeadLoadRequest,
+    responses(
+        (status = 200, description = "The dead-load factor, mechanism and thrust line", body = DeadLoadResponse),
+        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "A field is missing, unknown or out of range, or the blocks do not form a chain", body = Problem, content_type = "application/problem+json"),
+        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+    )
+)]
+pub async fn dead_load(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<DeadLoadRequest>,
+) -> Result<ApiJson<DeadLoadResponse>, ApiError> {
+    let problem = build_problem(
+        &request.geometry,
+        request.unit_weight,
+        &request.interface_limits,
+        request.friction_coefficient,
+        &[],
+    )?;
+    let settings = LimitSettings {
+        time_limit_secs: state.solve_time_limit_secs(),
+        ..LimitSettings::default()
+    };
+    let ((problem, solution), elapsed) = state
+        .pool
+        .run(move || {
+            let solution = solve_dead_load(&problem, &settings);
+            (problem, solution)
+        })
+        .await?;
+    tracing::info!(
+        blocks = problem.assembly().blocks.len(),
+        iterations = solution.iterations,
+        solve_ms = elapsed.as_secs_f64() * 1e3,
+        dead_load_factor = solution.load_factor,
+        "dead load solved"
+    );
+    Ok(ApiJson(DeadLoadResponse {
+        dead_load_factor: solution.load_factor,
+        outcome: outcome(&problem, &solution),
+    }))
+}
+
+/// Live-load limit analysis (Livesley's λ).
+#[utoipa::path(
+    post,
+    path = "/arch/live-load",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    responses(
+        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
+        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "A field is missing, unknown or out of range, a load is on a missing block, or the blocks do not form a chain", body = Problem, content_type = "application/problem+json"),
+        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+    )
+)]
+pub async fn live_load(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<LiveLoadRequest>,
+) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
+    count("loads", request.loads.len(), 1, MAX_LOADS)?;
+    let problem = build_problem(
+        &request.geometry,
+        request.unit_weight,
+        &request.interface_limits,
+        request.friction_coefficient,
+        &request.loads,
+    )?;
+    let settings = LimitSettings {
+        time_limit_secs: state.solve_time_limit_secs(),
+        ..LimitSettings::default()
+    };
+    let ((problem, solution), elapsed) = state
+        .pool
+        .run(move || {
+            let solution = solve_live_load(&problem, &settings);
+            (problem, solution)
+        })
+        .await?;
+    let solution = solution.map_err(arch_error)?;
+    tracing::info!(
+        blocks = problem.assembly().blocks.len(),
+        iterations = solution.iterations,
+        solve_ms = elapsed.as_secs_f64() * 1e3,
+        load_factor = solution.load_factor,
+        "live load solved"
+    );
+    Ok(ApiJson(LiveLoadResponse {
+        load_factor: solution.load_factor,
+        outcome: outcome(&problem, &solution),
+    }))
+}
+
+/// Validates the common part of an arch request and builds the solver's problem.
+pub fn build_problem(
+    geometry: &GeometryDto,
+    unit_weight: f64,
+    limits: &InterfaceLimitsDto,
+    friction: Option<f64>,
+    loads: &[LoadDto],
+) -> Result<ArchProblem, ApiError> {
+    let assembly = build_assembly(geometry)?;
+    let unit_weight = number("unit_weight", unit_weight, 0.0, true, f64::MAX)?;
+    let heyman = InterfaceLimits::heyman();
+    let limit = |field: &str,
+                 given: Option<Option<f64>>,
+                 default: Option<f64>,
+                 lower: bool|
+     -> Result<Option<f64>, ApiError> {
+        match given.unwrap_or(default) {
+            None => Ok(None),
+            Some(v) if lower => number(
+                &format!("interface_limits.{field}"),
+                v,
+                f64::MIN,
+                false,
+                0.0,
+            )
+            .map(Some),
+            Some(v) => number(
+                &format!("interface_limits.{field}"),
+                v,
+                0.0,
+                false,
+                f64::MAX,
+            )
+            .map(Some),
+        }
+    };
+    let limits = InterfaceLimits {
+        q_min: limit("q_min", limits.q_min, heyman.q_min, true)?,
+        q_max: limit("q_max", limits.q_max, heyman.q_max, false)?,
+        s_min: limit("s_min", limits.s_min, heyman.s_min, true)?,
+        s_max: limit("s_max", limits.s_max, heyman.s_max, false)?,
+        t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
+        t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
+    };
+    let friction = friction
+        .map(|mu| number("friction_coefficient", mu, 0.0, false, 1e6))
+        .transpose()?;
+    let n = assembly.blocks.len();
+    let live_loads = loads
+        .iter()
+        .enumerate()
+        .map(|(i, load)| {
+            let field = |name: &str| format!("loads[{i}].{name}");
+            let block = count(&field("block"), load.block, 1, n)? - 1;
+            let centroid = assembly.blocks[block].centroid;
+            Ok(LiveLoad {
+                block,
+                point: (
+                    load.x
+                        .map(|x| finite(&field("x"), x))
+                        .transpose()?
+                        .unwrap_or(centroid.0),
+                    load.y
+                        .map(|y| finite(&field("y"), y))
+                        .transpose()?
+                        .unwrap_or(centroid.1),
+                ),
+                fx: finite(&field("fx"), load.fx)?,
+                fy: finite(&field("fy"), load.fy)?,
+                moment: finite(&field("moment"), load.moment)?,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    if !loads.is_empty()
+        && live_loads
+            .iter()
+            .all(|l| l.fx == 0.0 && l.fy == 0.0 && l.moment == 0.0)
+    {
+        return Err(ApiError::invalid(
+            "loads",
+            "every load is zero: give at least one non-zero fx, fy or moment",
+        ));
+    }
+    ArchProblem::new(assembly, unit_weight, limits, friction, live_loads).map_err(arch_error)
+}
+
+/// The circular arch of a request, if it is one (validated).
+pub fn circular_arch(geometry: &GeometryDto) -> Result<Option<CircularArch>, ApiError> {
+    let GeometryDto::Circular {
+        radius,
+        thickness,
+        voussoirs,
+        left_base_angle_deg,
+        right_base_angle_deg,
+        voussoir,
+    } = geometry
+    else {
+        return Ok(None);
+    };
+    let radius = number("geometry.radius", *radius, 0.0, true, f64::MAX)?;
+    let thickness = number("geometry.thickness", *thickness, 0.0, true, f64::MAX)?;
+    if thickness >= 2.0 * radius {
+        return Err(ApiError::invalid(
+            "geometry.thickness",
+            format!(
+                "{thickness} is out of range: allowed is 0 < geometry.thickness < 2·radius = {}",
+                2.0 * radius
+            ),
+        ));
+    }
+    let n = count("geometry.voussoirs", *voussoirs, 1, MAX_VOUSSOIRS)?;
+    let left = number(
+        "geometry.left_base_angle_deg",
+        *left_base_angle_deg,
+        -90.0,
+        true,
+        89.999_999,
+    )?;
+    let right = number(
+        "geometry.right_base_angle_deg",
+        *right_base_angle_deg,
+        -90.0,
+        true,
+        89.999_999,
+    )?;
+    let shape = match voussoir {
+        VoussoirDto::Curved => VoussoirShape::Curved,
+        VoussoirDto::Quadrilateral => VoussoirShape::Quadrilateral,
+    };
+    let n = NonZeroUsize::new(n)
+        .ok_or_else(|| ApiError::invalid("geometry.voussoirs", "must be at least 1"))?;
+    CircularArch::new(radius, thickness, n, left, right, shape)
+        .map(Some)
+        .map_err(arch_error)
+}
+
+fn build_assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
+    if let Some(arch) = circular_arch(geometry)? {
+        return Ok(arch.assembly());
+    }
+    let GeometryDto::Blocks { blocks } = geometry else {
+        return Err(ApiError::invalid(
+            "geometry.kind",
+            "must be circular or blocks",
+        ));
+    };
+    count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
+    let corners: Vec<[(f64, f64); 4]> = blocks
+        .iter()
+        .map(|b| b.corners.map(|[x, y]| (x, y)))
+        .collect();
+    Assembly::from_quadrilaterals(&corners).map_err(arch_error)
+}
+
+/// The solver's refusals are the client's to fix: 422 naming the parameter.
+fn arch_error(error: ArchError) -> ApiError {
+    match error {
+        ArchError::OutOfRange {
+            parameter,
+            value,
+            allowed,
+        } => ApiError::invalid(
+            parameter,
+            format!("{value} is out of range: allowed is {allowed}"),
+        ),
+        ArchError::InvalidGeometry { parameter, reason } => ApiError::invalid(parameter, reason),
+    }
+}
+
+fn resultant_name(resultant: Resultant) -> &'static str {
+    match resultant {
+        Resultant::Q => "q",
+        Resultant::S => "s",
+        Resultant::T => "t",
+        Resultant::U => "u",
+        Resultant::V => "v",
+    }
+}
+
+fn side_name(side: HingeSide) -> &'static str {
+    match side {
+        HingeSide::Intrados => "intrados",
+        HingeSide::Extrados => "extrados",
+    }
+}
+
+/// The status word of a solution, exhaustively.
+pub fn status_name(status: LimitStatus) -> &'static str {
+    match status {
+        LimitStatus::Solved => "solved",
+        LimitStatus::DeadLoadNotCarried => "dead_load_not_carried",
+        LimitStatus::Unbounded => "unbounded",
+        LimitStatus::SolverFailed(SolverFailure::ReducedAccuracy) => "reduced_accuracy",
+        LimitStatus::SolverFailed(SolverFailure::MaxIterations) => "max_iterations",
+        LimitStatus::SolverFailed(SolverFailure::MaxTime) => "max_time",
+        LimitStatus::SolverFailed(SolverFailure::Numerical) => "numerical_error",
+        LimitStatus::SolverFailed(SolverFailure::Infeasible) => "infeasible",
+    }
+}
+
+/// Translates a solution into the response fields common to both problems.
+pub fn outcome(problem: &ArchProblem, solution: &LimitSolution) -> ArchOutcomeDto {
+    let mechanism = solution.mechanism.as_ref();
+    let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
+    ArchOutcomeDto {
+        stable: solution.dead_load_carried,
+        dead_load_margin: solution.dead_load_margin,
+        active_constraints: mechanism
+            .map(|m| {
+                m.active
+                    .iter()
+                    .map(|a| ActiveConstraintDto {
+                        interface: a.interface + 1,
+                        resultant: resultant_name(a.resultant),
+                        bound: match a.bound {
+                            Bound::Lower => "lower",
+                            Bound::Upper => "upper",
+                        },
+                        angle_deg: a.angle_deg,
+                        hinge: a.hinge.map(side_name),
+                        multiplier: a.multiplier,
+                    })
+                    .collect()
+            })
+            .unwrap_or_default(),
+        hinges: mechanism
+            .map(|m| {
+                m.hinges
+                    .iter()
+                    .map(|h| HingeDto {
+                        interface: h.interface + 1,
+                        angle_deg: h.angle_deg,
+                        location: side_name(h.side),
+                        rotation: h.rotation,
+                    })
+                    .collect()
+            })
+            .unwrap_or_default(),
+        sliding_interfaces: mechanism.map(|m| one_based(&m.sliding)).unwrap_or_default(),
+        crushing_interfaces: mechanism
+            .map(|m| one_based(&m.crushing))
+            .unwrap_or_default(),
+        mechanism: mechanism.map(|m| MechanismDto {
+            blocks: m
+                .velocities
+                .iter()
+                .enumerate()
+                .map(|(b, v)| BlockVelocityDto {
+                    block: b + 1,
+                    u: v[0],
+                    v: v[1],
+                    rotation: v[2],
+                })
+                .collect(),
+        }),
+        friction_may_overestimate: mechanism.is_some_and(|m| m.involves_friction()),
+        thrust_line: thrust_line(problem.assembly(), &solution.resultants)
+            .into_iter()
+            .map(|t| ThrustPointDto {
+                interface: t.interface + 1,
+                x: t.point.map(|p| p.0),
+                y: t.point.map(|p| p.1),
+                normal_force: t.normal_force,
+                shear_force: t.shear_force,
+                eccentricity: t.eccentricity,
+            })
+            .collect(),
+        solver: SolverDto {
+            status: status_name(solution.status),
+            iterations: solution.iterations,
+            programmes: solution.programmes,
+            time_ms: solution.solve_time_secs * 1e3,
+        },
+    }
+}

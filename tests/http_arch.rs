@@ -1,0 +1,195 @@
+//! `POST /arch/dead-load` and `POST /arch/live-load` over a real socket.
+
+mod common;
+
+use common::{assert_problem, with, Server};
+use serde_json::{json, Value};
+
+fn milankovitch(thickness: f64) -> Value {
+    json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": thickness, "voussoirs": 1800,
+                     "left_base_angle_deg": 0.0, "right_base_angle_deg": 0.0, "voussoir": "curved"},
+        "unit_weight": 1.0,
+        "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null,
+                             "t_min": null, "t_max": null},
+        "friction_coefficient": null
+    })
+}
+
+fn quarter_span_load() -> Value {
+    json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+        "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
+    })
+}
+
+#[tokio::test]
+async fn milankovitch_thickness_1_0748_stands() {
+    // SPEC §1.4: λ₀ = 1 and no active constraints.
+    let server = Server::start().await;
+    let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0748)).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["dead_load_factor"], 1.0);
+    assert_eq!(body["stable"], true);
+    assert_eq!(body["active_constraints"], json!([]));
+    assert_eq!(body["mechanism"], Value::Null);
+    assert_eq!(body["thrust_line"].as_array().unwrap().len(), 1801);
+    assert_eq!(body["solver"]["status"], "solved");
+}
+
+#[tokio::test]
+async fn milankovitch_thickness_1_0747_collapses_as_the_thesis_reports() {
+    // SPEC §1.4: interfaces 1 s 0.0° extrados, 356 q 35.5° intrados, 901 s 90.0° extrados,
+    // 1446 q 144.5° intrados, 1801 s 180.0° extrados.
+    let server = Server::start().await;
+    let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0747)).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["dead_load_factor"], 0.0);
+    assert_eq!(body["stable"], false);
+    let active: Vec<(u64, String, f64, String)> = body["active_constraints"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| {
+            (
+                a["interface"].as_u64().unwrap(),
+                a["resultant"].as_str().unwrap().to_owned(),
+                (a["angle_deg"].as_f64().unwrap() * 10.0).round() / 10.0,
+                a["hinge"].as_str().unwrap().to_owned(),
+            )
+        })
+        .collect();
+    let expected = [
+        (1, "s", 0.0, "extrados"),
+        (356, "q", 35.5, "intrados"),
+        (901, "s", 90.0, "extrados"),
+        (1446, "q", 144.5, "intrados"),
+        (1801, "s", 180.0, "extrados"),
+    ];
+    assert_eq!(active.len(), expected.len(), "{active:?}");
+    for (got, want) in active.iter().zip(expected) {
+        assert_eq!((got.0, got.1.as_str(), got.2, got.3.as_str()), want);
+    }
+    assert!(body["active_constraints"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|a| a["bound"] == "lower"));
+    assert_eq!(body["hinges"].as_array().unwrap().len(), 5);
+    assert_eq!(body["mechanism"]["blocks"].as_array().unwrap().len(), 1800);
+}
+
+#[tokio::test]
+async fn live_load_near_quarter_span() {
+    let server = Server::start().await;
+    let (status, _, body) = server.post("/arch/live-load", &quarter_span_load()).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["stable"], true);
+    let lambda = body["load_factor"].as_f64().unwrap();
+    assert!(lambda > 0.0);
+    assert_eq!(body["hinges"].as_array().unwrap().len(), 4);
+    // Twice the load, half the factor (1e-8: interior-point tolerance).
+    let doubled = with(
+        quarter_span_load(),
+        "loads",
+        json!([{"block": 26, "fy": -2.0}]),
+    );
+    let (_, _, body) = server.post("/arch/live-load", &doubled).await;
+    let half = body["load_factor"].as_f64().unwrap();
+    assert!((2.0 * half - lambda).abs() < 1e-8 * lambda);
+}
+
+#[tokio::test]
+async fn live_load_on_an_arch_that_cannot_stand_is_not_a_number() {
+    // Issue 3: 200 with stable: false and load_factor: null.
+    let server = Server::start().await;
+    let body = with(quarter_span_load(), "geometry.thickness", json!(0.5));
+    let (status, _, body) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["stable"], false);
+    assert_eq!(body["load_factor"], Value::Null);
+    assert_eq!(body["solver"]["status"], "dead_load_not_carried");
+}
+
+#[tokio::test]
+async fn block_chain_input_matches_the_quadrilateral_generator() {
+    let server = Server::start().await;
+    let n = 16;
+    let (r_in, r_out) = (9.25f64, 10.75f64);
+    let corner = |r: f64, k: usize| {
+        let phi = std::f64::consts::PI * k as f64 / n as f64;
+        json!([r * phi.cos(), r * phi.sin()])
+    };
+    let blocks: Vec<Value> = (0..n)
+        .map(|k| json!({"corners": [corner(r_in, k), corner(r_out, k), corner(r_out, k + 1), corner(r_in, k + 1)]}))
+        .collect();
+    let loads = json!([{"block": 4, "fy": -1.0}]);
+    let chain = json!({"geometry": {"kind": "blocks", "blocks": blocks}, "loads": loads});
+    let generated = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": n, "voussoir": "quadrilateral"},
+        "loads": loads
+    });
+    let (_, _, a) = server.post("/arch/live-load", &chain).await;
+    let (_, _, b) = server.post("/arch/live-load", &generated).await;
+    let (a, b) = (
+        a["load_factor"].as_f64().unwrap(),
+        b["load_factor"].as_f64().unwrap(),
+    );
+    assert!((a - b).abs() < 1e-8 * a, "{a} vs {b}");
+}
+
+#[tokio::test]
+async fn bad_arch_inputs_are_422_naming_the_field() {
+    let server = Server::start().await;
+    let cases = [
+        ("geometry.thickness", json!(20.0)),
+        ("geometry.thickness", json!(-1.0)),
+        ("geometry.radius", json!(0.0)),
+        ("geometry.voussoirs", json!(0)),
+        ("geometry.voussoirs", json!(10_001)),
+        ("geometry.left_base_angle_deg", json!(90.0)),
+        ("geometry.right_base_angle_deg", json!(-95.0)),
+        ("unit_weight", json!(0.0)),
+        ("interface_limits.q_min", json!(1.0)),
+        ("interface_limits.s_max", json!(-1.0)),
+        ("friction_coefficient", json!(-0.5)),
+    ];
+    for (field, value) in cases {
+        let body = with(milankovitch(1.0748), field, value);
+        let (status, content_type, body) = server.post("/arch/dead-load", &body).await;
+        assert_problem(status, &content_type, &body, 422, field);
+    }
+    let cases = [
+        ("loads", json!([])),
+        ("loads", json!([{"block": 1, "fy": 0.0}])),
+        ("loads[0].block", json!([{"block": 101, "fy": -1.0}])),
+        ("loads[0].block", json!([{"block": 0, "fy": -1.0}])),
+    ];
+    for (field, loads) in cases {
+        let body = with(quarter_span_load(), "loads", loads);
+        let (status, content_type, body) = server.post("/arch/live-load", &body).await;
+        assert_problem(status, &content_type, &body, 422, field);
+    }
+    // Blocks that do not share faces.
+    let body = json!({"geometry": {"kind": "blocks", "blocks": [
+        {"corners": [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]},
+        {"corners": [[1.5, 0.0], [1.5, 1.0], [2.0, 1.0], [2.0, 0.0]]}]}});
+    let (status, content_type, body) = server.post("/arch/dead-load", &body).await;
+    assert_problem(
+        status,
+        &content_type,
+        &body,
+        422,
+        "geometry.blocks[1].corners",
+    );
+    // Unknown geometry kind and unknown fields.
+    let body = with(milankovitch(1.0748), "geometry.kind", json!("gothic"));
+    let (status, content_type, _) = server.post("/arch/dead-load", &body).await;
+    assert_eq!(
+        (status, content_type.as_str()),
+        (422, "application/problem+json")
+    );
+    let body = with(milankovitch(1.0748), "extra", json!(1));
+    let (status, content_type, body) = server.post("/arch/dead-load", &body).await;
+    assert_problem(status, &content_type, &body, 422, "extra");
+}
