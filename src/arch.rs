@@ -13,7 +13,7 @@ use serde::{Deserialize, Deserializer, Serialize};
 use thrustline_solver::arch::{
     solve_dead_load, solve_live_load, thrust_line, ArchError, ArchProblem, Assembly, Bound,
     CircularArch, HingeSide, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, LiveLoad,
-    Resultant, SolverFailure, VoussoirShape,
+    Mechanism, Resultant, SolverFailure, VoussoirShape,
 };
 use utoipa::ToSchema;
 
@@ -444,6 +444,34 @@ pub async fn live_load(
     }))
 }
 
+/// Validates `interface_limits`: missing fields take Heyman's values, `null` is unbounded.
+pub fn interface_limits(limits: &InterfaceLimitsDto) -> Result<InterfaceLimits, ApiError> {
+    let heyman = InterfaceLimits::heyman();
+    let limit = |field: &str, given: Option<Option<f64>>, default: Option<f64>, lower: bool| {
+        let field = format!("interface_limits.{field}");
+        match given.unwrap_or(default) {
+            None => Ok(None),
+            Some(v) if lower => number(&field, v, f64::MIN, false, 0.0).map(Some),
+            Some(v) => number(&field, v, 0.0, false, f64::MAX).map(Some),
+        }
+    };
+    Ok(InterfaceLimits {
+        q_min: limit("q_min", limits.q_min, heyman.q_min, true)?,
+        q_max: limit("q_max", limits.q_max, heyman.q_max, false)?,
+        s_min: limit("s_min", limits.s_min, heyman.s_min, true)?,
+        s_max: limit("s_max", limits.s_max, heyman.s_max, false)?,
+        t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
+        t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
+    })
+}
+
+/// Validates `friction_coefficient` (null: no sliding).
+pub fn friction_coefficient(friction: Option<f64>) -> Result<Option<f64>, ApiError> {
+    friction
+        .map(|mu| number("friction_coefficient", mu, 0.0, false, 1e6))
+        .transpose()
+}
+
 /// Validates the common part of an arch request and builds the solver's problem.
 pub fn build_problem(
     geometry: &GeometryDto,
@@ -454,43 +482,8 @@ pub fn build_problem(
 ) -> Result<ArchProblem, ApiError> {
     let assembly = build_assembly(geometry)?;
     let unit_weight = number("unit_weight", unit_weight, 0.0, true, f64::MAX)?;
-    let heyman = InterfaceLimits::heyman();
-    let limit = |field: &str,
-                 given: Option<Option<f64>>,
-                 default: Option<f64>,
-                 lower: bool|
-     -> Result<Option<f64>, ApiError> {
-        match given.unwrap_or(default) {
-            None => Ok(None),
-            Some(v) if lower => number(
-                &format!("interface_limits.{field}"),
-                v,
-                f64::MIN,
-                false,
-                0.0,
-            )
-            .map(Some),
-            Some(v) => number(
-                &format!("interface_limits.{field}"),
-                v,
-                0.0,
-                false,
-                f64::MAX,
-            )
-            .map(Some),
-        }
-    };
-    let limits = InterfaceLimits {
-        q_min: limit("q_min", limits.q_min, heyman.q_min, true)?,
-        q_max: limit("q_max", limits.q_max, heyman.q_max, false)?,
-        s_min: limit("s_min", limits.s_min, heyman.s_min, true)?,
-        s_max: limit("s_max", limits.s_max, heyman.s_max, false)?,
-        t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
-        t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
-    };
-    let friction = friction
-        .map(|mu| number("friction_coefficient", mu, 0.0, false, 1e6))
-        .transpose()?;
+    let limits = interface_limits(limits)?;
+    let friction = friction_coefficient(friction)?;
     let n = assembly.blocks.len();
     let live_loads = loads
         .iter()
@@ -599,7 +592,7 @@ fn build_assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
 }
 
 /// The solver's refusals are the client's to fix: 422 naming the parameter.
-fn arch_error(error: ArchError) -> ApiError {
+pub fn arch_error(error: ArchError) -> ApiError {
     match error {
         ArchError::OutOfRange {
             parameter,
@@ -651,37 +644,8 @@ pub fn outcome(problem: &ArchProblem, solution: &LimitSolution) -> ArchOutcomeDt
     ArchOutcomeDto {
         stable: solution.dead_load_carried,
         dead_load_margin: solution.dead_load_margin,
-        active_constraints: mechanism
-            .map(|m| {
-                m.active
-                    .iter()
-                    .map(|a| ActiveConstraintDto {
-                        interface: a.interface + 1,
-                        resultant: resultant_name(a.resultant),
-                        bound: match a.bound {
-                            Bound::Lower => "lower",
-                            Bound::Upper => "upper",
-                        },
-                        angle_deg: a.angle_deg,
-                        hinge: a.hinge.map(side_name),
-                        multiplier: a.multiplier,
-                    })
-                    .collect()
-            })
-            .unwrap_or_default(),
-        hinges: mechanism
-            .map(|m| {
-                m.hinges
-                    .iter()
-                    .map(|h| HingeDto {
-                        interface: h.interface + 1,
-                        angle_deg: h.angle_deg,
-                        location: side_name(h.side),
-                        rotation: h.rotation,
-                    })
-                    .collect()
-            })
-            .unwrap_or_default(),
+        active_constraints: mechanism.map(active_constraints).unwrap_or_default(),
+        hinges: mechanism.map(hinges).unwrap_or_default(),
         sliding_interfaces: mechanism.map(|m| one_based(&m.sliding)).unwrap_or_default(),
         crushing_interfaces: mechanism
             .map(|m| one_based(&m.crushing))
@@ -718,4 +682,37 @@ pub fn outcome(problem: &ArchProblem, solution: &LimitSolution) -> ArchOutcomeDt
             time_ms: solution.solve_time_secs * 1e3,
         },
     }
+}
+
+/// The active limits of a mechanism, 1-based.
+pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
+    mechanism
+        .active
+        .iter()
+        .map(|a| ActiveConstraintDto {
+            interface: a.interface + 1,
+            resultant: resultant_name(a.resultant),
+            bound: match a.bound {
+                Bound::Lower => "lower",
+                Bound::Upper => "upper",
+            },
+            angle_deg: a.angle_deg,
+            hinge: a.hinge.map(side_name),
+            multiplier: a.multiplier,
+        })
+        .collect()
+}
+
+/// The hinges of a mechanism, 1-based.
+pub fn hinges(mechanism: &Mechanism) -> Vec<HingeDto> {
+    mechanism
+        .hinges
+        .iter()
+        .map(|h| HingeDto {
+            interface: h.interface + 1,
+            angle_deg: h.angle_deg,
+            location: side_name(h.side),
+            rotation: h.rotation,
+        })
+        .collect()
 }

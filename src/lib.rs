@@ -12,6 +12,7 @@ pub mod arch;
 pub mod config;
 pub mod error;
 pub mod health;
+pub mod minimum_thickness;
 pub mod openapi;
 pub mod pool;
 pub mod slope;
@@ -65,6 +66,10 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .route("/slope/spencer", post(slope::spencer))
         .route("/arch/dead-load", post(arch::dead_load))
         .route("/arch/live-load", post(arch::live_load))
+        .route(
+            "/arch/minimum-thickness",
+            post(minimum_thickness::minimum_thickness),
+        )
         .with_state(state);
     Router::new()
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))

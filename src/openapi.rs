@@ -19,6 +19,7 @@ use utoipa::OpenApi;
         crate::health::healthz,
         crate::arch::dead_load,
         crate::arch::live_load,
+        crate::minimum_thickness::minimum_thickness,
         crate::slope::spencer
     ),
     tags(

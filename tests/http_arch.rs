@@ -193,3 +193,57 @@ async fn bad_arch_inputs_are_422_naming_the_field() {
     let (status, content_type, body) = server.post("/arch/dead-load", &body).await;
     assert_problem(status, &content_type, &body, 422, "extra");
 }
+
+#[tokio::test]
+async fn minimum_thickness_of_milankovitch_semicircle() {
+    // SPEC §1.4: 0.10747 < d/R < 0.10748 at N = 1800, rupture 54.5° from the crown.
+    let server = Server::start().await;
+    let (status, _, body) = server
+        .post("/arch/minimum-thickness", &milankovitch(1.0))
+        .await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["outcome"], "found");
+    let ratio = body["thickness_to_radius"].as_f64().unwrap();
+    assert!((0.10747..=0.10748).contains(&ratio), "{ratio}");
+    assert!((body["rupture_angle_deg"].as_f64().unwrap() - 54.5).abs() < 0.05);
+    assert_eq!(body["hinges"].as_array().unwrap().len(), 5);
+    assert!(body["evaluations"].as_u64().unwrap() >= 2);
+}
+
+#[tokio::test]
+async fn minimum_thickness_edges_and_bad_inputs() {
+    let server = Server::start().await;
+    let three = with(milankovitch(1.0), "geometry.voussoirs", json!(3));
+    let (status, _, body) = server.post("/arch/minimum-thickness", &three).await;
+    assert_eq!(status, 200);
+    assert_eq!(body["outcome"], "stands_however_thin");
+    assert_eq!(body["thickness"], Value::Null);
+
+    let slippery = with(
+        with(milankovitch(1.0), "geometry.voussoirs", json!(50)),
+        "friction_coefficient",
+        json!(0.2),
+    );
+    let (_, _, body) = server.post("/arch/minimum-thickness", &slippery).await;
+    assert_eq!(body["outcome"], "never_stands");
+
+    let mut tolerance = milankovitch(1.0);
+    tolerance["tolerance"] = json!(0.5);
+    let (status, content_type, body) = server.post("/arch/minimum-thickness", &tolerance).await;
+    assert_problem(status, &content_type, &body, 422, "tolerance");
+
+    let blocks = json!({"geometry": {"kind": "blocks", "blocks": [
+        {"corners": [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]}]}});
+    let (status, content_type, body) = server.post("/arch/minimum-thickness", &blocks).await;
+    assert_problem(status, &content_type, &body, 422, "geometry.kind");
+
+    // The thickness is ignored, even when it would be invalid for a dead-load request.
+    let ignored = with(
+        with(milankovitch(1.0), "geometry.thickness", json!(50.0)),
+        "geometry.voussoirs",
+        json!(4),
+    );
+    let (status, _, body) = server.post("/arch/minimum-thickness", &ignored).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["outcome"], "found");
+}

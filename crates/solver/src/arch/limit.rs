@@ -588,6 +588,22 @@ impl<'a> Context<'a> {
     }
 }
 
+/// The dead-load margin δ at full dead load (a fraction of the total weight; ≤ 0 when the weight
+/// is carried), the collapse mechanism when δ > 0 and the interior-point iterations spent.
+pub(crate) fn full_dead_load_margin(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+) -> Result<(f64, Option<Mechanism>, u32), SolverFailure> {
+    let mut cx = Context::new(problem, settings);
+    let full = cx.margin(1.0)?;
+    let mechanism = if full.value > settings.margin_tolerance {
+        cx.mechanism(&full.programme)
+    } else {
+        None
+    };
+    Ok((full.value, mechanism, cx.iterations))
+}
+
 /// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
 /// carried, the mechanism in which the structure collapses under it.
 pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {

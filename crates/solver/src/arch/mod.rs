@@ -15,12 +15,14 @@
 //! - [`equilibrium`]: the sparse equilibrium matrix H and the load vectors.
 //! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
 //! - [`mechanism`]: the collapse mechanism read from the multipliers.
+//! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
 pub mod equilibrium;
 pub mod geometry;
 pub mod limit;
 pub mod mechanism;
+pub mod minimum_thickness;
 pub mod thrust_line;
 
 pub use equilibrium::LiveLoad;
@@ -30,6 +32,10 @@ pub use limit::{
     LimitStatus, SolverFailure,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
+pub use minimum_thickness::{
+    rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,
+    MinimumThicknessSettings,
+};
 pub use thrust_line::{thrust_line, ThrustPoint};
 
 /// Input the arch solver cannot accept; `parameter` names the offending input.

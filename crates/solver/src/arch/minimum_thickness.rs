@@ -1,0 +1,265 @@
+//! The minimum thickness of a circular arch: the smallest voussoir thickness D for which the arch
+//! carries its own weight (λ₀ = 1) — Milankovitch's (1904) question, asked of the rigid-block
+//! model for any base angles, voussoir count, voussoir shape, limits and friction.
+//!
+//! # Method
+//! The dead-load margin δ(D) of [`super::limit`] (the least relaxation of the limits, a fraction
+//! of the weight, under which the weight is carried) is continuous in D and changes sign at the
+//! minimum thickness: the root is bracketed by geometric steps from D = R/10 and then found by
+//! Brent's method on δ(D) itself — a continuous margin, not a yes/no test, so that the bracket
+//! shrinks superlinearly instead of by halves. The answer is the upper end of the final bracket:
+//! the thinnest arch known to stand, within `tolerance`·R of the limit.
+
+use std::time::Instant;
+
+use super::limit::{
+    full_dead_load_margin, ArchProblem, InterfaceLimits, LimitSettings, SolverFailure,
+};
+use super::mechanism::{HingeSide, Mechanism};
+use super::{ArchError, CircularArch};
+use crate::roots::brent;
+
+/// Settings of the search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MinimumThicknessSettings {
+    /// Accuracy of the thickness relative to the radius. Defaults to 1e-6.
+    pub tolerance: f64,
+    /// Settings of each dead-load programme.
+    pub limit: LimitSettings,
+    /// Largest number of dead-load evaluations. Defaults to 100.
+    pub max_evaluations: usize,
+}
+
+impl Default for MinimumThicknessSettings {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-6,
+            limit: LimitSettings::default(),
+            max_evaluations: 100,
+        }
+    }
+}
+
+/// What the search found.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MinimumThicknessOutcome {
+    /// The minimum thickness, with the mechanism of an arch just thinner than it.
+    Found {
+        /// Thinnest thickness known to carry the dead load.
+        thickness: f64,
+        /// The thickest thickness known not to (the other end of the final bracket).
+        thickness_below: f64,
+        /// Collapse mechanism at `thickness_below`.
+        mechanism: Option<Mechanism>,
+    },
+    /// Even a thickness of 1e-6·R carries the dead load: there is no finite minimum (for
+    /// example N ≤ 3 voussoirs under symmetric dead load).
+    StandsHoweverThin,
+    /// No thickness below 2R carries the dead load (for example friction too low).
+    NeverStands,
+    /// A dead-load programme failed.
+    SolverFailed(SolverFailure),
+}
+
+/// The answer with its cost.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MinimumThickness {
+    /// What was found.
+    pub outcome: MinimumThicknessOutcome,
+    /// Dead-load programmes solved.
+    pub evaluations: usize,
+    /// Interior-point iterations over all of them.
+    pub iterations: u32,
+    /// Wall time in seconds.
+    pub solve_time_secs: f64,
+}
+
+/// Why one evaluation of δ(D) stopped the search.
+enum Stop {
+    Input(ArchError),
+    Solver(SolverFailure),
+}
+
+/// One evaluation: the thickness, its margin and the mechanism when it collapses.
+struct Evaluation {
+    thickness: f64,
+    margin: f64,
+    mechanism: Option<Mechanism>,
+}
+
+/// δ(D) for the arch, counting the programmes.
+struct MarginOfThickness<'a> {
+    arch: &'a CircularArch,
+    unit_weight: f64,
+    limits: InterfaceLimits,
+    friction: Option<f64>,
+    settings: &'a LimitSettings,
+    evaluations: usize,
+    iterations: u32,
+}
+
+impl MarginOfThickness<'_> {
+    fn at(&mut self, thickness: f64) -> Result<Evaluation, Stop> {
+        let arch = self.arch.with_thickness(thickness).map_err(Stop::Input)?;
+        let problem = ArchProblem::new(
+            arch.assembly(),
+            self.unit_weight,
+            self.limits,
+            self.friction,
+            Vec::new(),
+        )
+        .map_err(Stop::Input)?;
+        self.evaluations += 1;
+        let (margin, mechanism, iterations) =
+            full_dead_load_margin(&problem, self.settings).map_err(Stop::Solver)?;
+        self.iterations += iterations;
+        Ok(Evaluation {
+            thickness,
+            margin,
+            mechanism,
+        })
+    }
+}
+
+/// Searches the minimum thickness of `arch` (its own thickness is only the shape template).
+pub fn solve_minimum_thickness(
+    arch: &CircularArch,
+    unit_weight: f64,
+    limits: InterfaceLimits,
+    friction: Option<f64>,
+    settings: &MinimumThicknessSettings,
+) -> Result<MinimumThickness, ArchError> {
+    let start = Instant::now();
+    let mut delta = MarginOfThickness {
+        arch,
+        unit_weight,
+        limits,
+        friction,
+        settings: &settings.limit,
+        evaluations: 0,
+        iterations: 0,
+    };
+    let outcome = match search(&mut delta, arch.radius(), settings) {
+        Ok(outcome) => outcome,
+        Err(Stop::Solver(failure)) => MinimumThicknessOutcome::SolverFailed(failure),
+        Err(Stop::Input(error)) => return Err(error),
+    };
+    Ok(MinimumThickness {
+        outcome,
+        evaluations: delta.evaluations,
+        iterations: delta.iterations,
+        solve_time_secs: start.elapsed().as_secs_f64(),
+    })
+}
+
+fn search(
+    delta: &mut MarginOfThickness,
+    radius: f64,
+    settings: &MinimumThicknessSettings,
+) -> Result<MinimumThicknessOutcome, Stop> {
+    let tol = settings.limit.margin_tolerance;
+    let stands = |e: &Evaluation| e.margin <= tol;
+    let thinnest = 1e-6 * radius;
+    let thickest = 2.0 * radius * (1.0 - 1e-9);
+    // Bracket: `below` falls (δ > tol), `above` stands (δ ≤ tol).
+    let first = delta.at(0.1 * radius)?;
+    let (mut below, mut above) = if stands(&first) {
+        let mut above = first;
+        loop {
+            if above.thickness <= thinnest {
+                return Ok(MinimumThicknessOutcome::StandsHoweverThin);
+            }
+            let e = delta.at((0.5 * above.thickness).max(thinnest))?;
+            if !stands(&e) {
+                break (e, above);
+            }
+            above = e;
+        }
+    } else {
+        let mut below = first;
+        loop {
+            if below.thickness >= thickest {
+                return Ok(MinimumThicknessOutcome::NeverStands);
+            }
+            let e = delta.at((1.6 * below.thickness).min(thickest))?;
+            if stands(&e) {
+                break (below, e);
+            }
+            below = e;
+        }
+    };
+    // Brent's method on δ(D) − tol, a continuous function, keeping the bracket ends.
+    let x_tolerance = settings.tolerance * radius;
+    let mut stop = None;
+    let (a, b, fa, fb) = (
+        below.thickness,
+        above.thickness,
+        below.margin - tol,
+        above.margin - tol,
+    );
+    let budget = settings.max_evaluations.saturating_sub(delta.evaluations);
+    let _ = brent(
+        |x| {
+            if stop.is_some() {
+                return f64::NAN;
+            }
+            match delta.at(x) {
+                Ok(e) => {
+                    let value = e.margin - tol;
+                    if value > 0.0 {
+                        if e.thickness > below.thickness {
+                            below = e;
+                        }
+                    } else if e.thickness < above.thickness {
+                        above = e;
+                    }
+                    value
+                }
+                Err(s) => {
+                    stop = Some(s);
+                    f64::NAN
+                }
+            }
+        },
+        a,
+        b,
+        fa,
+        fb,
+        // Brent stops on its own bracket; aim a little tighter so ours closes too.
+        0.5 * x_tolerance,
+        budget,
+    );
+    if let Some(s) = stop {
+        return Err(s);
+    }
+    // Close our bracket by bisection if Brent's last steps all fell on one side.
+    while above.thickness - below.thickness > x_tolerance
+        && delta.evaluations < settings.max_evaluations
+    {
+        let e = delta.at(0.5 * (below.thickness + above.thickness))?;
+        if stands(&e) {
+            above = e;
+        } else {
+            below = e;
+        }
+    }
+    Ok(MinimumThicknessOutcome::Found {
+        thickness: above.thickness,
+        thickness_below: below.thickness,
+        mechanism: below.mechanism,
+    })
+}
+
+/// The rupture angle of a mechanism: the angle from the crown (the middle of the arch) of its
+/// intrados hinge on the right half, in degrees.
+pub fn rupture_angle_deg(arch: &CircularArch, mechanism: &Mechanism) -> Option<f64> {
+    let crown = 0.5 * (arch.interface_angle_deg(0) + arch.interface_angle_deg(arch.voussoirs()));
+    mechanism
+        .hinges
+        .iter()
+        .filter(|h| h.side == HingeSide::Intrados && h.angle_deg <= crown)
+        .map(|h| crown - h.angle_deg)
+        .fold(None, |best: Option<f64>, a| {
+            Some(best.map_or(a, |b| b.min(a)))
+        })
+}

@@ -1,0 +1,210 @@
+//! `POST /arch/minimum-thickness`: the thinnest circular arch that carries its own weight
+//! (SPEC §3; Milankovitch 1904). A dead-load request with circular geometry whose `thickness`
+//! is ignored, plus an optional `tolerance` relative to the radius.
+
+use axum::extract::State;
+use serde::{Deserialize, Serialize};
+use thrustline_solver::arch::{
+    rupture_angle_deg, solve_minimum_thickness, LimitSettings, MinimumThicknessOutcome,
+    MinimumThicknessSettings, SolverFailure,
+};
+use utoipa::ToSchema;
+
+use crate::arch::{
+    active_constraints, arch_error, circular_arch, friction_coefficient, hinges, interface_limits,
+    ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto,
+};
+use crate::error::{ApiError, ApiJson, Problem};
+use crate::validation::number;
+use crate::AppState;
+
+/// The minimum-thickness question for a circular arch.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+#[schema(example = json!({
+    "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 1800},
+    "unit_weight": 1.0,
+    "tolerance": 1e-6
+}))]
+pub struct MinimumThicknessRequest {
+    /// A circular arch (`kind: circular`); its `thickness` is ignored.
+    pub geometry: GeometryDto,
+    /// Unit weight γ (> 0). Defaults to 1.
+    #[serde(default = "unit")]
+    #[schema(exclusive_minimum = 0.0, default = 1.0)]
+    pub unit_weight: f64,
+    /// Limits on the interface resultants. Defaults to Heyman's.
+    #[serde(default)]
+    pub interface_limits: InterfaceLimitsDto,
+    /// Coulomb friction coefficient μ ≥ 0; null = no sliding.
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 1000000.0)]
+    pub friction_coefficient: Option<f64>,
+    /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults to
+    /// 1e-6.
+    #[serde(default = "default_tolerance")]
+    #[schema(minimum = 1e-9, maximum = 0.01, default = 1e-6)]
+    pub tolerance: f64,
+}
+
+fn unit() -> f64 {
+    1.0
+}
+
+fn default_tolerance() -> f64 {
+    1e-6
+}
+
+/// The minimum thickness, or why there is none.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MinimumThicknessResponse {
+    /// found; stands_however_thin (no finite minimum: even 1e-6·R stands, e.g. N ≤ 3);
+    /// never_stands (no thickness below 2R carries the weight, e.g. friction too low);
+    /// solver_failed.
+    #[schema(example = "found")]
+    pub outcome: &'static str,
+    /// The thinnest thickness found to carry the dead load (within `tolerance`·R of the limit,
+    /// on the safe side); null unless found.
+    #[schema(example = 1.0747802)]
+    pub thickness: Option<f64>,
+    /// thickness / radius.
+    #[schema(example = 0.10747802)]
+    pub thickness_to_radius: Option<f64>,
+    /// The thickest thickness found not to carry it (the other end of the final bracket).
+    pub thickness_below: Option<f64>,
+    /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees.
+    #[schema(example = 54.5)]
+    pub rupture_angle_deg: Option<f64>,
+    /// Hinges of the mechanism at the limit.
+    pub hinges: Vec<HingeDto>,
+    /// Active limits of the mechanism at the limit.
+    pub active_constraints: Vec<ActiveConstraintDto>,
+    /// Dead-load programmes solved.
+    pub evaluations: usize,
+    /// Interior-point iterations over all of them.
+    pub iterations: u32,
+    /// Wall time of the search in milliseconds.
+    pub solve_time_ms: f64,
+    /// The outcome in words.
+    pub detail: String,
+}
+
+/// Minimum thickness of a circular arch under its own weight.
+#[utoipa::path(
+    post,
+    path = "/arch/minimum-thickness",
+    tag = "arch",
+    request_body = MinimumThicknessRequest,
+    responses(
+        (status = 200, description = "The minimum thickness, or the reason there is none", body = MinimumThicknessResponse),
+        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "A field is missing, unknown or out of range, or the geometry is not circular", body = Problem, content_type = "application/problem+json"),
+        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+    )
+)]
+pub async fn minimum_thickness(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<MinimumThicknessRequest>,
+) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
+    let mut geometry = request.geometry.clone();
+    let GeometryDto::Circular {
+        radius, thickness, ..
+    } = &mut geometry
+    else {
+        return Err(ApiError::invalid(
+            "geometry.kind",
+            "must be circular: the minimum thickness is defined for the circular arch generator",
+        ));
+    };
+    // The thickness is ignored: any valid one serves as the template.
+    if radius.is_finite() && *radius > 0.0 {
+        *thickness = 0.1 * *radius;
+    }
+    let arch = circular_arch(&geometry)?
+        .ok_or_else(|| ApiError::invalid("geometry.kind", "must be circular"))?;
+    let unit_weight = number("unit_weight", request.unit_weight, 0.0, true, f64::MAX)?;
+    let limits = interface_limits(&request.interface_limits)?;
+    let friction = friction_coefficient(request.friction_coefficient)?;
+    let tolerance = number("tolerance", request.tolerance, 1e-9, false, 1e-2)?;
+    let settings = MinimumThicknessSettings {
+        tolerance,
+        limit: LimitSettings {
+            time_limit_secs: state.solve_time_limit_secs(),
+            ..LimitSettings::default()
+        },
+        ..MinimumThicknessSettings::default()
+    };
+    let (result, elapsed) = state
+        .pool
+        .run(move || solve_minimum_thickness(&arch, unit_weight, limits, friction, &settings))
+        .await?;
+    let result = result.map_err(arch_error)?;
+    tracing::info!(
+        evaluations = result.evaluations,
+        solve_ms = elapsed.as_secs_f64() * 1e3,
+        "minimum thickness solved"
+    );
+    let radius = arch.radius();
+    let mut response = MinimumThicknessResponse {
+        outcome: "found",
+        thickness: None,
+        thickness_to_radius: None,
+        thickness_below: None,
+        rupture_angle_deg: None,
+        hinges: Vec::new(),
+        active_constraints: Vec::new(),
+        evaluations: result.evaluations,
+        iterations: result.iterations,
+        solve_time_ms: result.solve_time_secs * 1e3,
+        detail: String::new(),
+    };
+    match &result.outcome {
+        MinimumThicknessOutcome::Found {
+            thickness,
+            thickness_below,
+            mechanism,
+        } => {
+            response.thickness = Some(*thickness);
+            response.thickness_to_radius = Some(thickness / radius);
+            response.thickness_below = Some(*thickness_below);
+            if let Some(m) = mechanism {
+                response.rupture_angle_deg = rupture_angle_deg(&arch, m);
+                response.hinges = hinges(m);
+                response.active_constraints = active_constraints(m);
+            }
+            response.detail = format!(
+                "the arch carries its own weight from thickness {thickness} on; at {thickness_below} it collapses"
+            );
+        }
+        MinimumThicknessOutcome::StandsHoweverThin => {
+            response.outcome = "stands_however_thin";
+            response.detail = format!(
+                "no finite minimum: even thickness {} (1e-6·R) carries the dead load \
+                 (with three or fewer voussoirs no mechanism can form under symmetric dead load)",
+                1e-6 * radius
+            );
+        }
+        MinimumThicknessOutcome::NeverStands => {
+            response.outcome = "never_stands";
+            response.detail = "no thickness below 2·radius carries the dead load (with friction: \
+                               the coefficient is too low for the joints at the springings)"
+                .to_owned();
+        }
+        MinimumThicknessOutcome::SolverFailed(failure) => {
+            response.outcome = "solver_failed";
+            response.detail = format!(
+                "a dead-load programme failed ({}); no thickness is reported",
+                match failure {
+                    SolverFailure::ReducedAccuracy => "reduced accuracy",
+                    SolverFailure::MaxIterations => "iteration limit",
+                    SolverFailure::MaxTime => "time limit",
+                    SolverFailure::Numerical => "numerical error",
+                    SolverFailure::Infeasible => "reported infeasible",
+                }
+            );
+        }
+    }
+    Ok(ApiJson(response))
+}
