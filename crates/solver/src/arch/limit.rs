@@ -39,6 +39,7 @@ use clarabel::solver::{
     SupportedConeT, ZeroConeT,
 };
 
+use super::chain::ChainStatics;
 use super::equilibrium::{assemble_equilibrium, Equilibrium, LiveLoad, RESULTANTS_PER_INTERFACE};
 use super::geometry::Assembly;
 use super::mechanism::{read_mechanism, Bound, Mechanism, Resultant};
@@ -199,6 +200,18 @@ pub struct LimitSettings {
     pub max_iterations: u32,
     /// Time limit of one programme in seconds. Defaults to 30.
     pub time_limit_secs: f64,
+    /// Which model the programmes are written on. Defaults to [`Formulation::Chain`].
+    pub formulation: Formulation,
+}
+
+/// The model of the limit-analysis programmes; both give the same answers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Formulation {
+    /// Three redundant forces of the chain (four variables; see [`super::chain`]).
+    #[default]
+    Chain,
+    /// Livesley's general assembly: three resultants per interface and the equilibrium rows.
+    Assembly,
 }
 
 impl Default for LimitSettings {
@@ -208,6 +221,7 @@ impl Default for LimitSettings {
             margin_tolerance: 1e-9,
             max_iterations: 200,
             time_limit_secs: 30.0,
+            formulation: Formulation::Chain,
         }
     }
 }
@@ -281,9 +295,21 @@ struct Row {
     tag: RowTag,
 }
 
+impl Row {
+    /// The interface of the row and its coefficients on that interface's (q, s, t).
+    fn local(&self) -> (usize, [f64; 3]) {
+        let k = self.tag.interface;
+        let mut a = [0.0; 3];
+        for &(j, v) in &self.entries[..self.len] {
+            a[j - RESULTANTS_PER_INTERFACE * k] += v;
+        }
+        (k, a)
+    }
+}
+
 /// The yield rows of every interface, in scaled units (forces divided by the total weight).
-fn limit_rows(problem: &ArchProblem, eq: &Equilibrium) -> Vec<Row> {
-    let w = eq.force_scale;
+fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
+    let w = force_scale;
     let mut rows = Vec::new();
     for k in 0..problem.assembly.interfaces.len() {
         let col = RESULTANTS_PER_INTERFACE * k;
@@ -400,11 +426,22 @@ fn solve_programme(
     tj.push(extra);
     tv.push(cap.0);
     b.push(cap.1);
-    let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
-    let p = CscMatrix::zeros((n, n));
     let mut c = vec![0.0; n];
     c[extra] = objective_extra;
-    let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(m_eq), NonnegativeConeT(rows.len() + 1)];
+    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, settings)
+}
+
+/// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq).
+fn run_clarabel(
+    (m, n, m_eq): (usize, usize, usize),
+    (ti, tj, tv): (Vec<usize>, Vec<usize>, Vec<f64>),
+    b: &[f64],
+    c: &[f64],
+    settings: &LimitSettings,
+) -> Programme {
+    let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
+    let p = CscMatrix::zeros((n, n));
+    let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(m_eq), NonnegativeConeT(m - m_eq)];
     let tol = settings.tolerance;
     let clarabel_settings = DefaultSettingsBuilder::default()
         .verbose(false)
@@ -416,7 +453,7 @@ fn solve_programme(
         .tol_ktratio(tol.sqrt() * 1e-2)
         .build()
         .expect("the settings are within Clarabel's ranges");
-    let mut solver = match DefaultSolver::new(&p, &c, &a, &b, &cones, clarabel_settings) {
+    let mut solver = match DefaultSolver::new(&p, c, &a, b, &cones, clarabel_settings) {
         Ok(solver) => solver,
         Err(_) => {
             return Programme {
@@ -435,6 +472,120 @@ fn solve_programme(
         z: solution.z,
         iterations: solution.iterations,
     }
+}
+
+/// A programme of the chain formulation over (x₀, x₁, x₂, extra): each limit row a·r_k ≤ b
+/// becomes (D_kᵀa)·x + extra_coefficient(a, k)·extra ≤ b − dead_factor·a·(D_k C_k), plus the
+/// cap cap.0·extra ≤ cap.1; minimise objective·extra.
+///
+/// Only a few rows are active at the optimum (the hinges), so the programme is solved by
+/// constraint generation: start from the rows of about 32 evenly spread interfaces, solve,
+/// add the violated rows that are local maxima of the violation along the chain, repeat until
+/// no row is violated by more than the solver tolerance. The multipliers of rows never added
+/// are zero, exactly as at the optimum of the full programme.
+fn solve_chain_programme(
+    chain: &ChainStatics,
+    rows: &[Row],
+    dead_factor: f64,
+    extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
+    (cap, objective): ((f64, f64), f64),
+    settings: &LimitSettings,
+) -> Programme {
+    const MAX_ROUNDS: usize = 40;
+    const MAX_ADDED_PER_ROUND: usize = 256;
+    let dense: Vec<([f64; 4], f64)> = rows
+        .iter()
+        .map(|row| {
+            let (k, a) = row.local();
+            let (d, dead, _) = chain.affine(k);
+            let coefficients = [
+                a[0] * d[0][0] + a[1] * d[1][0] + a[2] * d[2][0],
+                a[0] * d[0][1] + a[1] * d[1][1] + a[2] * d[2][1],
+                a[0] * d[0][2] + a[1] * d[1][2] + a[2] * d[2][2],
+                extra_coefficient(&a, k),
+            ];
+            (coefficients, row.b - dead_factor * dot(&a, &dead))
+        })
+        .collect();
+    let interfaces = chain.interfaces();
+    let per_interface = rows.len() / interfaces.max(1);
+    let stride = (interfaces / 32).max(1);
+    let mut selected: Vec<bool> = rows
+        .iter()
+        .map(|row| row.tag.interface % stride == 0 || row.tag.interface + 1 == interfaces)
+        .collect();
+    let mut c = vec![0.0; 4];
+    c[3] = objective;
+    let mut iterations = 0;
+    for _ in 0..MAX_ROUNDS {
+        let subset: Vec<usize> = (0..rows.len()).filter(|&i| selected[i]).collect();
+        let m = subset.len() + 1;
+        let (mut ti, mut tj, mut tv, mut b) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::with_capacity(m));
+        for (r, &i) in subset.iter().enumerate() {
+            let (coefficients, rhs) = &dense[i];
+            for (j, &v) in coefficients.iter().enumerate() {
+                if v != 0.0 {
+                    ti.push(r);
+                    tj.push(j);
+                    tv.push(v);
+                }
+            }
+            b.push(*rhs);
+        }
+        ti.push(m - 1);
+        tj.push(3);
+        tv.push(cap.0);
+        b.push(cap.1);
+        let mut programme = run_clarabel((m, 4, 0), (ti, tj, tv), &b, &c, settings);
+        iterations += programme.iterations;
+        programme.iterations = iterations;
+        if failure(programme.status).is_some() {
+            return programme;
+        }
+        let x = &programme.x;
+        let violation = |i: usize| {
+            let (a, rhs) = &dense[i];
+            a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] - rhs
+        };
+        let tolerance = settings.tolerance;
+        let mut added: Vec<(f64, usize)> = (0..rows.len())
+            .filter(|&i| !selected[i])
+            .filter_map(|i| {
+                let v = violation(i);
+                let is_peak = [i.checked_sub(per_interface), Some(i + per_interface)]
+                    .into_iter()
+                    .flatten()
+                    .filter(|&j| j < rows.len())
+                    .all(|j| violation(j) <= v);
+                (v > tolerance && is_peak).then_some((v, i))
+            })
+            .collect();
+        if added.is_empty() {
+            // Multipliers of the full programme: zero on the rows never added.
+            let mut z = vec![0.0; rows.len() + 1];
+            for (r, &i) in subset.iter().enumerate() {
+                z[i] = programme.z[r];
+            }
+            z[rows.len()] = programme.z[subset.len()];
+            programme.z = z;
+            return programme;
+        }
+        added.sort_by(|a, b| b.0.total_cmp(&a.0));
+        for &(_, i) in added.iter().take(MAX_ADDED_PER_ROUND) {
+            selected[i] = true;
+        }
+    }
+    Programme {
+        status: SolverStatus::MaxIterations,
+        x: Vec::new(),
+        z: Vec::new(),
+        iterations,
+    }
+}
+
+fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// Live loads are scaled to a unit largest component; λ above this counts as no collapse.
@@ -474,10 +625,19 @@ struct MarginEvaluation {
     programme: Programme,
 }
 
+/// The model the programmes are written on.
+enum Model {
+    /// Livesley's general assembly: all resultants and H r + λ₀w + λp = 0.
+    Assembly(Equilibrium),
+    /// The chain: three redundants, resultants affine in them.
+    Chain(ChainStatics),
+}
+
 struct Context<'a> {
     problem: &'a ArchProblem,
-    eq: Equilibrium,
+    model: Model,
     rows: Vec<Row>,
+    force_scale: f64,
     settings: &'a LimitSettings,
     iterations: u32,
     programmes: usize,
@@ -485,35 +645,66 @@ struct Context<'a> {
 
 impl<'a> Context<'a> {
     fn new(problem: &'a ArchProblem, settings: &'a LimitSettings) -> Self {
-        let eq = assemble_equilibrium(&problem.assembly, problem.unit_weight, &problem.live_loads);
-        let rows = limit_rows(problem, &eq);
+        let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
+        let force_scale = (gamma * a.total_area()).max(f64::MIN_POSITIVE);
+        let model = match settings.formulation {
+            Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, loads)),
+            Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, loads)),
+        };
+        let rows = limit_rows(problem, force_scale);
         Self {
             problem,
-            eq,
+            model,
             rows,
+            force_scale,
             settings,
             iterations: 0,
             programmes: 0,
         }
     }
 
-    fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
-        let b_eq: Vec<f64> = self.eq.dead.iter().map(|w| -lambda * w).collect();
-        let zeros = vec![0.0; self.eq.rows];
-        let spec = ProgrammeSpec {
-            extra_equilibrium: &zeros,
-            b_eq: &b_eq,
-            row_extra: Some(-1.0),
-            cap: (-1.0, 1.0),
-            objective: 1.0,
-        };
-        let programme = solve_programme(&self.eq, &self.rows, &spec, self.settings);
+    fn count(&mut self, programme: Programme) -> Result<Programme, SolverFailure> {
         self.iterations += programme.iterations;
         self.programmes += 1;
-        if let Some(f) = failure(programme.status) {
-            return Err(f);
+        match failure(programme.status) {
+            Some(f) => Err(f),
+            None => Ok(programme),
         }
-        let value = programme.x[self.eq.columns];
+    }
+
+    /// The index of the extra variable (δ or λ) in the programme's x.
+    fn extra(&self) -> usize {
+        match &self.model {
+            Model::Assembly(eq) => eq.columns,
+            Model::Chain(_) => 3,
+        }
+    }
+
+    fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
+        let programme = match &self.model {
+            Model::Assembly(eq) => {
+                let b_eq: Vec<f64> = eq.dead.iter().map(|w| -lambda * w).collect();
+                let zeros = vec![0.0; eq.rows];
+                let spec = ProgrammeSpec {
+                    extra_equilibrium: &zeros,
+                    b_eq: &b_eq,
+                    row_extra: Some(-1.0),
+                    cap: (-1.0, 1.0),
+                    objective: 1.0,
+                };
+                solve_programme(eq, &self.rows, &spec, self.settings)
+            }
+            Model::Chain(chain) => solve_chain_programme(
+                chain,
+                &self.rows,
+                lambda,
+                |_, _| -1.0,
+                ((-1.0, 1.0), 1.0),
+                self.settings,
+            ),
+        };
+        let programme = self.count(programme)?;
+        let value = programme.x[self.extra()];
         Ok(MarginEvaluation {
             lambda,
             value,
@@ -521,34 +712,112 @@ impl<'a> Context<'a> {
         })
     }
 
-    /// Slope dmargin/dλ = w·y at the multipliers of `evaluation`.
-    fn slope(&self, evaluation: &MarginEvaluation) -> f64 {
-        self.eq
-            .dead
-            .iter()
-            .zip(&evaluation.programme.z)
-            .map(|(w, y)| w * y)
-            .sum()
+    /// The live-load programme: λ̂ = λ·scale with the live loads scaled to a unit largest
+    /// component; returns the programme and the scale.
+    fn live(&mut self) -> Result<(Programme, f64), SolverFailure> {
+        let (programme, scale) = match &self.model {
+            Model::Assembly(eq) => {
+                let scale = eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let live: Vec<f64> = eq.live.iter().map(|p| p / scale).collect();
+                let b_eq: Vec<f64> = eq.dead.iter().map(|w| -w).collect();
+                let spec = ProgrammeSpec {
+                    extra_equilibrium: &live,
+                    b_eq: &b_eq,
+                    row_extra: None,
+                    cap: (1.0, LIVE_LOAD_CAP),
+                    objective: -1.0,
+                };
+                (solve_programme(eq, &self.rows, &spec, self.settings), scale)
+            }
+            Model::Chain(chain) => {
+                let scale = chain.live_scale;
+                let coefficient = |a: &[f64; 3], k: usize| dot(a, &chain.affine(k).2) / scale;
+                let programme = solve_chain_programme(
+                    chain,
+                    &self.rows,
+                    1.0,
+                    coefficient,
+                    ((1.0, LIVE_LOAD_CAP), -1.0),
+                    self.settings,
+                );
+                (programme, scale)
+            }
+        };
+        Ok((self.count(programme)?, scale))
     }
 
-    fn resultants(&self, x: &[f64]) -> Vec<[f64; 3]> {
-        let w = self.eq.force_scale;
-        x[..self.eq.columns]
-            .chunks_exact(RESULTANTS_PER_INTERFACE)
-            .map(|r| [r[0] * w, r[1] * w, r[2] * w])
-            .collect()
+    /// Whether any live load is non-zero.
+    fn has_live_load(&self) -> bool {
+        match &self.model {
+            Model::Assembly(eq) => eq.live.iter().any(|v| *v != 0.0),
+            Model::Chain(chain) => chain.live_scale > 0.0,
+        }
+    }
+
+    /// Slope dmargin/dλ at the multipliers of `evaluation`: minus the λ-derivative of the
+    /// right-hand side, dotted with the multipliers (LP sensitivity).
+    fn slope(&self, evaluation: &MarginEvaluation) -> f64 {
+        let z = &evaluation.programme.z;
+        match &self.model {
+            Model::Assembly(eq) => eq.dead.iter().zip(z).map(|(w, y)| w * y).sum(),
+            Model::Chain(chain) => self
+                .rows
+                .iter()
+                .zip(z)
+                .map(|(row, z)| {
+                    let (k, a) = row.local();
+                    z * dot(&a, &chain.affine(k).1)
+                })
+                .sum(),
+        }
+    }
+
+    /// Resultants in force units from a programme's x at the given factors.
+    fn resultants(&self, x: &[f64], dead_factor: f64, live_factor: f64) -> Vec<[f64; 3]> {
+        let w = self.force_scale;
+        match &self.model {
+            Model::Assembly(eq) => x[..eq.columns]
+                .chunks_exact(RESULTANTS_PER_INTERFACE)
+                .map(|r| [r[0] * w, r[1] * w, r[2] * w])
+                .collect(),
+            Model::Chain(chain) => chain
+                .resultants([x[0], x[1], x[2]], dead_factor, live_factor)
+                .into_iter()
+                .map(|r| [r[0] * w, r[1] * w, r[2] * w])
+                .collect(),
+        }
     }
 
     fn mechanism(&self, programme: &Programme) -> Option<Mechanism> {
-        let m_eq = self.eq.rows;
         let tags: Vec<RowTag> = self.rows.iter().map(|r| r.tag).collect();
-        read_mechanism(
-            &self.problem.assembly,
-            self.eq.length_scale,
-            &programme.z[..m_eq],
-            &programme.z[m_eq..m_eq + self.rows.len()],
-            &tags,
-        )
+        let assembly = &self.problem.assembly;
+        match &self.model {
+            Model::Assembly(eq) => read_mechanism(
+                assembly,
+                eq.length_scale,
+                &programme.z[..eq.rows],
+                &programme.z[eq.rows..eq.rows + self.rows.len()],
+                &tags,
+            ),
+            Model::Chain(chain) => {
+                // Deformation rates d_k = −Σ a·z over the rows of interface k (H ᵀy = −A ᵀz).
+                let mut deformation = vec![[0.0; 3]; chain.interfaces()];
+                for (row, z) in self.rows.iter().zip(&programme.z) {
+                    let (k, a) = row.local();
+                    for i in 0..3 {
+                        deformation[k][i] -= a[i] * z;
+                    }
+                }
+                let y = chain.block_velocities(&deformation);
+                read_mechanism(
+                    assembly,
+                    assembly.length_scale(),
+                    &y,
+                    &programme.z[..self.rows.len()],
+                    &tags,
+                )
+            }
+        }
     }
 
     fn finish(&self, found: Found, start: Instant) -> LimitSolution {
@@ -615,7 +884,7 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
     };
     let tol = settings.margin_tolerance;
     if full.value <= tol {
-        let resultants = cx.resultants(&full.programme.x);
+        let resultants = cx.resultants(&full.programme.x, 1.0, 0.0);
         return cx.finish(
             Found {
                 status: LimitStatus::Solved,
@@ -674,7 +943,7 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
         }
     }
     let resultants = carried
-        .map(|e| cx.resultants(&e.programme.x))
+        .map(|e| cx.resultants(&e.programme.x, e.lambda, 0.0))
         .unwrap_or_default();
     let mechanism = cx.mechanism(&hi.programme);
     cx.finish(
@@ -697,9 +966,7 @@ pub fn solve_live_load(
 ) -> Result<LimitSolution, ArchError> {
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
-    let scale = cx.eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let has_load = scale > 0.0;
-    if !has_load {
+    if !cx.has_live_load() {
         return Err(ArchError::range(
             "loads",
             0.0,
@@ -724,22 +991,11 @@ pub fn solve_live_load(
             start,
         ));
     }
-    let live: Vec<f64> = cx.eq.live.iter().map(|p| p / scale).collect();
-    let b_eq: Vec<f64> = cx.eq.dead.iter().map(|w| -w).collect();
-    let spec = ProgrammeSpec {
-        extra_equilibrium: &live,
-        b_eq: &b_eq,
-        row_extra: None,
-        cap: (1.0, LIVE_LOAD_CAP),
-        objective: -1.0,
+    let (programme, scale) = match cx.live() {
+        Ok(p) => p,
+        Err(f) => return Ok(cx.failed(f, start)),
     };
-    let programme = solve_programme(&cx.eq, &cx.rows, &spec, settings);
-    cx.iterations += programme.iterations;
-    cx.programmes += 1;
-    if let Some(f) = failure(programme.status) {
-        return Ok(cx.failed(f, start));
-    }
-    let lambda_scaled = programme.x[cx.eq.columns];
+    let lambda_scaled = programme.x[cx.extra()];
     if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
         return Ok(cx.finish(
             Found {
@@ -753,7 +1009,7 @@ pub fn solve_live_load(
             start,
         ));
     }
-    let resultants = cx.resultants(&programme.x);
+    let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
     let mechanism = cx.mechanism(&programme);
     Ok(cx.finish(
         Found {

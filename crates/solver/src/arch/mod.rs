@@ -18,6 +18,7 @@
 //! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
+pub mod chain;
 pub mod equilibrium;
 pub mod geometry;
 pub mod limit;
@@ -28,8 +29,8 @@ pub mod thrust_line;
 pub use equilibrium::LiveLoad;
 pub use geometry::{Assembly, Block, CircularArch, Interface, VoussoirShape};
 pub use limit::{
-    solve_dead_load, solve_live_load, ArchProblem, InterfaceLimits, LimitSettings, LimitSolution,
-    LimitStatus, SolverFailure,
+    solve_dead_load, solve_live_load, ArchProblem, Formulation, InterfaceLimits, LimitSettings,
+    LimitSolution, LimitStatus, SolverFailure,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{
