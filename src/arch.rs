@@ -12,8 +12,8 @@ use axum::extract::State;
 use serde::{Deserialize, Deserializer, Serialize};
 use thrustline_solver::arch::{
     solve_dead_load, solve_live_load, thrust_line, ArchError, ArchProblem, Assembly, Bound,
-    CircularArch, HingeSide, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, LiveLoad,
-    Mechanism, Resultant, SolverFailure, VoussoirShape,
+    CircularArch, Formulation, HingeSide, InterfaceLimits, LimitSettings, LimitSolution,
+    LimitStatus, LiveLoad, Mechanism, Resultant, SolverFailure, VoussoirShape,
 };
 use utoipa::ToSchema;
 
@@ -35,6 +35,33 @@ pub enum VoussoirDto {
     Curved,
     /// Straight intrados and extrados between the corners (polygon centroid).
     Quadrilateral,
+}
+
+/// The model of the limit-analysis programmes.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum FormulationDto {
+    /// Three redundant forces of the chain, with constraint generation.
+    #[default]
+    Chain,
+    /// Livesley's general assembly: three resultants per interface and equilibrium rows.
+    Assembly,
+}
+
+impl FormulationDto {
+    fn solver(self) -> Formulation {
+        match self {
+            Self::Chain => Formulation::Chain,
+            Self::Assembly => Formulation::Assembly,
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Chain => "chain",
+            Self::Assembly => "assembly",
+        }
+    }
 }
 
 /// One block of an explicit chain.
@@ -171,6 +198,11 @@ pub struct DeadLoadRequest {
     #[serde(default)]
     #[schema(minimum = 0.0, maximum = 1000000.0)]
     pub friction_coefficient: Option<f64>,
+    /// Which model the programmes are written on: `chain` (three redundant forces, the default
+    /// and fastest) or `assembly` (Livesley's general formulation, three unknowns per
+    /// interface). Both give the same answer; the choice is for cross-checking.
+    #[serde(default)]
+    pub formulation: FormulationDto,
 }
 
 /// Livesley's live-load problem: the factor on the live loads at collapse.
@@ -195,6 +227,11 @@ pub struct LiveLoadRequest {
     #[serde(default)]
     #[schema(minimum = 0.0, maximum = 1000000.0)]
     pub friction_coefficient: Option<f64>,
+    /// Which model the programmes are written on: `chain` (three redundant forces, the default
+    /// and fastest) or `assembly` (Livesley's general formulation, three unknowns per
+    /// interface). Both give the same answer; the choice is for cross-checking.
+    #[serde(default)]
+    pub formulation: FormulationDto,
     /// The live loads (1 to 10000), multiplied together by the load factor.
     #[schema(min_items = 1, max_items = 10000)]
     pub loads: Vec<LoadDto>,
@@ -289,6 +326,9 @@ pub struct SolverDto {
     pub programmes: usize,
     /// Wall time of the solve in milliseconds.
     pub time_ms: f64,
+    /// The formulation used: chain or assembly.
+    #[schema(example = "chain")]
+    pub formulation: &'static str,
 }
 
 /// Everything common to the dead- and live-load answers.
@@ -370,6 +410,7 @@ pub async fn dead_load(
     )?;
     let settings = LimitSettings {
         time_limit_secs: state.solve_time_limit_secs(),
+        formulation: request.formulation.solver(),
         ..LimitSettings::default()
     };
     let ((problem, solution), elapsed) = state
@@ -388,7 +429,7 @@ pub async fn dead_load(
     );
     Ok(ApiJson(DeadLoadResponse {
         dead_load_factor: solution.load_factor,
-        outcome: outcome(&problem, &solution),
+        outcome: outcome(&problem, &solution, request.formulation.name()),
     }))
 }
 
@@ -421,6 +462,7 @@ pub async fn live_load(
     )?;
     let settings = LimitSettings {
         time_limit_secs: state.solve_time_limit_secs(),
+        formulation: request.formulation.solver(),
         ..LimitSettings::default()
     };
     let ((problem, solution), elapsed) = state
@@ -440,7 +482,7 @@ pub async fn live_load(
     );
     Ok(ApiJson(LiveLoadResponse {
         load_factor: solution.load_factor,
-        outcome: outcome(&problem, &solution),
+        outcome: outcome(&problem, &solution, request.formulation.name()),
     }))
 }
 
@@ -638,7 +680,11 @@ pub fn status_name(status: LimitStatus) -> &'static str {
 }
 
 /// Translates a solution into the response fields common to both problems.
-pub fn outcome(problem: &ArchProblem, solution: &LimitSolution) -> ArchOutcomeDto {
+pub fn outcome(
+    problem: &ArchProblem,
+    solution: &LimitSolution,
+    formulation: &'static str,
+) -> ArchOutcomeDto {
     let mechanism = solution.mechanism.as_ref();
     let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
     ArchOutcomeDto {
@@ -680,6 +726,7 @@ pub fn outcome(problem: &ArchProblem, solution: &LimitSolution) -> ArchOutcomeDt
             iterations: solution.iterations,
             programmes: solution.programmes,
             time_ms: solution.solve_time_secs * 1e3,
+            formulation,
         },
     }
 }

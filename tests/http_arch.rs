@@ -247,3 +247,25 @@ async fn minimum_thickness_edges_and_bad_inputs() {
     assert_eq!(status, 200, "{body}");
     assert_eq!(body["outcome"], "found");
 }
+
+#[tokio::test]
+async fn both_formulations_answer_alike_over_http() {
+    let server = Server::start().await;
+    let mut assembly = quarter_span_load();
+    assembly["formulation"] = json!("assembly");
+    let (_, _, chain) = server.post("/arch/live-load", &quarter_span_load()).await;
+    let (status, _, general) = server.post("/arch/live-load", &assembly).await;
+    assert_eq!(status, 200, "{general}");
+    assert_eq!(chain["solver"]["formulation"], "chain");
+    assert_eq!(general["solver"]["formulation"], "assembly");
+    let (a, b) = (
+        chain["load_factor"].as_f64().unwrap(),
+        general["load_factor"].as_f64().unwrap(),
+    );
+    // 1e-7 relative: two interior-point solutions at tolerance 1e-10.
+    assert!((a - b).abs() < 1e-7 * b, "{a} vs {b}");
+    assert_eq!(
+        chain["hinges"].as_array().unwrap().len(),
+        general["hinges"].as_array().unwrap().len()
+    );
+}
