@@ -9,8 +9,9 @@ use std::num::NonZeroUsize;
 use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::slope::{
-    solve_spencer, Embankment, ExternalLoad, Seismic, SlipCircle, SlopeError, SlopeProblem, Soil,
-    SpencerSettings, SpencerSolution, SpencerStatus,
+    factor_curves, search_critical_circle, solve_spencer, Embankment, ExternalLoad, SearchGrid,
+    SearchProblem, SearchSettings, SearchSolution, Seismic, SlipCircle, SlopeError, SlopeProblem,
+    Soil, SpencerSettings, SpencerSolution, SpencerStatus,
 };
 use utoipa::ToSchema;
 
@@ -114,8 +115,15 @@ pub struct ExternalLoadDto {
 pub struct SpencerRequest {
     /// The embankment.
     pub slope: SlopeDto,
-    /// The slip circle.
-    pub circle: CircleDto,
+    /// The slip circle to analyse (give this or `search`).
+    #[serde(default)]
+    pub circle: Option<CircleDto>,
+    /// Search for the critical circle instead (`{}` for automatic bounds).
+    #[serde(default)]
+    pub search: Option<SearchDto>,
+    /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
+    #[serde(default)]
+    pub curves: bool,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
     #[serde(default = "default_slices")]
     #[schema(minimum = 1, maximum = 10000, default = 100, example = 100)]
@@ -133,6 +141,79 @@ pub struct SpencerRequest {
 
 fn default_slices() -> usize {
     100
+}
+
+/// Largest number of grid points along one axis of a search.
+pub const MAX_GRID: usize = 101;
+/// Largest nx·ny·slices of a search (its cost).
+pub const MAX_GRID_SLICES: usize = 10_000_000;
+
+/// A search for the critical circle: a grid over centres, refined by Nelder–Mead; bounds left
+/// out are chosen automatically around the perpendicular bisector of the slope.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SearchDto {
+    /// Smallest centre X (from the lower end). Automatic when missing.
+    pub x_min: Option<f64>,
+    /// Largest centre X. Automatic when missing.
+    pub x_max: Option<f64>,
+    /// Smallest centre Y (above the lower end). Automatic when missing.
+    pub y_min: Option<f64>,
+    /// Largest centre Y. Automatic when missing.
+    pub y_max: Option<f64>,
+    /// Grid points along X, 2 ≤ nx ≤ 101. Defaults to 21.
+    #[serde(default = "default_grid")]
+    #[schema(minimum = 2, maximum = 101, default = 21)]
+    pub nx: usize,
+    /// Grid points along Y, 2 ≤ ny ≤ 101. Defaults to 21.
+    #[serde(default = "default_grid")]
+    #[schema(minimum = 2, maximum = 101, default = 21)]
+    pub ny: usize,
+    /// Lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100. Defaults to 0 (toe).
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 100.0)]
+    pub lower_end_factor: f64,
+    /// When given, F_e is searched too, within [0, this], in the refinement.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 100.0)]
+    pub lower_end_factor_max: Option<f64>,
+}
+
+fn default_grid() -> usize {
+    21
+}
+
+/// F over the grid of centres, for contour plots.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GridDto {
+    /// Centre X of the grid columns (from the lower end).
+    pub xs: Vec<f64>,
+    /// Centre Y of the grid rows.
+    pub ys: Vec<f64>,
+    /// `factor_of_safety[j][i]` at (xs[i], ys[j]); null where the centre gives no valid circle.
+    pub factor_of_safety: Vec<Vec<Option<f64>>>,
+}
+
+/// How the search went.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SearchOutDto {
+    /// Circles evaluated (grid and refinement).
+    pub evaluations: usize,
+    /// Times the grid moved because the minimum lay on its edge.
+    pub regrids: usize,
+    /// Whether the minimum still lies on the edge of the region searched.
+    pub on_edge: bool,
+}
+
+/// Spencer's figure: F from each equation alone against θ; they cross at the answer.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct CurvesDto {
+    /// Inclinations θ in degrees.
+    pub theta_deg: Vec<f64>,
+    /// F_f(θ), from force equilibrium; null where it has no root.
+    pub force_factor: Vec<Option<f64>>,
+    /// F_m(θ), from moment equilibrium; null where it has no root.
+    pub moment_factor: Vec<Option<f64>>,
 }
 
 /// A point in the plane of the section.
@@ -256,6 +337,15 @@ pub struct SpencerResponse {
     pub warnings: Vec<String>,
     /// Wall time of the solve in milliseconds.
     pub solve_time_ms: f64,
+    /// With `search`: how the search went.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub search: Option<SearchOutDto>,
+    /// With `search`: F over the last grid of centres.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<GridDto>,
+    /// With `curves: true`: F_f(θ) and F_m(θ).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curves: Option<CurvesDto>,
 }
 
 /// Spencer's method for one slip circle.
@@ -277,36 +367,142 @@ pub async fn spencer(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
-    let problem = problem_from(&request)?;
-    let (solution, elapsed) = state
+    let parts = parts_from(&request)?;
+    let curves = request.curves;
+    let target = match (&request.circle, &request.search) {
+        (Some(circle), None) => Target::Circle(circle_from(circle)?),
+        (None, Some(search)) => {
+            if !request.external_loads.is_empty() {
+                return Err(ApiError::invalid(
+                    "external_loads",
+                    "cannot be combined with search: loads are given per slice, and the slices \
+                     change from circle to circle",
+                ));
+            }
+            Target::Search(search_from(search, &parts)?)
+        }
+        (Some(_), Some(_)) => {
+            return Err(ApiError::invalid(
+                "search",
+                "give either circle or search, not both",
+            ))
+        }
+        (None, None) => return Err(ApiError::invalid(
+            "circle",
+            "give a circle to analyse, or search ({} for automatic bounds) for the critical one",
+        )),
+    };
+    let (solved, elapsed) = state
         .pool
-        .run(move || {
-            let solution = solve_spencer(&problem, &SpencerSettings::default());
-            (problem, solution)
-        })
+        .run(move || solve_target(parts, target, curves))
         .await?;
-    let (problem, solution) = solution;
+    let (problem, solution, search, curves) = solved?;
     tracing::info!(
         slices = problem.geometry.slices.len(),
         iterations = solution.iterations,
+        evaluations = search.as_ref().map(|s| s.evaluations),
         solve_ms = elapsed.as_secs_f64() * 1e3,
         factor_of_safety = solution.factor_of_safety,
         "spencer solved"
     );
-    Ok(ApiJson(response_from(
-        &problem,
-        &solution,
-        elapsed.as_secs_f64() * 1e3,
-    )))
+    let mut response = response_from(&problem, &solution, elapsed.as_secs_f64() * 1e3);
+    response.curves = curves;
+    if let Some(search) = search {
+        if search.is_on_edge {
+            response.warnings.push(
+                "the critical centre lies on the edge of the search region even after moving the \
+                 grid: the true minimum may lie outside it"
+                    .to_owned(),
+            );
+        }
+        response.search = Some(SearchOutDto {
+            evaluations: search.evaluations,
+            regrids: search.regrids,
+            on_edge: search.is_on_edge,
+        });
+        response.grid = Some(GridDto {
+            xs: search.grid.xs,
+            ys: search.grid.ys,
+            factor_of_safety: search.grid.factors,
+        });
+    }
+    Ok(ApiJson(response))
 }
 
-/// Validates the request and builds the solver's problem.
-fn problem_from(request: &SpencerRequest) -> Result<SlopeProblem, ApiError> {
-    let height = number("slope.height", request.slope.height, 0.0, true, f64::MAX)?;
-    let length = number("slope.length", request.slope.length, 0.0, true, f64::MAX)?;
-    let slices = count("slices", request.slices, 1, MAX_SLICES)?;
-    let circle = &request.circle;
-    let circle = SlipCircle {
+/// The validated parts of a request that do not depend on the circle.
+struct Parts {
+    embankment: Embankment,
+    slices: NonZeroUsize,
+    soil: Soil,
+    seismic: Seismic,
+    external_loads: Vec<ExternalLoad>,
+}
+
+/// One circle, or a search.
+enum Target {
+    Circle(SlipCircle),
+    Search((SearchGrid, SearchProblem)),
+}
+
+type Solved = (
+    SlopeProblem,
+    SpencerSolution,
+    Option<SearchSolution>,
+    Option<CurvesDto>,
+);
+
+/// Runs on the blocking pool: the search if asked, then the full solution of the circle.
+fn solve_target(parts: Parts, target: Target, curves: bool) -> Result<Solved, ApiError> {
+    let settings = SpencerSettings::default();
+    let (circle, search) = match target {
+        Target::Circle(circle) => (circle, None),
+        Target::Search((grid, problem)) => {
+            let found = search_critical_circle(&problem, grid, &SearchSettings::default());
+            let circle = found.circle.ok_or_else(|| {
+                ApiError::invalid(
+                    "search",
+                    "no centre in the region searched gives a circle with a solution: widen or \
+                     move the bounds (or leave them out for automatic ones)",
+                )
+            })?;
+            (circle, Some(found))
+        }
+    };
+    let problem = SlopeProblem::new(
+        parts.embankment,
+        circle,
+        parts.slices,
+        parts.soil,
+        parts.seismic,
+        parts.external_loads,
+    )
+    .map_err(slope_error)?;
+    let solution = solve_spencer(&problem, &settings);
+    let curves = match (solution.theta_rad, curves) {
+        (Some(theta), true) => Some(curves_around(&problem, theta)),
+        _ => None,
+    };
+    Ok((problem, solution, search, curves))
+}
+
+/// F_f(θ) and F_m(θ) from θ* − 30° to θ* + 30° in steps of 1°.
+fn curves_around(problem: &SlopeProblem, theta: f64) -> CurvesDto {
+    let centre = theta.to_degrees().round();
+    let theta_deg: Vec<f64> = (-30..=30)
+        .map(|i| centre + f64::from(i))
+        .filter(|t| t.abs() < 89.0)
+        .collect();
+    let radians: Vec<f64> = theta_deg.iter().map(|t| t.to_radians()).collect();
+    let (force_factor, moment_factor) = factor_curves(problem, &radians).into_iter().unzip();
+    CurvesDto {
+        theta_deg,
+        force_factor,
+        moment_factor,
+    }
+}
+
+fn circle_from(circle: &CircleDto) -> Result<SlipCircle, ApiError> {
+    Ok(SlipCircle {
         x: finite("circle.x", circle.x)?,
         y: number("circle.y", circle.y, 0.0, true, f64::MAX)?,
         lower_end_factor: number(
@@ -316,7 +512,79 @@ fn problem_from(request: &SpencerRequest) -> Result<SlopeProblem, ApiError> {
             false,
             f64::MAX,
         )?,
+    })
+}
+
+fn search_from(search: &SearchDto, parts: &Parts) -> Result<(SearchGrid, SearchProblem), ApiError> {
+    let lower_end_factor = number(
+        "search.lower_end_factor",
+        search.lower_end_factor,
+        0.0,
+        false,
+        100.0,
+    )?;
+    let lower_end_factor_max = search
+        .lower_end_factor_max
+        .map(|m| number("search.lower_end_factor_max", m, 0.0, true, 100.0))
+        .transpose()?;
+    let automatic = SearchGrid::automatic(&parts.embankment, lower_end_factor);
+    let nx = count("search.nx", search.nx, 2, MAX_GRID)?;
+    let ny = count("search.ny", search.ny, 2, MAX_GRID)?;
+    let cost = nx * ny * parts.slices.get();
+    if cost > MAX_GRID_SLICES {
+        return Err(ApiError::invalid(
+            "search",
+            format!(
+                "nx·ny·slices = {cost} is out of range: allowed is at most {MAX_GRID_SLICES} \
+                 (fewer grid points or slices)"
+            ),
+        ));
+    }
+    let bound = |field: &str, value: Option<f64>, default: f64| {
+        value.map_or(Ok(default), |v| finite(field, v))
     };
+    let grid = SearchGrid {
+        x_min: bound("search.x_min", search.x_min, automatic.x_min)?,
+        x_max: bound("search.x_max", search.x_max, automatic.x_max)?,
+        y_min: bound("search.y_min", search.y_min, automatic.y_min)?,
+        y_max: bound("search.y_max", search.y_max, automatic.y_max)?,
+        nx,
+        ny,
+    };
+    if grid.x_max <= grid.x_min {
+        return Err(ApiError::invalid(
+            "search.x_max",
+            "must be greater than search.x_min",
+        ));
+    }
+    if grid.y_max <= grid.y_min {
+        return Err(ApiError::invalid(
+            "search.y_max",
+            "must be greater than search.y_min",
+        ));
+    }
+    if grid.y_max <= 0.0 {
+        return Err(ApiError::invalid(
+            "search.y_max",
+            "must be > 0: centres lie above the lower end",
+        ));
+    }
+    let problem = SearchProblem {
+        embankment: parts.embankment,
+        slices: parts.slices,
+        soil: parts.soil,
+        seismic: parts.seismic,
+        lower_end_factor,
+        lower_end_factor_max,
+    };
+    Ok((grid, problem))
+}
+
+/// Validates everything but the circle or search.
+fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
+    let height = number("slope.height", request.slope.height, 0.0, true, f64::MAX)?;
+    let length = number("slope.length", request.slope.length, 0.0, true, f64::MAX)?;
+    let slices = count("slices", request.slices, 1, MAX_SLICES)?;
     let soil = &request.soil;
     number("soil.unit_weight", soil.unit_weight, 0.0, true, f64::MAX)?;
     number("soil.cohesion", soil.cohesion, 0.0, false, f64::MAX)?;
@@ -372,8 +640,13 @@ fn problem_from(request: &SpencerRequest) -> Result<SlopeProblem, ApiError> {
     let embankment = Embankment::new(height, length).map_err(slope_error)?;
     let slices = NonZeroUsize::new(slices)
         .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
-    SlopeProblem::new(embankment, circle, slices, soil, seismic, external_loads)
-        .map_err(slope_error)
+    Ok(Parts {
+        embankment,
+        slices,
+        soil,
+        seismic,
+        external_loads,
+    })
 }
 
 /// The solver's refusals are the client's to fix: 422 naming the parameter.
@@ -513,5 +786,8 @@ fn response_from(
         residual: finite_or_none(solution.residual),
         warnings,
         solve_time_ms,
+        search: None,
+        grid: None,
+        curves: None,
     }
 }

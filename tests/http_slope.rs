@@ -167,3 +167,106 @@ async fn healthz_openapi_docs_and_unknown_routes() {
     assert_eq!(status, 404);
     assert_eq!(content_type, "application/problem+json");
 }
+
+#[tokio::test]
+async fn critical_circle_search_with_automatic_bounds() {
+    let server = Server::start().await;
+    let mut body = spencer_example();
+    body.as_object_mut().unwrap().remove("circle");
+    body["search"] = json!({});
+    body["slices"] = json!(50);
+    let (status, _, body) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{body}");
+    let critical = body["factor_of_safety"].as_f64().unwrap();
+    // The critical circle is no safer than Spencer's own circle (F = 1.0697 at 50 slices).
+    assert!(critical <= 1.0698, "{critical}");
+    assert!(body["circle"]["radius"].as_f64().unwrap() > 0.0);
+    let grid = &body["grid"];
+    assert_eq!(grid["xs"].as_array().unwrap().len(), 21);
+    assert_eq!(grid["ys"].as_array().unwrap().len(), 21);
+    let rows = grid["factor_of_safety"].as_array().unwrap();
+    assert_eq!(rows.len(), 21);
+    // Some centres give no valid circle (null), the rest are at least the critical F.
+    let values: Vec<&serde_json::Value> = rows.iter().flat_map(|r| r.as_array().unwrap()).collect();
+    assert!(values.iter().any(|v| v.is_null()));
+    assert!(values
+        .iter()
+        .filter_map(|v| v.as_f64())
+        .all(|f| f >= critical - 1e-12));
+    assert!(body["search"]["evaluations"].as_u64().unwrap() >= 441);
+}
+
+#[tokio::test]
+async fn explicit_search_bounds_and_curves() {
+    let server = Server::start().await;
+    let mut body = spencer_example();
+    body.as_object_mut().unwrap().remove("circle");
+    body["search"] =
+        json!({"x_min": -20.0, "x_max": 30.0, "y_min": 40.0, "y_max": 120.0, "nx": 11, "ny": 9});
+    body["curves"] = json!(true);
+    body["slices"] = json!(30);
+    let (status, _, body) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(body["grid"]["xs"].as_array().unwrap().len(), 11);
+    assert_eq!(body["grid"]["ys"].as_array().unwrap().len(), 9);
+    let curves = &body["curves"];
+    let thetas = curves["theta_deg"].as_array().unwrap();
+    assert_eq!(
+        thetas.len(),
+        curves["force_factor"].as_array().unwrap().len()
+    );
+    // The curves cross near θ*: F_f − F_m changes sign within the 1° steps around it.
+    let theta = body["theta_deg"].as_f64().unwrap();
+    let i = thetas
+        .iter()
+        .position(|t| t.as_f64().unwrap() >= theta)
+        .unwrap();
+    let d = |k: usize| {
+        curves["force_factor"][k].as_f64().unwrap() - curves["moment_factor"][k].as_f64().unwrap()
+    };
+    assert!(d(i - 1) * d(i) <= 0.0);
+}
+
+#[tokio::test]
+async fn circle_and_search_are_exclusive_and_search_is_validated() {
+    let server = Server::start().await;
+    let mut both = spencer_example();
+    both["search"] = json!({});
+    let (status, content_type, body) = server.post("/slope/spencer", &both).await;
+    assert_problem(status, &content_type, &body, 422, "search");
+
+    let mut neither = spencer_example();
+    neither.as_object_mut().unwrap().remove("circle");
+    let (status, content_type, body) = server.post("/slope/spencer", &neither).await;
+    assert_problem(status, &content_type, &body, 422, "circle");
+
+    for (search, field, slices) in [
+        (json!({"nx": 1}), "search.nx", 10),
+        (json!({"ny": 500}), "search.ny", 10),
+        (json!({"x_min": 10.0, "x_max": 5.0}), "search.x_max", 10),
+        (json!({"nx": 101, "ny": 101}), "search", 1000),
+        (
+            json!({"lower_end_factor": -1.0}),
+            "search.lower_end_factor",
+            10,
+        ),
+        // Centres so far behind the lower end that no circle cuts a slip mass.
+        (
+            json!({"x_min": -2e3, "x_max": -1e3, "y_min": 1.0, "y_max": 2.0, "nx": 3, "ny": 3}),
+            "search",
+            10,
+        ),
+    ] {
+        let mut body = neither.clone();
+        body["search"] = search;
+        body["slices"] = json!(slices);
+        let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &body, 422, field);
+    }
+
+    let mut loads = neither.clone();
+    loads["search"] = json!({});
+    loads["external_loads"] = json!([{"slice": 1, "fy": -1.0}]);
+    let (status, content_type, body) = server.post("/slope/spencer", &loads).await;
+    assert_problem(status, &content_type, &body, 422, "external_loads");
+}

@@ -8,14 +8,20 @@
 //!
 //! - [`geometry`]: the embankment, the slip circle and the vertical slices cut from it.
 //! - [`spencer`]: the two equilibrium equations and their solution for (F, θ).
+//! - [`search`]: the critical slip circle over a grid of centres, refined.
 
 pub mod geometry;
+pub mod search;
 pub mod spencer;
 
 pub use geometry::{Embankment, Slice, SlipCircle, SlopeGeometry};
+pub use search::{
+    factor_of_safety, search_critical_circle, FactorGrid, SearchGrid, SearchProblem,
+    SearchSettings, SearchSolution,
+};
 pub use spencer::{
-    solve_spencer, ExternalLoad, Seismic, SliceForces, SlopeProblem, Soil, SpencerSettings,
-    SpencerSolution, SpencerStatus, ThrustPoint,
+    factor_curves, solve_spencer, solve_spencer_factor, ExternalLoad, Seismic, SliceForces,
+    SlopeProblem, Soil, SpencerSettings, SpencerSolution, SpencerStatus, ThrustPoint,
 };
 
 /// Input the slope solver cannot accept; `parameter` names the offending input.

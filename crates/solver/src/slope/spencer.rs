@@ -39,6 +39,9 @@ use crate::roots::brent;
 /// (a common guard in slope programs; Duncan & Wright recommend 0.2).
 pub const SMALL_DENOMINATOR: f64 = 0.2;
 
+/// A scaled residual this small is rounding: the equations are solved.
+const ROUNDING_RESIDUAL: f64 = 1e3 * f64::EPSILON;
+
 /// Range of admissible factors of safety searched by the bracketing steps.
 const F_RANGE: (f64, f64) = (1e-6, 1e6);
 
@@ -461,6 +464,29 @@ impl Equations {
     /// negative to positive residual (more driving than resisting as F grows).
     fn f_at_theta(&self, theta: f64, moment: bool, evaluations: &mut usize) -> Option<f64> {
         let (lo, hi) = self.admissible_f(theta)?;
+        // Newton from F = 1 first (a handful of evaluations for ordinary slopes); the residual
+        // must cross from negative to positive, as on the bracketed path below.
+        let mut f = 1.0f64.clamp(lo, hi);
+        for _ in 0..30 {
+            let r = self.evaluate(f, theta);
+            *evaluations += 1;
+            let (value, slope) = if moment {
+                (r.moment, r.d_moment.0)
+            } else {
+                (r.force, r.d_force.0)
+            };
+            if !(value.is_finite() && slope > 0.0) || r.min_m_alpha <= 0.0 {
+                break;
+            }
+            let next = f - value / slope;
+            if !(next > lo && next < hi) {
+                break;
+            }
+            if (next - f).abs() <= 1e-14 * next {
+                return Some(next);
+            }
+            f = next;
+        }
         let residual = |f: f64| {
             let r = self.evaluate(f, theta);
             if moment {
@@ -492,20 +518,38 @@ impl Equations {
     }
 }
 
-/// Solves Spencer's two equations for the slip circle of `problem`.
-pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> SpencerSolution {
-    let equations = Equations::new(problem);
+/// Spencer's (F, θ in radians) alone, without the per-slice forces: what a search over circles
+/// needs. `None` when the equations have no solution.
+pub fn solve_spencer_factor(
+    problem: &SlopeProblem,
+    settings: &SpencerSettings,
+) -> Option<(f64, f64)> {
+    solve_equations(&Equations::new(problem), settings).0
+}
+
+/// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
+/// Returns (the solution, Bishop's F, iterations, whether the fallback was used).
+fn solve_equations(
+    equations: &Equations,
+    settings: &SpencerSettings,
+) -> (Option<(f64, f64)>, Option<f64>, usize, bool) {
     let mut evaluations = 0;
     let bishop = equations.f_at_theta(0.0, true, &mut evaluations);
     let start = (bishop.unwrap_or(1.0), 0.0);
     let mut iterations = 0;
     let mut used_fallback = false;
-    let mut solution = newton(&equations, start, settings, &mut iterations);
+    let mut solution = newton(equations, start, settings, &mut iterations);
     if solution.is_none() {
         used_fallback = true;
-        solution = fallback(&equations, &mut iterations)
-            .and_then(|guess| newton(&equations, guess, settings, &mut iterations));
+        solution = fallback(equations, settings, &mut iterations);
     }
+    (solution, bishop, iterations, used_fallback)
+}
+
+/// Solves Spencer's two equations for the slip circle of `problem`.
+pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> SpencerSolution {
+    let equations = Equations::new(problem);
+    let (solution, bishop, iterations, used_fallback) = solve_equations(&equations, settings);
     match solution {
         Some((f, theta)) => describe(
             problem,
@@ -530,6 +574,26 @@ pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> Spen
             residual: f64::NAN,
         },
     }
+}
+
+/// Spencer's figure: the factor of safety that satisfies the force equation alone, F_f(θ), and
+/// the moment equation alone, F_m(θ), for each θ (radians); `None` where an equation has no
+/// root with positive m_α. The curves cross at the answer.
+pub fn factor_curves(
+    problem: &SlopeProblem,
+    thetas_rad: &[f64],
+) -> Vec<(Option<f64>, Option<f64>)> {
+    let equations = Equations::new(problem);
+    let mut evaluations = 0;
+    thetas_rad
+        .iter()
+        .map(|&theta| {
+            (
+                equations.f_at_theta(theta, false, &mut evaluations),
+                equations.f_at_theta(theta, true, &mut evaluations),
+            )
+        })
+        .collect()
 }
 
 /// Damped Newton on (F, θ); `None` unless it converges with every m_α positive.
@@ -573,7 +637,11 @@ fn newton(
             df *= 0.5;
             dtheta *= 0.5;
         }
-        let (f_new, theta_new, r_new) = accepted?;
+        // No step lowers the residual: fine if it is already at rounding level (a start on the
+        // root, as the fallback gives), a failure otherwise.
+        let Some((f_new, theta_new, r_new)) = accepted else {
+            return (current <= ROUNDING_RESIDUAL).then_some((f, theta));
+        };
         let converged = (f_new - f).abs() <= settings.tolerance * f_new.max(1.0)
             && (theta_new - theta).abs() <= settings.tolerance;
         (f, theta, r) = (f_new, theta_new, r_new);
@@ -582,40 +650,67 @@ fn newton(
         }
     }
     // Newton stalled short of the tolerance: accept only if the residual is at rounding level.
-    (merit(&r) <= 1e3 * f64::EPSILON).then_some((f, theta))
+    (merit(&r) <= ROUNDING_RESIDUAL).then_some((f, theta))
 }
 
-/// Spencer's own construction: F_f(θ) and F_m(θ) on a grid of θ, and Brent's method on their
-/// difference where it changes sign. Returns a starting point for Newton.
-fn fallback(equations: &Equations, iterations: &mut usize) -> Option<(f64, f64)> {
-    const GRID: usize = 89;
+/// Spencer's own construction: F_f(θ) and F_m(θ) from the two equations separately, and
+/// Brent's method on their difference where it changes sign, searching outwards from θ = 0 in
+/// steps of 4° (roots nearest to horizontal inter-slice forces first). Each crossing is
+/// polished by Newton; a crossing that is a jump of the difference (a pole of one of the
+/// curves), not a root, fails to polish and the walk goes on.
+fn fallback(
+    equations: &Equations,
+    settings: &SpencerSettings,
+    iterations: &mut usize,
+) -> Option<(f64, f64)> {
+    const STEP_DEG: f64 = 4.0;
+    const LIMIT_DEG: f64 = 88.0;
     let mut evaluations = 0;
-    let mut difference = |theta: f64| -> f64 {
+    let difference = |theta: f64, evaluations: &mut usize| -> f64 {
         match (
-            equations.f_at_theta(theta, false, &mut evaluations),
-            equations.f_at_theta(theta, true, &mut evaluations),
+            equations.f_at_theta(theta, false, evaluations),
+            equations.f_at_theta(theta, true, evaluations),
         ) {
             (Some(ff), Some(fm)) => ff - fm,
             _ => f64::NAN,
         }
     };
-    let limit = 88.0f64.to_radians();
-    let thetas: Vec<f64> = (0..=GRID)
-        .map(|i| -limit + 2.0 * limit * i as f64 / GRID as f64)
-        .collect();
-    let values: Vec<f64> = thetas.iter().map(|&t| difference(t)).collect();
-    let mut found = None;
-    for i in 0..GRID {
-        let (a, b, fa, fb) = (thetas[i], thetas[i + 1], values[i], values[i + 1]);
-        if fa.is_finite() && fb.is_finite() && fa * fb <= 0.0 {
-            found = brent(&mut difference, a, b, fa, fb, 1e-13, 200).map(|r| r.x);
-            break;
+    let origin = difference(0.0, &mut evaluations);
+    // The last finite value on each side of 0.
+    let (mut up, mut down) = ((0.0f64, origin), (0.0f64, origin));
+    let steps = (LIMIT_DEG / STEP_DEG) as usize;
+    for i in 1..=steps {
+        for side in [1.0, -1.0] {
+            let theta = (side * STEP_DEG * i as f64).to_radians();
+            let value = difference(theta, &mut evaluations);
+            let last = if side > 0.0 { &mut up } else { &mut down };
+            if value.is_finite() && last.1.is_finite() && value * last.1 <= 0.0 {
+                let (a, fa) = *last;
+                let root = brent(
+                    |t| difference(t, &mut evaluations),
+                    a,
+                    theta,
+                    fa,
+                    value,
+                    1e-13,
+                    200,
+                );
+                let start = root
+                    .and_then(|r| Some((equations.f_at_theta(r.x, false, &mut evaluations)?, r.x)));
+                if let Some(solution) =
+                    start.and_then(|guess| newton(equations, guess, settings, iterations))
+                {
+                    *iterations += evaluations;
+                    return Some(solution);
+                }
+            }
+            if value.is_finite() {
+                *last = (theta, value);
+            }
         }
     }
     *iterations += evaluations;
-    let theta = found?;
-    let f = equations.f_at_theta(theta, false, iterations)?;
-    Some((f, theta))
+    None
 }
 
 /// Forces, line of thrust and flags at the converged (F, θ).

@@ -1,0 +1,431 @@
+//! The critical slip circle: the circle of least Spencer factor of safety (Spencer 1967, §5 of
+//! the thesis). A grid over centres — Spencer's own scheme, which also gives the contour map —
+//! followed by a derivative-free local refinement (Nelder & Mead 1965) from the best few grid
+//! points, since F over centres is non-smooth and full of shallow local minima (the thesis found
+//! fmincon trapped in them). When the best centre lies on the edge of the grid, the grid is
+//! moved there and the search repeated.
+//!
+//! Centres are measured from the lower end of the slip surface, as in [`super::geometry`].
+//! Grid points whose circle cuts no slip mass, or whose equations have no solution, have no F.
+
+use std::num::NonZeroUsize;
+
+use rayon::prelude::*;
+
+use super::geometry::{Embankment, SlipCircle};
+use super::spencer::{solve_spencer_factor, Seismic, SlopeProblem, Soil, SpencerSettings};
+
+/// The region of centres searched and the grid laid over it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SearchGrid {
+    /// Smallest centre X (from the lower end).
+    pub x_min: f64,
+    /// Largest centre X.
+    pub x_max: f64,
+    /// Smallest centre Y (above the lower end).
+    pub y_min: f64,
+    /// Largest centre Y.
+    pub y_max: f64,
+    /// Grid points along X (≥ 2).
+    pub nx: usize,
+    /// Grid points along Y (≥ 2).
+    pub ny: usize,
+}
+
+impl SearchGrid {
+    /// Bounds that hold the critical circle of ordinary embankments: around the perpendicular
+    /// bisector of the slope face, on its uphill side, from half the height to well above the
+    /// crest; 21 × 21 points. A minimum on the edge moves the grid anyway.
+    pub fn automatic(embankment: &Embankment, lower_end_factor: f64) -> Self {
+        let (h, l) = (embankment.height(), embankment.length());
+        let face = h.hypot(l);
+        let lower_end = lower_end_factor * h;
+        Self {
+            x_min: lower_end + 0.5 * l - face,
+            x_max: lower_end + 0.5 * l + 0.75 * face,
+            y_min: 0.5 * h,
+            y_max: h + 2.0 * face,
+            nx: 21,
+            ny: 21,
+        }
+    }
+
+    fn xs(&self) -> Vec<f64> {
+        spaced(self.x_min, self.x_max, self.nx)
+    }
+
+    fn ys(&self) -> Vec<f64> {
+        spaced(self.y_min, self.y_max, self.ny)
+    }
+
+    fn cell(&self) -> (f64, f64) {
+        (
+            (self.x_max - self.x_min) / (self.nx - 1) as f64,
+            (self.y_max - self.y_min) / (self.ny - 1) as f64,
+        )
+    }
+}
+
+fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// Everything about the embankment except the circle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SearchProblem {
+    /// The embankment.
+    pub embankment: Embankment,
+    /// Slices per circle.
+    pub slices: NonZeroUsize,
+    /// The soil.
+    pub soil: Soil,
+    /// Seismic coefficients.
+    pub seismic: Seismic,
+    /// Lower-end factor F_e of the circles (the start of the search when it is searched too).
+    pub lower_end_factor: f64,
+    /// When set, F_e is searched as well in the refinement, within [0, this].
+    pub lower_end_factor_max: Option<f64>,
+}
+
+/// Settings of the search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SearchSettings {
+    /// Settings of each Spencer solution.
+    pub spencer: SpencerSettings,
+    /// Grid points the local refinement starts from. Defaults to 3.
+    pub starts: usize,
+    /// Times the grid may move when the minimum lies on its edge. Defaults to 4.
+    pub max_regrids: usize,
+    /// Nelder–Mead evaluations per start. Defaults to 300.
+    pub max_refine_evaluations: usize,
+}
+
+impl Default for SearchSettings {
+    fn default() -> Self {
+        Self {
+            spencer: SpencerSettings::default(),
+            starts: 3,
+            max_regrids: 4,
+            max_refine_evaluations: 300,
+        }
+    }
+}
+
+/// F over the grid of centres, for contour plots.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FactorGrid {
+    /// Centre X of the columns.
+    pub xs: Vec<f64>,
+    /// Centre Y of the rows.
+    pub ys: Vec<f64>,
+    /// F at (xs[i], ys[j]) in `factors[j][i]`; `None` where the centre gives no valid circle.
+    pub factors: Vec<Vec<Option<f64>>>,
+}
+
+/// The critical circle found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchSolution {
+    /// The critical circle; `None` when no grid point gives a valid circle.
+    pub circle: Option<SlipCircle>,
+    /// Its factor of safety.
+    pub factor_of_safety: Option<f64>,
+    /// The last grid evaluated (the one around the critical circle).
+    pub grid: FactorGrid,
+    /// Spencer solutions computed (grid and refinement).
+    pub evaluations: usize,
+    /// Times the grid was moved because the minimum lay on its edge.
+    pub regrids: usize,
+    /// Whether the minimum still lies on the edge of the last grid (the true minimum may lie
+    /// outside the region searched).
+    pub is_on_edge: bool,
+}
+
+/// Spencer's F for one circle, or `None` when the circle is invalid or has no solution.
+pub fn factor_of_safety(
+    problem: &SearchProblem,
+    circle: SlipCircle,
+    settings: &SpencerSettings,
+) -> Option<f64> {
+    let slope = SlopeProblem::new(
+        problem.embankment,
+        circle,
+        problem.slices,
+        problem.soil,
+        problem.seismic,
+        Vec::new(),
+    )
+    .ok()?;
+    solve_spencer_factor(&slope, settings).map(|(f, _)| f)
+}
+
+fn evaluate_grid(
+    problem: &SearchProblem,
+    grid: &SearchGrid,
+    settings: &SpencerSettings,
+) -> FactorGrid {
+    let (xs, ys) = (grid.xs(), grid.ys());
+    let factors = ys
+        .par_iter()
+        .map(|&y| {
+            xs.iter()
+                .map(|&x| {
+                    let circle = SlipCircle {
+                        x,
+                        y,
+                        lower_end_factor: problem.lower_end_factor,
+                    };
+                    factor_of_safety(problem, circle, settings)
+                })
+                .collect()
+        })
+        .collect();
+    FactorGrid { xs, ys, factors }
+}
+
+/// Searches the critical circle over `grid` (moving it when the minimum is on its edge).
+pub fn search_critical_circle(
+    problem: &SearchProblem,
+    grid: SearchGrid,
+    settings: &SearchSettings,
+) -> SearchSolution {
+    let mut grid = grid;
+    let mut evaluations = 0;
+    let mut regrids = 0;
+    loop {
+        let factors = evaluate_grid(problem, &grid, &settings.spencer);
+        evaluations += grid.nx * grid.ny;
+        let mut points: Vec<(f64, usize, usize)> = factors
+            .factors
+            .iter()
+            .enumerate()
+            .flat_map(|(j, row)| {
+                row.iter()
+                    .enumerate()
+                    .filter_map(move |(i, f)| f.map(|f| (f, i, j)))
+            })
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let Some(&(_, bi, bj)) = points.first() else {
+            return SearchSolution {
+                circle: None,
+                factor_of_safety: None,
+                grid: factors,
+                evaluations,
+                regrids,
+                is_on_edge: false,
+            };
+        };
+        let (dx, dy) = grid.cell();
+        // Refine from the best few grid points that are not neighbours of each other.
+        let mut starts: Vec<(usize, usize)> = Vec::new();
+        for &(_, i, j) in &points {
+            if starts.len() >= settings.starts.max(1) {
+                break;
+            }
+            if starts
+                .iter()
+                .all(|&(a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
+            {
+                starts.push((i, j));
+            }
+        }
+        let refined: Vec<(f64, Vec<f64>, usize)> = starts
+            .par_iter()
+            .map(|&(i, j)| {
+                let scale = dx.abs().max(dy.abs());
+                let circle_at = |v: &[f64]| SlipCircle {
+                    x: v[0],
+                    y: v[1],
+                    lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
+                };
+                let objective = |v: &[f64]| {
+                    if let (Some(max), Some(&f_e)) = (problem.lower_end_factor_max, v.get(2)) {
+                        if !(0.0..=max).contains(&f_e) {
+                            return f64::INFINITY;
+                        }
+                    }
+                    factor_of_safety(problem, circle_at(v), &settings.spencer)
+                        .unwrap_or(f64::INFINITY)
+                };
+                // Centres first, at the grid's lower-end factor…
+                let start = [factors.xs[i], factors.ys[j]];
+                let (f, v, n) = nelder_mead(
+                    objective,
+                    &start,
+                    &[0.5 * dx, 0.5 * dy],
+                    1e-9 * scale,
+                    settings.max_refine_evaluations,
+                );
+                // …then, when it is searched too, the lower end with them, from there: never
+                // worse than the first refinement, whose point starts the simplex.
+                match problem.lower_end_factor_max {
+                    Some(max) if f.is_finite() => {
+                        let start = [v[0], v[1], problem.lower_end_factor.clamp(0.0, max)];
+                        let step = [0.25 * dx, 0.25 * dy, 0.1 * max];
+                        let (f3, v3, n3) = nelder_mead(
+                            objective,
+                            &start,
+                            &step,
+                            1e-9 * scale,
+                            settings.max_refine_evaluations,
+                        );
+                        (f3, v3, n + n3)
+                    }
+                    _ => (f, v, n),
+                }
+            })
+            .collect();
+        evaluations += refined.iter().map(|r| r.2).sum::<usize>();
+        let best = refined
+            .into_iter()
+            .filter(|r| r.0.is_finite())
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        let (f, v) = match best {
+            Some((f, v, _)) => (f, v),
+            None => {
+                let f = points[0].0;
+                (f, vec![factors.xs[bi], factors.ys[bj]])
+            }
+        };
+        let on_edge = bi == 0 || bj == 0 || bi + 1 == grid.nx || bj + 1 == grid.ny;
+        let outside =
+            v[0] < grid.x_min || v[0] > grid.x_max || v[1] < grid.y_min || v[1] > grid.y_max;
+        let circle = SlipCircle {
+            x: v[0],
+            y: v[1],
+            lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
+        };
+        if (on_edge || outside) && regrids < settings.max_regrids {
+            // Centre a grid of the same size on the best point found.
+            let (half_x, half_y) = (
+                0.5 * (grid.x_max - grid.x_min),
+                0.5 * (grid.y_max - grid.y_min),
+            );
+            let y_centre = v[1].max(half_y * 0.1 + f64::MIN_POSITIVE);
+            grid = SearchGrid {
+                x_min: v[0] - half_x,
+                x_max: v[0] + half_x,
+                y_min: (y_centre - half_y).max(1e-6 * half_y),
+                y_max: y_centre + half_y,
+                ..grid
+            };
+            regrids += 1;
+            continue;
+        }
+        return SearchSolution {
+            circle: Some(circle),
+            factor_of_safety: Some(f),
+            grid: factors,
+            evaluations,
+            regrids,
+            is_on_edge: on_edge || outside,
+        };
+    }
+}
+
+/// Nelder–Mead simplex minimisation (Nelder & Mead 1965; standard coefficients 1, 2, ½, ½).
+/// Returns (best value, best point, evaluations).
+fn nelder_mead(
+    f: impl Fn(&[f64]) -> f64,
+    start: &[f64],
+    step: &[f64],
+    x_tolerance: f64,
+    max_evaluations: usize,
+) -> (f64, Vec<f64>, usize) {
+    let n = start.len();
+    let mut simplex: Vec<Vec<f64>> = vec![start.to_vec()];
+    for i in 0..n {
+        let mut p = start.to_vec();
+        p[i] += step[i];
+        simplex.push(p);
+    }
+    let mut values: Vec<f64> = simplex.iter().map(|p| f(p)).collect();
+    let mut evaluations = n + 1;
+    while evaluations < max_evaluations {
+        let mut order: Vec<usize> = (0..=n).collect();
+        order.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
+        simplex = order.iter().map(|&i| simplex[i].clone()).collect();
+        values = order.iter().map(|&i| values[i]).collect();
+        let size = simplex[1..]
+            .iter()
+            .map(|p| {
+                p.iter()
+                    .zip(&simplex[0])
+                    .map(|(a, b)| (a - b).abs())
+                    .fold(0.0, f64::max)
+            })
+            .fold(0.0, f64::max);
+        if size <= x_tolerance {
+            break;
+        }
+        let centroid: Vec<f64> = (0..n)
+            .map(|d| simplex[..n].iter().map(|p| p[d]).sum::<f64>() / n as f64)
+            .collect();
+        let along = |t: f64| -> Vec<f64> {
+            (0..n)
+                .map(|d| centroid[d] + t * (simplex[n][d] - centroid[d]))
+                .collect()
+        };
+        let reflected = along(-1.0);
+        let fr = f(&reflected);
+        evaluations += 1;
+        if fr < values[0] {
+            let expanded = along(-2.0);
+            let fe = f(&expanded);
+            evaluations += 1;
+            if fe < fr {
+                simplex[n] = expanded;
+                values[n] = fe;
+            } else {
+                simplex[n] = reflected;
+                values[n] = fr;
+            }
+        } else if fr < values[n - 1] {
+            simplex[n] = reflected;
+            values[n] = fr;
+        } else {
+            let (contracted, fc) = if fr < values[n] {
+                let c = along(-0.5);
+                let fc = f(&c);
+                (c, fc)
+            } else {
+                let c = along(0.5);
+                let fc = f(&c);
+                (c, fc)
+            };
+            evaluations += 1;
+            if fc < values[n].min(fr) {
+                simplex[n] = contracted;
+                values[n] = fc;
+            } else {
+                // Shrink towards the best point.
+                let best = simplex[0].clone();
+                for (point, value) in simplex.iter_mut().zip(values.iter_mut()).skip(1) {
+                    for (x, b) in point.iter_mut().zip(&best) {
+                        *x = b + 0.5 * (*x - b);
+                    }
+                    *value = f(point);
+                }
+                evaluations += n;
+            }
+        }
+    }
+    let best = (0..=n)
+        .min_by(|&a, &b| values[a].total_cmp(&values[b]))
+        .unwrap_or(0);
+    (values[best], simplex[best].clone(), evaluations)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nelder_mead_finds_the_minimum_of_a_quadratic() {
+        let f = |v: &[f64]| (v[0] - 1.0).powi(2) + 3.0 * (v[1] + 2.0).powi(2);
+        let (value, x, _) = nelder_mead(f, &[0.0, 0.0], &[0.5, 0.5], 1e-10, 1000);
+        assert!(value < 1e-15 && (x[0] - 1.0).abs() < 1e-7 && (x[1] + 2.0).abs() < 1e-7);
+    }
+}

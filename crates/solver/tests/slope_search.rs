@@ -1,0 +1,230 @@
+//! The critical slip circle and the loads of Spencer's method, against Spencer's example, closed
+//! forms (the infinite slope) and Taylor's (1937) stability numbers.
+// Fixtures: a failed construction should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+use std::num::NonZeroUsize;
+
+use thrustline_solver::slope::*;
+
+fn problem(height: f64, length: f64, soil: Soil, slices: usize) -> SearchProblem {
+    SearchProblem {
+        embankment: Embankment::new(height, length).unwrap(),
+        slices: NonZeroUsize::new(slices).unwrap(),
+        soil,
+        seismic: Seismic::default(),
+        lower_end_factor: 0.0,
+        lower_end_factor_max: None,
+    }
+}
+
+fn spencer_soil() -> Soil {
+    Soil::new(10.0, 0.02 * 10.0 * 30.48, 40.0, 0.5).unwrap()
+}
+
+fn circle(x: f64, y: f64) -> SlipCircle {
+    SlipCircle {
+        x,
+        y,
+        lower_end_factor: 0.0,
+    }
+}
+
+#[test]
+fn spencer_example_circle_lies_in_the_valley_of_the_contour_map() {
+    // SPEC §2.3: contours roughly elliptical, the critical centre near the perpendicular bisector
+    // of the slope on its uphill side; Spencer's circle (X = 31.6 ft, Y = 209.2 ft) near it.
+    let p = problem(30.48, 60.96, spencer_soil(), 50);
+    let grid = SearchGrid {
+        x_min: -30.0,
+        x_max: 40.0,
+        y_min: 30.0,
+        y_max: 130.0,
+        nx: 36,
+        ny: 51,
+    };
+    let s = search_critical_circle(&p, grid, &SearchSettings::default());
+    let f_min = s.factor_of_safety.unwrap();
+    let critical = s.circle.unwrap();
+    assert!(!s.is_on_edge);
+    let spencer =
+        factor_of_safety(&p, circle(9.63168, 63.76416), &SpencerSettings::default()).unwrap();
+    // Spencer's circle is within 6 % of the minimum: in the valley, not on its flanks.
+    assert!(
+        spencer >= f_min && spencer - f_min < 0.06 * f_min,
+        "{spencer} vs {f_min}"
+    );
+    // The critical centre lies within 15 % of the face length of the perpendicular bisector.
+    let (h, l) = (30.48f64, 60.96f64);
+    let face = h.hypot(l);
+    let d = (critical.x - l / 2.0, critical.y - h / 2.0);
+    let distance = (d.0 * l / face + d.1 * h / face).abs();
+    assert!(
+        distance < 0.15 * face,
+        "{critical:?} is {distance} from the bisector"
+    );
+    // Every grid value is at least the refined minimum (1e-12: rounding).
+    let grid_min = s
+        .grid
+        .factors
+        .iter()
+        .flatten()
+        .flatten()
+        .fold(f64::INFINITY, |m, f| m.min(*f));
+    assert!(f_min <= grid_min + 1e-12);
+}
+
+#[test]
+fn taylor_stability_numbers_for_toe_circles() {
+    // Taylor (1937), φ = 0: c/(γ·H·F) at the critical toe circle is 0.181 at β = 53°, 0.191 at
+    // 60° and 0.219 at 75°. His numbers have three digits from the friction-circle method:
+    // 1 % relative.
+    for (beta, taylor) in [(53.0f64, 0.181), (60.0, 0.191), (75.0, 0.219)] {
+        let (h, c, gamma) = (10.0, 20.0, 10.0);
+        let p = problem(
+            h,
+            h / beta.to_radians().tan(),
+            Soil::new(gamma, c, 0.0, 0.0).unwrap(),
+            100,
+        );
+        let grid = SearchGrid {
+            nx: 41,
+            ny: 41,
+            ..SearchGrid::automatic(&p.embankment, 0.0)
+        };
+        let f = search_critical_circle(&p, grid, &SearchSettings::default())
+            .factor_of_safety
+            .unwrap();
+        let number = c / (gamma * h * f);
+        assert!(
+            (number - taylor).abs() < 0.01 * taylor,
+            "β = {beta}°: {number} vs {taylor}"
+        );
+    }
+}
+
+#[test]
+fn cohesionless_shallow_circle_tends_to_the_infinite_slope() {
+    // c' = 0, dry: a shallow slide parallel to the face has F = tan φ'/tan β. A circle through
+    // the toe and the crest corner with its centre far out on the perpendicular bisector is such
+    // a slide; 1 % at a centre 100 face lengths away.
+    let (h, l) = (10.0f64, 20.0f64);
+    let soil = Soil::new(18.0, 0.0, 30.0, 0.0).unwrap();
+    let p = problem(h, l, soil, 200);
+    let infinite = 30f64.to_radians().tan() / (h / l);
+    let face = h.hypot(l);
+    let far = 100.0 * face;
+    let centre = (l / 2.0 - far * h / face, h / 2.0 + far * l / face);
+    let f = factor_of_safety(&p, circle(centre.0, centre.1), &SpencerSettings::default()).unwrap();
+    assert!((f / infinite - 1.0).abs() < 0.01, "{f} vs {infinite}");
+    // No circle does better than the infinite slope (0.5 %: slices and chords).
+    let s = search_critical_circle(
+        &p,
+        SearchGrid::automatic(&p.embankment, 0.0),
+        &SearchSettings::default(),
+    );
+    assert!(
+        s.factor_of_safety.unwrap() >= 0.995 * infinite,
+        "{:?}",
+        s.factor_of_safety
+    );
+}
+
+fn spencer_example(seismic: Seismic, loads: Vec<ExternalLoad>) -> SlopeProblem {
+    SlopeProblem::new(
+        Embankment::new(30.48, 60.96).unwrap(),
+        circle(9.63168, 63.76416),
+        NonZeroUsize::new(100).unwrap(),
+        spencer_soil(),
+        seismic,
+        loads,
+    )
+    .unwrap()
+}
+
+fn f_of(p: &SlopeProblem) -> f64 {
+    solve_spencer(p, &SpencerSettings::default())
+        .factor_of_safety
+        .unwrap()
+}
+
+#[test]
+fn seismic_load_lowers_the_factor_of_safety() {
+    let static_f = f_of(&spencer_example(Seismic::default(), vec![]));
+    // k_h = 0 is the static answer (exactly: the same arithmetic).
+    assert_eq!(
+        f_of(&spencer_example(Seismic { kh: 0.0, kv: 0.0 }, vec![])),
+        static_f
+    );
+    let mut previous = static_f;
+    for kh in [0.05, 0.1, 0.2] {
+        let f = f_of(&spencer_example(Seismic { kh, kv: 0.0 }, vec![]));
+        assert!(f < previous, "k_h = {kh}: {f} ≥ {previous}");
+        previous = f;
+    }
+}
+
+#[test]
+fn self_equilibrated_loads_change_nothing_and_a_surcharge_lowers_f() {
+    let base = f_of(&spencer_example(Seismic::default(), vec![]));
+    // A force and its opposite on the same slice: nothing changes (1e-12: rounding).
+    let pair = |slice, fx, fy, moment| {
+        vec![
+            ExternalLoad {
+                slice,
+                fx,
+                fy,
+                moment,
+            },
+            ExternalLoad {
+                slice,
+                fx: -fx,
+                fy: -fy,
+                moment: -moment,
+            },
+        ]
+    };
+    let f = f_of(&spencer_example(
+        Seismic::default(),
+        pair(40, 150.0, -300.0, 75.0),
+    ));
+    assert!((f - base).abs() < 1e-12, "{f} vs {base}");
+    // A downward load on the upper slices (where the base is steep) drives the slide.
+    let surcharge: Vec<ExternalLoad> = (80..100)
+        .map(|slice| ExternalLoad {
+            slice,
+            fx: 0.0,
+            fy: -200.0,
+            moment: 0.0,
+        })
+        .collect();
+    assert!(f_of(&spencer_example(Seismic::default(), surcharge)) < base);
+}
+
+#[test]
+fn force_and_moment_curves_cross_at_the_answer() {
+    // Spencer (1967), Fig. 3: F_f(θ) and F_m(θ) meet at (θ*, F*); 1e-9: root-finding tolerance.
+    let p = spencer_example(Seismic::default(), vec![]);
+    let s = solve_spencer(&p, &SpencerSettings::default());
+    let (f, theta) = (s.factor_of_safety.unwrap(), s.theta_rad.unwrap());
+    let curves = factor_curves(&p, &[theta, 0.0]);
+    let (ff, fm) = curves[0];
+    assert!((ff.unwrap() - f).abs() < 1e-9 && (fm.unwrap() - f).abs() < 1e-9);
+    // At θ = 0 the moment curve is Bishop's simplified F.
+    assert!((curves[1].1.unwrap() - s.bishop_factor_of_safety.unwrap()).abs() < 1e-12);
+}
+
+#[test]
+fn searching_the_lower_end_too_never_does_worse() {
+    let toe = problem(10.0, 10.0, Soil::new(18.0, 5.0, 20.0, 0.0).unwrap(), 50);
+    let free = SearchProblem {
+        lower_end_factor_max: Some(1.0),
+        ..toe
+    };
+    let grid = SearchGrid::automatic(&toe.embankment, 0.0);
+    let a = search_critical_circle(&toe, grid, &SearchSettings::default());
+    let b = search_critical_circle(&free, grid, &SearchSettings::default());
+    assert!(b.factor_of_safety.unwrap() <= a.factor_of_safety.unwrap() + 1e-12);
+    let f_e = b.circle.unwrap().lower_end_factor;
+    assert!((0.0..=1.0).contains(&f_e));
+}
