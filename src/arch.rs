@@ -17,7 +17,7 @@ use thrustline_solver::arch::{
 };
 use utoipa::ToSchema;
 
-use crate::error::{ApiError, ApiJson, Problem};
+use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::{count, finite, number};
 use crate::AppState;
 
@@ -390,11 +390,7 @@ pub struct LiveLoadResponse {
     request_body = DeadLoadRequest,
     responses(
         (status = 200, description = "The dead-load factor, mechanism and thrust line", body = DeadLoadResponse),
-        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
-        (status = 422, description = "A field is missing, unknown or out of range, or the blocks do not form a chain", body = Problem, content_type = "application/problem+json"),
-        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+        ProblemResponses,
     )
 )]
 pub async fn dead_load(
@@ -441,11 +437,7 @@ pub async fn dead_load(
     request_body = LiveLoadRequest,
     responses(
         (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
-        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
-        (status = 422, description = "A field is missing, unknown or out of range, a load is on a missing block, or the blocks do not form a chain", body = Problem, content_type = "application/problem+json"),
-        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+        ProblemResponses,
     )
 )]
 pub async fn live_load(

@@ -36,6 +36,31 @@ pub struct Problem {
     pub field: Option<String>,
 }
 
+/// The error answers every solving endpoint documents (problem+json bodies).
+#[derive(utoipa::IntoResponses)]
+pub enum ProblemResponses {
+    /// The body is not JSON.
+    #[response(status = 400, content_type = "application/problem+json")]
+    BadRequest(Problem),
+    /// The body is larger than the limit.
+    #[response(status = 413, content_type = "application/problem+json")]
+    PayloadTooLarge(Problem),
+    /// The content type is not application/json.
+    #[response(status = 415, content_type = "application/problem+json")]
+    UnsupportedMediaType(Problem),
+    /// A field is missing, unknown or out of range, or the geometry is invalid; the detail and
+    /// the `field` member name it.
+    #[response(status = 422, content_type = "application/problem+json")]
+    Unprocessable(Problem),
+    /// At capacity, or the calculation ran out of time: retry after the Retry-After seconds.
+    #[response(
+        status = 503,
+        content_type = "application/problem+json",
+        headers(("Retry-After" = u32, description = "Seconds to wait before retrying"))
+    )]
+    Unavailable(Problem),
+}
+
 /// Everything a handler can fail with.
 #[derive(Debug, thiserror::Error)]
 pub enum ApiError {

@@ -14,7 +14,7 @@ use crate::arch::{
     active_constraints, arch_error, circular_arch, friction_coefficient, hinges, interface_limits,
     ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto,
 };
-use crate::error::{ApiError, ApiJson, Problem};
+use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::number;
 use crate::AppState;
 
@@ -97,11 +97,7 @@ pub struct MinimumThicknessResponse {
     request_body = MinimumThicknessRequest,
     responses(
         (status = 200, description = "The minimum thickness, or the reason there is none", body = MinimumThicknessResponse),
-        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
-        (status = 422, description = "A field is missing, unknown or out of range, or the geometry is not circular", body = Problem, content_type = "application/problem+json"),
-        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+        ProblemResponses,
     )
 )]
 pub async fn minimum_thickness(

@@ -22,6 +22,7 @@ use utoipa::OpenApi;
         crate::minimum_thickness::minimum_thickness,
         crate::slope::spencer
     ),
+    components(schemas(crate::error::Problem)),
     tags(
         (name = "arch", description = "Limit analysis of rigid-block arches (Livesley 1978)"),
         (name = "slope", description = "Embankment stability by Spencer's method"),

@@ -15,7 +15,7 @@ use thrustline_solver::slope::{
 };
 use utoipa::ToSchema;
 
-use crate::error::{ApiError, ApiJson, Problem};
+use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::{count, finite, number};
 use crate::AppState;
 
@@ -356,11 +356,7 @@ pub struct SpencerResponse {
     request_body = SpencerRequest,
     responses(
         (status = 200, description = "Solved, or an honest `converged: false`", body = SpencerResponse),
-        (status = 400, description = "Body is not JSON", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "Body too large", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
-        (status = 422, description = "A field is missing, unknown or out of range, or the circle cuts no slip mass", body = Problem, content_type = "application/problem+json"),
-        (status = 503, description = "At capacity or out of time; retry later", body = Problem, content_type = "application/problem+json"),
+        ProblemResponses,
     )
 )]
 pub async fn spencer(

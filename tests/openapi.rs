@@ -29,3 +29,14 @@ fn every_operation_documents_its_errors() {
         }
     }
 }
+
+#[test]
+fn every_reference_resolves() {
+    let text = thrustline::openapi::openapi_json();
+    let doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let schemas = doc["components"]["schemas"].as_object().unwrap();
+    for piece in text.split("\"$ref\": \"#/components/schemas/").skip(1) {
+        let name = &piece[..piece.find('"').unwrap()];
+        assert!(schemas.contains_key(name), "dangling $ref to {name}");
+    }
+}

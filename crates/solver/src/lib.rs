@@ -11,5 +11,6 @@
 #![warn(missing_docs)]
 
 pub mod arch;
+mod polygon;
 pub mod roots;
 pub mod slope;

@@ -10,6 +10,7 @@
 use std::num::NonZeroUsize;
 
 use super::ArchError;
+use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance for "the same point" when checking that chain blocks share faces.
 const SHARED_FACE_TOLERANCE: f64 = 1e-9;
@@ -379,26 +380,6 @@ fn is_self_intersecting(c: &[(f64, f64); 4]) -> bool {
         d1 * d2 < 0.0 && d3 * d4 < 0.0
     };
     segments_cross(c[0], c[1], c[2], c[3]) || segments_cross(c[1], c[2], c[3], c[0])
-}
-
-/// Signed area (positive counter-clockwise) and centroid of a polygon (shoelace formula).
-pub(crate) fn polygon_area_centroid(polygon: &[(f64, f64)]) -> (f64, (f64, f64)) {
-    let n = polygon.len();
-    let (ox, oy) = polygon[0];
-    let (mut twice_area, mut cx, mut cy) = (0.0, 0.0, 0.0);
-    for i in 0..n {
-        let (x0, y0) = (polygon[i].0 - ox, polygon[i].1 - oy);
-        let (x1, y1) = (polygon[(i + 1) % n].0 - ox, polygon[(i + 1) % n].1 - oy);
-        let cross = x0 * y1 - x1 * y0;
-        twice_area += cross;
-        cx += (x0 + x1) * cross;
-        cy += (y0 + y1) * cross;
-    }
-    if twice_area == 0.0 {
-        return (0.0, polygon[0]);
-    }
-    let area = 0.5 * twice_area;
-    (area, (ox + cx / (6.0 * area), oy + cy / (6.0 * area)))
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@
 //! the idealisation with which the thesis reproduces Spencer's (1967) numbers digit for digit.
 
 use super::{check_range, SlopeError};
+use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance on lengths used to tell a genuine exit point from the lower end itself.
 const SAME_POINT: f64 = 1e-9;
@@ -303,27 +304,6 @@ fn slice_polygon(
     }
 }
 
-/// Area and centroid of a simple polygon given counter-clockwise (shoelace formula).
-pub(crate) fn polygon_area_centroid(polygon: &[(f64, f64)]) -> (f64, (f64, f64)) {
-    let n = polygon.len();
-    // Work relative to the first vertex to keep the cross products well conditioned.
-    let (ox, oy) = polygon[0];
-    let (mut twice_area, mut cx, mut cy) = (0.0, 0.0, 0.0);
-    for i in 0..n {
-        let (x0, y0) = (polygon[i].0 - ox, polygon[i].1 - oy);
-        let (x1, y1) = (polygon[(i + 1) % n].0 - ox, polygon[(i + 1) % n].1 - oy);
-        let cross = x0 * y1 - x1 * y0;
-        twice_area += cross;
-        cx += (x0 + x1) * cross;
-        cy += (y0 + y1) * cross;
-    }
-    let area = 0.5 * twice_area;
-    if area.abs() <= f64::MIN_POSITIVE {
-        return (0.0, polygon[0]);
-    }
-    (area, (ox + cx / (6.0 * area), oy + cy / (6.0 * area)))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -371,13 +351,6 @@ mod tests {
             (total - simpson).abs() / simpson < 1e-4,
             "{total} vs {simpson}"
         );
-    }
-
-    #[test]
-    fn unit_square_centroid() {
-        let (a, c) = polygon_area_centroid(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 1.0)]);
-        assert_eq!(a, 2.0);
-        assert_eq!(c, (1.0, 0.5));
     }
 
     #[test]
