@@ -19,6 +19,12 @@ pub struct Settings {
     /// Time a request may wait for its solve before a 503. Defaults to 30 s
     /// (`THRUSTLINE_SOLVE_TIMEOUT_SECS`).
     pub solve_timeout: Duration,
+    /// Bearer token required by every endpoint but /healthz; none by default
+    /// (`THRUSTLINE_TOKEN`).
+    pub token: Option<String>,
+    /// Origins allowed by CORS, for dashboards in browsers; none by default, which sends no
+    /// CORS headers (`THRUSTLINE_CORS_ORIGINS`, comma-separated, or `*`).
+    pub cors_origins: Vec<String>,
 }
 
 impl Default for Settings {
@@ -29,6 +35,8 @@ impl Default for Settings {
             max_queued: 64,
             body_limit: 4 * 1024 * 1024,
             solve_timeout: Duration::from_secs(30),
+            token: None,
+            cors_origins: Vec::new(),
         }
     }
 }
@@ -63,6 +71,18 @@ impl Settings {
                 return Err("THRUSTLINE_SOLVE_TIMEOUT_SECS must be a positive number".to_owned());
             }
             settings.solve_timeout = Duration::from_secs_f64(seconds);
+        }
+        if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
+            if !token.is_empty() {
+                settings.token = Some(token);
+            }
+        }
+        if let Ok(origins) = std::env::var("THRUSTLINE_CORS_ORIGINS") {
+            settings.cors_origins = origins
+                .split(',')
+                .map(|o| o.trim().to_owned())
+                .filter(|o| !o.is_empty())
+                .collect();
         }
         Ok(settings)
     }

@@ -42,6 +42,9 @@ pub enum ProblemResponses {
     /// The body is not JSON.
     #[response(status = 400, content_type = "application/problem+json")]
     BadRequest(Problem),
+    /// THRUSTLINE_TOKEN is set and the request has no `Authorization: Bearer` with it.
+    #[response(status = 401, content_type = "application/problem+json")]
+    Unauthorized(Problem),
     /// The body is larger than the limit.
     #[response(status = 413, content_type = "application/problem+json")]
     PayloadTooLarge(Problem),

@@ -9,9 +9,11 @@
 //! - [`serve`] runs it on a listener until the shutdown future completes.
 
 pub mod arch;
+pub mod auth;
 pub mod config;
 pub mod error;
 pub mod health;
+pub mod metrics;
 pub mod minimum_thickness;
 pub mod openapi;
 pub mod pool;
@@ -22,9 +24,15 @@ use std::future::Future;
 use std::time::Duration;
 
 use axum::extract::DefaultBodyLimit;
-use axum::http::Request;
+use axum::http::{header, HeaderName, HeaderValue, Method, Request};
+use axum::response::IntoResponse;
 use axum::routing::{get, post};
 use axum::Router;
+use tower_http::catch_panic::CatchPanicLayer;
+use tower_http::cors::{AllowOrigin, CorsLayer};
+use tower_http::request_id::{
+    MakeRequestId, PropagateRequestIdLayer, RequestId, SetRequestIdLayer,
+};
 use tower_http::trace::TraceLayer;
 use utoipa::OpenApi;
 use utoipa_swagger_ui::SwaggerUi;
@@ -38,18 +46,26 @@ pub struct AppState {
     pub pool: pool::SolvePool,
     /// Time limit of one solve (the solvers' own limit: `spawn_blocking` cannot be cancelled).
     pub solve_time_limit: std::time::Duration,
+    /// Counters for /metrics.
+    pub metrics: std::sync::Arc<metrics::Metrics>,
+    /// The bearer token every endpoint but /healthz requires, if any.
+    pub token: Option<std::sync::Arc<str>>,
 }
 
 impl AppState {
     /// State for the given settings.
     pub fn new(settings: &Settings) -> Self {
+        let metrics = std::sync::Arc::new(metrics::Metrics::default());
         Self {
             pool: pool::SolvePool::new(
                 settings.max_running,
                 settings.max_queued,
                 settings.solve_timeout,
+                metrics.clone(),
             ),
             solve_time_limit: settings.solve_timeout,
+            metrics,
+            token: settings.token.as_deref().map(std::sync::Arc::from),
         }
     }
 
@@ -63,6 +79,7 @@ impl AppState {
 pub fn app(state: AppState, settings: &Settings) -> Router {
     let api = Router::new()
         .route("/healthz", get(health::healthz))
+        .route("/metrics", get(metrics::metrics))
         .route("/slope/spencer", post(slope::spencer))
         .route("/arch/dead-load", post(arch::dead_load))
         .route("/arch/live-load", post(arch::live_load))
@@ -70,16 +87,30 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
             "/arch/minimum-thickness",
             post(minimum_thickness::minimum_thickness),
         )
-        .with_state(state);
-    Router::new()
+        .route_layer(axum::middleware::from_fn_with_state(
+            state.clone(),
+            metrics::count_requests,
+        ))
+        .with_state(state.clone());
+    let request_id = HeaderName::from_static("x-request-id");
+    let router = Router::new()
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))
         .merge(api)
         .fallback(not_found)
+        .layer(axum::middleware::from_fn_with_state(state, auth::require_token))
         .layer(DefaultBodyLimit::max(settings.body_limit))
+        .layer(CatchPanicLayer::custom(|_| {
+            error::ApiError::Internal("a handler panicked".to_owned()).into_response()
+        }))
         .layer(
             TraceLayer::new_for_http()
                 .make_span_with(|request: &Request<_>| {
-                    tracing::info_span!("request", method = %request.method(), path = %request.uri().path())
+                    let id = request
+                        .headers()
+                        .get("x-request-id")
+                        .and_then(|v| v.to_str().ok())
+                        .unwrap_or("-");
+                    tracing::info_span!("request", id, method = %request.method(), path = %request.uri().path())
                 })
                 .on_request(())
                 .on_response(|response: &axum::http::Response<_>, latency: Duration, _span: &tracing::Span| {
@@ -91,6 +122,59 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
                 })
                 .on_failure(()),
         )
+        .layer(PropagateRequestIdLayer::new(request_id.clone()))
+        .layer(SetRequestIdLayer::new(request_id, SequentialRequestId::default()));
+    match cors(&settings.cors_origins) {
+        Some(cors) => router.layer(cors),
+        None => router,
+    }
+}
+
+/// CORS for the configured origins (`*` for any); `None` when none are configured.
+fn cors(origins: &[String]) -> Option<CorsLayer> {
+    if origins.is_empty() {
+        return None;
+    }
+    let allow = if origins.iter().any(|o| o == "*") {
+        AllowOrigin::any()
+    } else {
+        AllowOrigin::list(origins.iter().filter_map(|o| HeaderValue::from_str(o).ok()))
+    };
+    Some(
+        CorsLayer::new()
+            .allow_origin(allow)
+            .allow_methods([Method::GET, Method::POST])
+            .allow_headers([header::CONTENT_TYPE, header::AUTHORIZATION]),
+    )
+}
+
+/// Request ids `<process start in ms>-<counter>`: unique within an instance and across
+/// restarts, without a random source.
+#[derive(Debug, Clone)]
+struct SequentialRequestId {
+    prefix: u128,
+    next: std::sync::Arc<std::sync::atomic::AtomicU64>,
+}
+
+impl Default for SequentialRequestId {
+    fn default() -> Self {
+        let prefix = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_millis());
+        Self {
+            prefix,
+            next: std::sync::Arc::default(),
+        }
+    }
+}
+
+impl MakeRequestId for SequentialRequestId {
+    fn make_request_id<B>(&mut self, _request: &Request<B>) -> Option<RequestId> {
+        let n = self.next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        HeaderValue::from_str(&format!("{}-{n}", self.prefix))
+            .ok()
+            .map(RequestId::new)
+    }
 }
 
 async fn not_found(uri: axum::http::Uri) -> error::ApiError {

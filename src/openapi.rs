@@ -17,6 +17,7 @@ use utoipa::OpenApi;
     ),
     paths(
         crate::health::healthz,
+        crate::metrics::metrics,
         crate::arch::dead_load,
         crate::arch::live_load,
         crate::minimum_thickness::minimum_thickness,

@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 use tokio::sync::Semaphore;
 
 use crate::error::ApiError;
+use crate::metrics::Metrics;
 
 /// Limits of the solve pool.
 #[derive(Debug, Clone)]
@@ -21,12 +22,18 @@ pub struct SolvePool {
     max_running: usize,
     max_queued: usize,
     deadline: Duration,
+    metrics: Arc<Metrics>,
 }
 
 impl SolvePool {
     /// A pool running at most `max_running` solves at once with at most `max_queued` waiting;
     /// a solve that has not answered within `deadline` is answered 503.
-    pub fn new(max_running: usize, max_queued: usize, deadline: Duration) -> Self {
+    pub fn new(
+        max_running: usize,
+        max_queued: usize,
+        deadline: Duration,
+        metrics: Arc<Metrics>,
+    ) -> Self {
         let max_running = max_running.max(1);
         Self {
             running: Arc::new(Semaphore::new(max_running)),
@@ -34,6 +41,7 @@ impl SolvePool {
             max_running,
             max_queued,
             deadline,
+            metrics,
         }
     }
 
@@ -77,7 +85,10 @@ impl SolvePool {
             (value, start.elapsed())
         });
         match tokio::time::timeout(self.deadline, task).await {
-            Ok(Ok(result)) => Ok(result),
+            Ok(Ok(result)) => {
+                self.metrics.observe_solve(result.1);
+                Ok(result)
+            }
             Ok(Err(join_error)) => Err(ApiError::Internal(format!(
                 "solve task failed: {join_error}"
             ))),

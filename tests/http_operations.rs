@@ -1,0 +1,137 @@
+//! Operations over a real socket: bearer token, CORS, metrics, request ids, overload.
+
+mod common;
+
+use common::{spencer_example, Server};
+use serde_json::json;
+
+fn slow_arch() -> serde_json::Value {
+    // Livesley's general formulation at N = 10000: a few hundred milliseconds per solve.
+    json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 10000},
+           "formulation": "assembly"})
+}
+
+#[tokio::test]
+async fn bearer_token_guards_everything_but_healthz() {
+    let server = Server::start_with(thrustline::Settings {
+        token: Some("s3cret".to_owned()),
+        ..Default::default()
+    })
+    .await;
+    let (status, content_type, body) = server.post("/slope/spencer", &spencer_example()).await;
+    assert_eq!(
+        (status, content_type.as_str()),
+        (401, "application/problem+json"),
+        "{body}"
+    );
+    for path in ["/metrics", "/openapi.json"] {
+        assert_eq!(server.get(path).await.0, 401, "{path}");
+    }
+    assert_eq!(server.get("/healthz").await.0, 200);
+    let url = format!("{}/slope/spencer", server.base);
+    let wrong = server
+        .client
+        .post(&url)
+        .bearer_auth("s3creT")
+        .json(&spencer_example())
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(wrong.status().as_u16(), 401);
+    assert_eq!(wrong.headers()["www-authenticate"], "Bearer");
+    let right = server
+        .client
+        .post(&url)
+        .bearer_auth("s3cret")
+        .json(&spencer_example())
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(right.status().as_u16(), 200);
+}
+
+#[tokio::test]
+async fn cors_only_when_configured() {
+    let closed = Server::start().await;
+    let response = closed
+        .client
+        .get(format!("{}/healthz", closed.base))
+        .header("origin", "https://dash.example")
+        .send()
+        .await
+        .unwrap();
+    assert!(response
+        .headers()
+        .get("access-control-allow-origin")
+        .is_none());
+    let open = Server::start_with(thrustline::Settings {
+        cors_origins: vec!["https://dash.example".to_owned()],
+        ..Default::default()
+    })
+    .await;
+    let response = open
+        .client
+        .get(format!("{}/healthz", open.base))
+        .header("origin", "https://dash.example")
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(
+        response.headers()["access-control-allow-origin"],
+        "https://dash.example"
+    );
+}
+
+#[tokio::test]
+async fn metrics_count_requests_and_solves_and_ids_are_returned() {
+    let server = Server::start().await;
+    server.post("/slope/spencer", &spencer_example()).await;
+    let mut bad = spencer_example();
+    bad["slices"] = json!(0);
+    server.post("/slope/spencer", &bad).await;
+    let response = server
+        .client
+        .get(format!("{}/metrics", server.base))
+        .send()
+        .await
+        .unwrap();
+    assert!(response.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("text/plain"));
+    assert!(response.headers().get("x-request-id").is_some());
+    let text = response.text().await.unwrap();
+    assert!(
+        text.contains("thrustline_requests_total{route=\"/slope/spencer\",status=\"200\"} 1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("thrustline_requests_total{route=\"/slope/spencer\",status=\"422\"} 1"),
+        "{text}"
+    );
+    assert!(text.contains("thrustline_solve_seconds_count 1"), "{text}");
+    assert!(text.contains("thrustline_solve_queue_depth 0"), "{text}");
+}
+
+#[tokio::test]
+async fn overload_is_503_with_retry_after_not_a_queue() {
+    let server = Server::start_with(thrustline::Settings {
+        max_running: 1,
+        max_queued: 0,
+        ..Default::default()
+    })
+    .await;
+    let url = format!("{}/arch/dead-load", server.base);
+    let send = || server.client.post(&url).json(&slow_arch()).send();
+    let (a, b) = tokio::join!(send(), send());
+    let (a, b) = (a.unwrap(), b.unwrap());
+    let mut statuses = [a.status().as_u16(), b.status().as_u16()];
+    statuses.sort_unstable();
+    assert_eq!(statuses, [200, 503]);
+    let rejected = if a.status() == 503 { a } else { b };
+    assert_eq!(rejected.headers()["retry-after"], "1");
+    assert_eq!(
+        rejected.headers()["content-type"],
+        "application/problem+json"
+    );
+}
