@@ -23,6 +23,10 @@ use crate::AppState;
 
 /// Largest number of voussoirs (or blocks) a request may ask for.
 pub const MAX_VOUSSOIRS: usize = 10_000;
+/// Smallest radius, height or length accepted (any unit): the scale where f64 still has room.
+pub const MIN_LENGTH: f64 = 1e-9;
+/// Largest radius, height or length accepted.
+pub const MAX_LENGTH: f64 = 1e9;
 /// Largest number of live loads in one request.
 pub const MAX_LOADS: usize = 10_000;
 
@@ -70,8 +74,31 @@ impl FormulationDto {
 pub struct BlockCornersDto {
     /// Corners [x, y] in the order intrados-start, extrados-start, extrados-end, intrados-end;
     /// a block's start face is the previous block's end face.
-    #[schema(value_type = Vec<Vec<f64>>, min_items = 4, max_items = 4, example = json!([[9.5, 0.0], [10.5, 0.0], [10.5, 1.0], [9.5, 1.0]]))]
+    #[schema(schema_with = corners_schema)]
     pub corners: [[f64; 2]; 4],
+}
+
+/// Four [x, y] points.
+fn corners_schema() -> utoipa::openapi::schema::Array {
+    use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Type};
+    let point = ArrayBuilder::new()
+        .items(ObjectBuilder::new().schema_type(Type::Number))
+        .min_items(Some(2))
+        .max_items(Some(2));
+    ArrayBuilder::new()
+        .items(point)
+        .min_items(Some(4))
+        .max_items(Some(4))
+        .description(Some(
+            "Corners [x, y]: intrados-start, extrados-start, extrados-end, intrados-end",
+        ))
+        .examples([serde_json::json!([
+            [9.5, 0.0],
+            [10.5, 0.0],
+            [10.5, 1.0],
+            [9.5, 1.0]
+        ])])
+        .build()
 }
 
 /// The structure: the thesis' circular arch, or any chain of quadrilateral blocks.
@@ -81,8 +108,8 @@ pub enum GeometryDto {
     /// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
     /// 180° − B (left springing), N voussoirs of equal angle.
     Circular {
-        /// Middle radius R (> 0).
-        #[schema(exclusive_minimum = 0.0, example = 10.0)]
+        /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
+        #[schema(minimum = 1e-9, maximum = 1e9, example = 10.0)]
         radius: f64,
         /// Voussoir thickness D, 0 < D < 2R.
         #[schema(exclusive_minimum = 0.0, example = 1.0748)]
@@ -297,7 +324,7 @@ pub struct MechanismDto {
 
 /// The resultant at one interface.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct ThrustPointDto {
+pub struct InterfaceThrustPointDto {
     /// Interface number (1-based).
     pub interface: usize,
     /// x of the point of action of the normal force; null where it vanishes.
@@ -354,7 +381,7 @@ pub struct ArchOutcomeDto {
     /// §2.7–2.9).
     pub friction_may_overestimate: bool,
     /// The line of thrust of the admissible state at the load factor (empty when there is none).
-    pub thrust_line: Vec<ThrustPointDto>,
+    pub thrust_line: Vec<InterfaceThrustPointDto>,
     /// How the solve ended.
     pub solver: SolverDto,
 }
@@ -570,7 +597,7 @@ pub fn circular_arch(geometry: &GeometryDto) -> Result<Option<CircularArch>, Api
     else {
         return Ok(None);
     };
-    let radius = number("geometry.radius", *radius, 0.0, true, f64::MAX)?;
+    let radius = number("geometry.radius", *radius, MIN_LENGTH, false, MAX_LENGTH)?;
     let thickness = number("geometry.thickness", *thickness, 0.0, true, f64::MAX)?;
     if thickness >= 2.0 * radius {
         return Err(ApiError::invalid(
@@ -704,7 +731,7 @@ pub fn outcome(
         friction_may_overestimate: mechanism.is_some_and(|m| m.involves_friction()),
         thrust_line: thrust_line(problem.assembly(), &solution.resultants)
             .into_iter()
-            .map(|t| ThrustPointDto {
+            .map(|t| InterfaceThrustPointDto {
                 interface: t.interface + 1,
                 x: t.point.map(|p| p.0),
                 y: t.point.map(|p| p.1),

@@ -12,11 +12,48 @@ use utoipa::ToSchema;
 
 use crate::arch::{
     active_constraints, arch_error, circular_arch, friction_coefficient, hinges, interface_limits,
-    ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto,
+    ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto, VoussoirDto, MAX_LENGTH,
+    MIN_LENGTH,
 };
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::number;
 use crate::AppState;
+
+/// The only geometry kind with a minimum thickness.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CircularKind {
+    /// The circular arch generator.
+    Circular,
+}
+
+/// A circular arch whose thickness is to be found (SPEC §1.3).
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CircularGeometryDto {
+    /// Always `circular`.
+    pub kind: CircularKind,
+    /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
+    #[schema(minimum = 1e-9, maximum = 1e9, example = 10.0)]
+    pub radius: f64,
+    /// Ignored (accepted so that a dead-load request can be sent as it is).
+    #[serde(default)]
+    pub thickness: Option<f64>,
+    /// Number of voussoirs N, 1 ≤ N ≤ 10000.
+    #[schema(minimum = 1, maximum = 10000, example = 1800)]
+    pub voussoirs: usize,
+    /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
+    #[serde(default)]
+    #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
+    pub left_base_angle_deg: f64,
+    /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
+    #[serde(default)]
+    #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
+    pub right_base_angle_deg: f64,
+    /// Voussoir shape. Defaults to `curved`.
+    #[serde(default)]
+    pub voussoir: VoussoirDto,
+}
 
 /// The minimum-thickness question for a circular arch.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
@@ -27,8 +64,8 @@ use crate::AppState;
     "tolerance": 1e-6
 }))]
 pub struct MinimumThicknessRequest {
-    /// A circular arch (`kind: circular`); its `thickness` is ignored.
-    pub geometry: GeometryDto,
+    /// The circular arch; its `thickness`, if given, is ignored.
+    pub geometry: CircularGeometryDto,
     /// Unit weight γ (> 0). Defaults to 1.
     #[serde(default = "unit")]
     #[schema(exclusive_minimum = 0.0, default = 1.0)]
@@ -104,20 +141,18 @@ pub async fn minimum_thickness(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
 ) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
-    let mut geometry = request.geometry.clone();
-    let GeometryDto::Circular {
-        radius, thickness, ..
-    } = &mut geometry
-    else {
-        return Err(ApiError::invalid(
-            "geometry.kind",
-            "must be circular: the minimum thickness is defined for the circular arch generator",
-        ));
-    };
+    let g = &request.geometry;
     // The thickness is ignored: any valid one serves as the template.
-    if radius.is_finite() && *radius > 0.0 {
-        *thickness = 0.1 * *radius;
-    }
+    let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
+    let template = 0.1 * radius;
+    let geometry = GeometryDto::Circular {
+        radius: g.radius,
+        thickness: template,
+        voussoirs: g.voussoirs,
+        left_base_angle_deg: g.left_base_angle_deg,
+        right_base_angle_deg: g.right_base_angle_deg,
+        voussoir: g.voussoir,
+    };
     let arch = circular_arch(&geometry)?
         .ok_or_else(|| ApiError::invalid("geometry.kind", "must be circular"))?;
     let unit_weight = number("unit_weight", request.unit_weight, 0.0, true, f64::MAX)?;

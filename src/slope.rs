@@ -15,6 +15,7 @@ use thrustline_solver::slope::{
 };
 use utoipa::ToSchema;
 
+use crate::arch::{MAX_LENGTH, MIN_LENGTH};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::{count, finite, number};
 use crate::AppState;
@@ -28,11 +29,11 @@ pub const MAX_EXTERNAL_LOADS: usize = 10_000;
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SlopeDto {
-    /// Slope height H (> 0).
-    #[schema(exclusive_minimum = 0.0, example = 30.48)]
+    /// Slope height H, 1e-9 ≤ H ≤ 1e9.
+    #[schema(minimum = 1e-9, maximum = 1e9, example = 30.48)]
     pub height: f64,
-    /// Horizontal length L of the slope face (> 0); the slope is H:L.
-    #[schema(exclusive_minimum = 0.0, example = 60.96)]
+    /// Horizontal length L of the slope face, 1e-9 ≤ L ≤ 1e9; the slope is H:L.
+    #[schema(minimum = 1e-9, maximum = 1e9, example = 60.96)]
     pub length: f64,
 }
 
@@ -260,7 +261,7 @@ pub struct SliceDto {
 
 /// A point of the line of thrust on an inter-slice boundary (Spencer 1973).
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct ThrustPointDto {
+pub struct BoundaryThrustPointDto {
     /// Boundary number: boundary i lies between slices i and i+1.
     pub boundary: usize,
     /// x of the boundary.
@@ -327,7 +328,7 @@ pub struct SpencerResponse {
     /// Per-slice geometry and forces (empty when not converged).
     pub slices: Vec<SliceDto>,
     /// Line of thrust on the interior slice boundaries (empty when not converged).
-    pub thrust_line: Vec<ThrustPointDto>,
+    pub thrust_line: Vec<BoundaryThrustPointDto>,
     /// Newton iterations (plus fallback evaluations).
     pub iterations: usize,
     /// Largest scaled residual of the two equations (force/ΣW, moment/(ΣW·R)).
@@ -578,8 +579,20 @@ fn search_from(search: &SearchDto, parts: &Parts) -> Result<(SearchGrid, SearchP
 
 /// Validates everything but the circle or search.
 fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
-    let height = number("slope.height", request.slope.height, 0.0, true, f64::MAX)?;
-    let length = number("slope.length", request.slope.length, 0.0, true, f64::MAX)?;
+    let height = number(
+        "slope.height",
+        request.slope.height,
+        MIN_LENGTH,
+        false,
+        MAX_LENGTH,
+    )?;
+    let length = number(
+        "slope.length",
+        request.slope.length,
+        MIN_LENGTH,
+        false,
+        MAX_LENGTH,
+    )?;
     let slices = count("slices", request.slices, 1, MAX_SLICES)?;
     let soil = &request.soil;
     number("soil.unit_weight", soil.unit_weight, 0.0, true, f64::MAX)?;
@@ -770,7 +783,7 @@ fn response_from(
         thrust_line: solution
             .thrust_line
             .iter()
-            .map(|t| ThrustPointDto {
+            .map(|t| BoundaryThrustPointDto {
                 boundary: t.boundary,
                 x: t.x,
                 y: finite_or_none(t.y),

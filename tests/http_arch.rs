@@ -235,7 +235,7 @@ async fn minimum_thickness_edges_and_bad_inputs() {
     let blocks = json!({"geometry": {"kind": "blocks", "blocks": [
         {"corners": [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]}]}});
     let (status, content_type, body) = server.post("/arch/minimum-thickness", &blocks).await;
-    assert_problem(status, &content_type, &body, 422, "geometry.kind");
+    assert_problem(status, &content_type, &body, 422, "geometry");
 
     // The thickness is ignored, even when it would be invalid for a dead-load request.
     let ignored = with(
