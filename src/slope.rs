@@ -365,6 +365,7 @@ pub async fn spencer(
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
     let parts = parts_from(&request)?;
+    let time_limit = state.solve_time_limit;
     let curves = request.curves;
     let target = match (&request.circle, &request.search) {
         (Some(circle), None) => Target::Circle(circle_from(circle)?),
@@ -391,7 +392,7 @@ pub async fn spencer(
     };
     let (solved, elapsed) = state
         .pool
-        .run(move || solve_target(parts, target, curves))
+        .run(move || solve_target(parts, target, curves, time_limit))
         .await?;
     let (problem, solution, search, curves) = solved?;
     tracing::info!(
@@ -449,12 +450,26 @@ type Solved = (
 );
 
 /// Runs on the blocking pool: the search if asked, then the full solution of the circle.
-fn solve_target(parts: Parts, target: Target, curves: bool) -> Result<Solved, ApiError> {
+fn solve_target(
+    parts: Parts,
+    target: Target,
+    curves: bool,
+    time_limit: std::time::Duration,
+) -> Result<Solved, ApiError> {
     let settings = SpencerSettings::default();
     let (circle, search) = match target {
         Target::Circle(circle) => (circle, None),
         Target::Search((grid, problem)) => {
-            let found = search_critical_circle(&problem, grid, &SearchSettings::default());
+            let settings = SearchSettings {
+                time_limit: Some(time_limit),
+                ..SearchSettings::default()
+            };
+            let found = search_critical_circle(&problem, grid, &settings);
+            if found.timed_out {
+                return Err(ApiError::TimedOut {
+                    seconds: time_limit.as_secs_f64(),
+                });
+            }
             let circle = found.circle.ok_or_else(|| {
                 ApiError::invalid(
                     "search",

@@ -135,3 +135,23 @@ async fn overload_is_503_with_retry_after_not_a_queue() {
         "application/problem+json"
     );
 }
+
+#[tokio::test]
+async fn a_search_over_its_time_limit_is_503() {
+    let server = Server::start_with(thrustline::Settings {
+        solve_timeout: std::time::Duration::from_millis(1),
+        ..Default::default()
+    })
+    .await;
+    let mut body = spencer_example();
+    body.as_object_mut().unwrap().remove("circle");
+    body["search"] = json!({"nx": 101, "ny": 101});
+    body["slices"] = json!(500);
+    let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+    assert_eq!(
+        (status, content_type.as_str()),
+        (503, "application/problem+json"),
+        "{body}"
+    );
+    assert!(body["detail"].as_str().unwrap().contains("did not finish"));
+}

@@ -228,3 +228,15 @@ fn searching_the_lower_end_too_never_does_worse() {
     let f_e = b.circle.unwrap().lower_end_factor;
     assert!((0.0..=1.0).contains(&f_e));
 }
+
+#[test]
+fn a_search_past_its_time_limit_says_so() {
+    let p = problem(30.48, 60.96, spencer_soil(), 50);
+    let settings = SearchSettings {
+        time_limit: Some(std::time::Duration::ZERO),
+        ..SearchSettings::default()
+    };
+    let s = search_critical_circle(&p, SearchGrid::automatic(&p.embankment, 0.0), &settings);
+    assert!(s.timed_out);
+    assert!(s.grid.factors.iter().flatten().all(Option::is_none));
+}

@@ -100,6 +100,9 @@ pub struct SearchSettings {
     pub max_regrids: usize,
     /// Nelder–Mead evaluations per start. Defaults to 300.
     pub max_refine_evaluations: usize,
+    /// Wall-time limit of the whole search; circles not evaluated by then count as invalid and
+    /// the solution says it timed out. Defaults to none.
+    pub time_limit: Option<std::time::Duration>,
 }
 
 impl Default for SearchSettings {
@@ -109,6 +112,7 @@ impl Default for SearchSettings {
             starts: 3,
             max_regrids: 4,
             max_refine_evaluations: 300,
+            time_limit: None,
         }
     }
 }
@@ -140,6 +144,8 @@ pub struct SearchSolution {
     /// Whether the minimum still lies on the edge of the last grid (the true minimum may lie
     /// outside the region searched).
     pub is_on_edge: bool,
+    /// Whether the time limit cut the search short (the answer is then not to be trusted).
+    pub timed_out: bool,
 }
 
 /// Spencer's F for one circle, or `None` when the circle is invalid or has no solution.
@@ -160,10 +166,20 @@ pub fn factor_of_safety(
     solve_spencer_factor(&slope, settings).map(|(f, _)| f)
 }
 
+/// An optional instant after which no more circles are evaluated.
+struct Deadline(Option<std::time::Instant>);
+
+impl Deadline {
+    fn is_past(&self) -> bool {
+        self.0.is_some_and(|d| std::time::Instant::now() >= d)
+    }
+}
+
 fn evaluate_grid(
     problem: &SearchProblem,
     grid: &SearchGrid,
     settings: &SpencerSettings,
+    deadline: &Deadline,
 ) -> FactorGrid {
     let (xs, ys) = (grid.xs(), grid.ys());
     let factors = ys
@@ -171,6 +187,9 @@ fn evaluate_grid(
         .map(|&y| {
             xs.iter()
                 .map(|&x| {
+                    if deadline.is_past() {
+                        return None;
+                    }
                     let circle = SlipCircle {
                         x,
                         y,
@@ -190,11 +209,16 @@ pub fn search_critical_circle(
     grid: SearchGrid,
     settings: &SearchSettings,
 ) -> SearchSolution {
+    let deadline = Deadline(
+        settings
+            .time_limit
+            .map(|limit| std::time::Instant::now() + limit),
+    );
     let mut grid = grid;
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let factors = evaluate_grid(problem, &grid, &settings.spencer);
+        let factors = evaluate_grid(problem, &grid, &settings.spencer, &deadline);
         evaluations += grid.nx * grid.ny;
         let mut points: Vec<(f64, usize, usize)> = factors
             .factors
@@ -215,6 +239,7 @@ pub fn search_critical_circle(
                 evaluations,
                 regrids,
                 is_on_edge: false,
+                timed_out: deadline.is_past(),
             };
         };
         let (dx, dy) = grid.cell();
@@ -241,6 +266,9 @@ pub fn search_critical_circle(
                     lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
                 };
                 let objective = |v: &[f64]| {
+                    if deadline.is_past() {
+                        return f64::INFINITY;
+                    }
                     if let (Some(max), Some(&f_e)) = (problem.lower_end_factor_max, v.get(2)) {
                         if !(0.0..=max).contains(&f_e) {
                             return f64::INFINITY;
@@ -297,7 +325,7 @@ pub fn search_critical_circle(
             y: v[1],
             lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
         };
-        if (on_edge || outside) && regrids < settings.max_regrids {
+        if (on_edge || outside) && regrids < settings.max_regrids && !deadline.is_past() {
             // Centre a grid of the same size on the best point found.
             let (half_x, half_y) = (
                 0.5 * (grid.x_max - grid.x_min),
@@ -321,6 +349,7 @@ pub fn search_critical_circle(
             evaluations,
             regrids,
             is_on_edge: on_edge || outside,
+            timed_out: deadline.is_past(),
         };
     }
 }
