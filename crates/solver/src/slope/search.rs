@@ -94,7 +94,8 @@ pub struct SearchProblem {
 pub struct SearchSettings {
     /// Settings of each Spencer solution.
     pub spencer: SpencerSettings,
-    /// Grid points the local refinement starts from. Defaults to 3.
+    /// Grid points the local refinement starts from (0: the best grid point is the answer).
+    /// Defaults to 3.
     pub starts: usize,
     /// Times the grid may move when the minimum lies on its edge. Defaults to 4.
     pub max_regrids: usize,
@@ -246,7 +247,7 @@ pub fn search_critical_circle(
         // Refine from the best few grid points that are not neighbours of each other.
         let mut starts: Vec<(usize, usize)> = Vec::new();
         for &(_, i, j) in &points {
-            if starts.len() >= settings.starts.max(1) {
+            if starts.len() >= settings.starts {
                 break;
             }
             if starts
