@@ -33,7 +33,15 @@ fn runs_for(n: usize) -> usize {
 }
 
 fn semicircle(n: usize, thickness: f64) -> CircularArch {
-    CircularArch::new(10.0, thickness, NonZeroUsize::new(n).unwrap(), 0.0, 0.0, VoussoirShape::Curved).unwrap()
+    CircularArch::new(
+        10.0,
+        thickness,
+        NonZeroUsize::new(n).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Curved,
+    )
+    .unwrap()
 }
 
 /// A unit downward load at polar angle 45° on the middle radius, on whichever block holds it.
@@ -51,7 +59,14 @@ fn quarter_load(arch: &CircularArch) -> Vec<LiveLoad> {
 }
 
 fn minimum_thickness_ratio(n: usize) -> f64 {
-    let r = solve_minimum_thickness(&semicircle(n, 1.0), 1.0, InterfaceLimits::heyman(), None, &MinimumThicknessSettings::default()).unwrap();
+    let r = solve_minimum_thickness(
+        &semicircle(n, 1.0),
+        1.0,
+        InterfaceLimits::heyman(),
+        None,
+        &MinimumThicknessSettings::default(),
+    )
+    .unwrap();
     match r.outcome {
         MinimumThicknessOutcome::Found { thickness, .. } => thickness / 10.0,
         _ => f64::NAN,
@@ -60,21 +75,34 @@ fn minimum_thickness_ratio(n: usize) -> f64 {
 
 fn live_factor(n: usize, settings: &LimitSettings) -> f64 {
     let arch = semicircle(n, 1.5);
-    let p = ArchProblem::new(arch.assembly(), 1.0, InterfaceLimits::heyman(), None, quarter_load(&arch)).unwrap();
+    let p = ArchProblem::new(
+        arch.assembly(),
+        1.0,
+        InterfaceLimits::heyman(),
+        None,
+        quarter_load(&arch),
+    )
+    .unwrap();
     solve_live_load(&p, settings).unwrap().load_factor.unwrap()
 }
 
 fn spencer(n: usize) -> f64 {
     let p = SlopeProblem::new(
         Embankment::new(30.48, 60.96).unwrap(),
-        SlipCircle { x: 9.63168, y: 63.76416, lower_end_factor: 0.0 },
+        SlipCircle {
+            x: 9.63168,
+            y: 63.76416,
+            lower_end_factor: 0.0,
+        },
         NonZeroUsize::new(n).unwrap(),
         Soil::new(10.0, 6.096, 40.0, 0.5).unwrap(),
         Seismic::default(),
         Vec::new(),
     )
     .unwrap();
-    solve_spencer(&p, &SpencerSettings::default()).factor_of_safety.unwrap()
+    solve_spencer(&p, &SpencerSettings::default())
+        .factor_of_safety
+        .unwrap()
 }
 
 fn critical(grid_points: usize, refine: bool) -> f64 {
@@ -87,24 +115,39 @@ fn critical(grid_points: usize, refine: bool) -> f64 {
         lower_end_factor: 0.0,
         lower_end_factor_max: None,
     };
-    let grid = SearchGrid { nx: grid_points, ny: grid_points, ..SearchGrid::automatic(&e, 0.0) };
+    let grid = SearchGrid {
+        nx: grid_points,
+        ny: grid_points,
+        ..SearchGrid::automatic(&e, 0.0)
+    };
     let settings = if refine {
         SearchSettings::default()
     } else {
-        SearchSettings { starts: 0, max_regrids: 0, ..SearchSettings::default() }
+        SearchSettings {
+            starts: 0,
+            max_regrids: 0,
+            ..SearchSettings::default()
+        }
     };
-    search_critical_circle(&p, grid, &settings).factor_of_safety.unwrap()
+    search_critical_circle(&p, grid, &settings)
+        .factor_of_safety
+        .unwrap()
 }
 
 fn main() {
     // cargo bench passes --bench; nothing to parse.
-    println!("### Arch: minimum thickness of the semicircle (Heyman, curved voussoirs) against N\n");
+    println!(
+        "### Arch: minimum thickness of the semicircle (Heyman, curved voussoirs) against N\n"
+    );
     println!("Reference: Milankovitch's d/R = 0.10748 (SPEC §1.4); tolerance 1e-6·R.\n");
     println!("| N | d/R | error to 0.10748 | time |");
     println!("|---|---|---|---|");
     for n in [10, 30, 100, 300, 1000, 1800, 3000, 10000] {
         let (ms, ratio) = time(runs_for(n), || minimum_thickness_ratio(n));
-        println!("| {n} | {ratio:.6} | {:+.1e} | {ms:.2} ms |", ratio - 0.10748);
+        println!(
+            "| {n} | {ratio:.6} | {:+.1e} | {ms:.2} ms |",
+            ratio - 0.10748
+        );
     }
     println!("\n### Arch: live-load factor against N (R = 10, D = 1.5, unit load at 45° on the middle radius)\n");
     let reference = live_factor(20000, &LimitSettings::default());
@@ -113,28 +156,61 @@ fn main() {
     println!("|---|---|---|---|---|");
     for n in [10, 100, 1800, 10000] {
         let (ms, lambda) = time(runs_for(n), || live_factor(n, &LimitSettings::default()));
-        let assembly = LimitSettings { formulation: Formulation::Assembly, ..LimitSettings::default() };
+        let assembly = LimitSettings {
+            formulation: Formulation::Assembly,
+            ..LimitSettings::default()
+        };
         let (ms_assembly, _) = time(runs_for(n).min(5), || live_factor(n, &assembly));
-        println!("| {n} | {lambda:.6} | {:.1e} | {ms:.2} ms | {ms_assembly:.1} ms |", (lambda - reference).abs() / reference);
+        println!(
+            "| {n} | {lambda:.6} | {:.1e} | {ms:.2} ms | {ms_assembly:.1} ms |",
+            (lambda - reference).abs() / reference
+        );
     }
     println!("\n### Arch: dead load against N (D = 1.0747, just too thin at N = 1800)\n");
     println!("| N | λ₀ | time (chain) | time (assembly) |");
     println!("|---|---|---|---|");
     for n in [10, 100, 1800, 10000] {
-        let problem = ArchProblem::new(semicircle(n, 1.0747).assembly(), 1.0, InterfaceLimits::heyman(), None, vec![]).unwrap();
-        let (ms, s) = time(runs_for(n), || solve_dead_load(&problem, &LimitSettings::default()));
-        let assembly = LimitSettings { formulation: Formulation::Assembly, ..LimitSettings::default() };
+        let problem = ArchProblem::new(
+            semicircle(n, 1.0747).assembly(),
+            1.0,
+            InterfaceLimits::heyman(),
+            None,
+            vec![],
+        )
+        .unwrap();
+        let (ms, s) = time(runs_for(n), || {
+            solve_dead_load(&problem, &LimitSettings::default())
+        });
+        let assembly = LimitSettings {
+            formulation: Formulation::Assembly,
+            ..LimitSettings::default()
+        };
         let (ms_assembly, _) = time(runs_for(n).min(5), || solve_dead_load(&problem, &assembly));
-        println!("| {n} | {} | {ms:.2} ms | {ms_assembly:.1} ms |", s.load_factor.unwrap());
+        println!(
+            "| {n} | {} | {ms:.2} ms | {ms_assembly:.1} ms |",
+            s.load_factor.unwrap()
+        );
     }
     println!("\n### Solver tolerance against error in λ and time (live load, N = 1800)\n");
-    let tight = live_factor(1800, &LimitSettings { tolerance: 1e-12, ..LimitSettings::default() });
+    let tight = live_factor(
+        1800,
+        &LimitSettings {
+            tolerance: 1e-12,
+            ..LimitSettings::default()
+        },
+    );
     println!("| tolerance | λ | relative error to tolerance 1e-12 | time |");
     println!("|---|---|---|---|");
     for tolerance in [1e-4, 1e-6, 1e-8, 1e-10] {
-        let settings = LimitSettings { tolerance, ..LimitSettings::default() };
+        let settings = LimitSettings {
+            tolerance,
+            ..LimitSettings::default()
+        };
         let (ms, lambda) = time(11, || live_factor(1800, &settings));
-        println!("| {tolerance:.0e} | {lambda:.9} | {:.1e} | {ms:.2} ms |", (lambda - tight).abs() / tight);
+        println!(
+            "| {tolerance:.0e} | {lambda:.9} | {:.1e} | {ms:.2} ms |",
+            (lambda - tight).abs() / tight
+        );
     }
     println!("\n### Slope: Spencer's F against the number of slices (Spencer's 1967 example)\n");
     let converged = spencer(20000);
@@ -145,7 +221,9 @@ fn main() {
         let (ms, f) = time(runs_for(n), || spencer(n));
         println!("| {n} | {f:.6} | {:+.1e} | {:.3} ms |", f - converged, ms);
     }
-    println!("\n### Slope: critical F against the search grid (Spencer's example soil, 50 slices)\n");
+    println!(
+        "\n### Slope: critical F against the search grid (Spencer's example soil, 50 slices)\n"
+    );
     let best = critical(81, true);
     println!("Reference: 81 × 81 grid with refinement, F = {best:.6}.\n");
     println!("| grid | F (grid only) | error | time | F (grid + refinement) | error | time |");
