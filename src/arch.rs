@@ -230,6 +230,12 @@ pub struct DeadLoadRequest {
     /// interface). Both give the same answer; the choice is for cross-checking.
     #[serde(default)]
     pub formulation: FormulationDto,
+    /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults to
+    /// 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to 1e-7
+    /// (see the README's accuracy tables).
+    #[serde(default = "default_solver_tolerance")]
+    #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+    pub solver_tolerance: f64,
 }
 
 /// Livesley's live-load problem: the factor on the live loads at collapse.
@@ -259,6 +265,12 @@ pub struct LiveLoadRequest {
     /// interface). Both give the same answer; the choice is for cross-checking.
     #[serde(default)]
     pub formulation: FormulationDto,
+    /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults to
+    /// 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to 1e-7
+    /// (see the README's accuracy tables).
+    #[serde(default = "default_solver_tolerance")]
+    #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+    pub solver_tolerance: f64,
     /// The live loads (1 to 10000), multiplied together by the load factor.
     #[schema(min_items = 1, max_items = 10000)]
     pub loads: Vec<LoadDto>,
@@ -266,6 +278,10 @@ pub struct LiveLoadRequest {
 
 fn unit() -> f64 {
     1.0
+}
+
+fn default_solver_tolerance() -> f64 {
+    1e-10
 }
 
 /// An active limit of the collapse mechanism.
@@ -356,6 +372,8 @@ pub struct SolverDto {
     /// The formulation used: chain or assembly.
     #[schema(example = "chain")]
     pub formulation: &'static str,
+    /// The interior-point tolerance used.
+    pub tolerance: f64,
 }
 
 /// Everything common to the dead- and live-load answers.
@@ -434,6 +452,13 @@ pub async fn dead_load(
     let settings = LimitSettings {
         time_limit_secs: state.solve_time_limit_secs(),
         formulation: request.formulation.solver(),
+        tolerance: number(
+            "solver_tolerance",
+            request.solver_tolerance,
+            1e-12,
+            false,
+            1e-4,
+        )?,
         ..LimitSettings::default()
     };
     let ((problem, solution), elapsed) = state
@@ -452,7 +477,12 @@ pub async fn dead_load(
     );
     Ok(ApiJson(DeadLoadResponse {
         dead_load_factor: solution.load_factor,
-        outcome: outcome(&problem, &solution, request.formulation.name()),
+        outcome: outcome(
+            &problem,
+            &solution,
+            request.formulation.name(),
+            settings.tolerance,
+        ),
     }))
 }
 
@@ -482,6 +512,13 @@ pub async fn live_load(
     let settings = LimitSettings {
         time_limit_secs: state.solve_time_limit_secs(),
         formulation: request.formulation.solver(),
+        tolerance: number(
+            "solver_tolerance",
+            request.solver_tolerance,
+            1e-12,
+            false,
+            1e-4,
+        )?,
         ..LimitSettings::default()
     };
     let ((problem, solution), elapsed) = state
@@ -501,7 +538,12 @@ pub async fn live_load(
     );
     Ok(ApiJson(LiveLoadResponse {
         load_factor: solution.load_factor,
-        outcome: outcome(&problem, &solution, request.formulation.name()),
+        outcome: outcome(
+            &problem,
+            &solution,
+            request.formulation.name(),
+            settings.tolerance,
+        ),
     }))
 }
 
@@ -703,6 +745,7 @@ pub fn outcome(
     problem: &ArchProblem,
     solution: &LimitSolution,
     formulation: &'static str,
+    tolerance: f64,
 ) -> ArchOutcomeDto {
     let mechanism = solution.mechanism.as_ref();
     let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
@@ -746,6 +789,7 @@ pub fn outcome(
             programmes: solution.programmes,
             time_ms: solution.solve_time_secs * 1e3,
             formulation,
+            tolerance,
         },
     }
 }

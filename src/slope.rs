@@ -125,6 +125,12 @@ pub struct SpencerRequest {
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
     #[serde(default)]
     pub curves: bool,
+    /// Accuracy control: when given (1e-9 … 0.1), the slices are doubled from `slices` until F
+    /// changes by less than this fraction (at most 10000 slices); `slice_refinement` lists the
+    /// steps. Defaults to none: exactly `slices` slices. 1e-4 suits ordinary slopes.
+    #[serde(default)]
+    #[schema(minimum = 1e-9, maximum = 0.1, example = 1e-4)]
+    pub slice_tolerance: Option<f64>,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
     #[serde(default = "default_slices")]
     #[schema(minimum = 1, maximum = 10000, default = 100, example = 100)]
@@ -347,6 +353,18 @@ pub struct SpencerResponse {
     /// With `curves: true`: F_f(θ) and F_m(θ).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub curves: Option<CurvesDto>,
+    /// With `slice_tolerance`: F at each number of slices tried, the last one answered.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slice_refinement: Option<Vec<SliceRefinementDto>>,
+}
+
+/// One step of the slice refinement.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SliceRefinementDto {
+    /// Number of slices.
+    pub slices: usize,
+    /// F with that many slices; null where the equations had no solution.
+    pub factor_of_safety: Option<f64>,
 }
 
 /// Spencer's method for one slip circle.
@@ -365,6 +383,7 @@ pub async fn spencer(
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
     let parts = parts_from(&request)?;
+    let request_tolerance = parts.slice_tolerance.unwrap_or(0.0);
     let time_limit = state.solve_time_limit;
     let curves = request.curves;
     let target = match (&request.circle, &request.search) {
@@ -394,7 +413,7 @@ pub async fn spencer(
         .pool
         .run(move || solve_target(parts, target, curves, time_limit))
         .await?;
-    let (problem, solution, search, curves) = solved?;
+    let (problem, solution, search, curves, refinement) = solved?;
     tracing::info!(
         slices = problem.geometry.slices.len(),
         iterations = solution.iterations,
@@ -405,6 +424,24 @@ pub async fn spencer(
     );
     let mut response = response_from(&problem, &solution, elapsed.as_secs_f64() * 1e3);
     response.curves = curves;
+    if !refinement.is_empty() {
+        let settled = refinement.len() >= 2
+            && {
+                let tail: Vec<Option<f64>> = refinement
+                    .iter()
+                    .rev()
+                    .take(2)
+                    .map(|r| r.factor_of_safety)
+                    .collect();
+                matches!((tail[0], tail[1]), (Some(a), Some(b)) if (a - b).abs() <= request_tolerance * a)
+            };
+        if !settled {
+            response.warnings.push(format!(
+                "slice_tolerance {request_tolerance} not reached before {MAX_SLICES} slices"
+            ));
+        }
+        response.slice_refinement = Some(refinement);
+    }
     if let Some(search) = search {
         if search.is_on_edge {
             response.warnings.push(
@@ -431,9 +468,17 @@ pub async fn spencer(
 struct Parts {
     embankment: Embankment,
     slices: NonZeroUsize,
+    slice_tolerance: Option<f64>,
     soil: Soil,
     seismic: Seismic,
     external_loads: Vec<ExternalLoad>,
+}
+
+impl Parts {
+    /// Twice `current` slices, if that stays within the limit.
+    fn slices_doubled(&self, current: usize) -> Option<NonZeroUsize> {
+        NonZeroUsize::new(2 * current).filter(|n| n.get() <= MAX_SLICES)
+    }
 }
 
 /// One circle, or a search.
@@ -447,6 +492,7 @@ type Solved = (
     SpencerSolution,
     Option<SearchSolution>,
     Option<CurvesDto>,
+    Vec<SliceRefinementDto>,
 );
 
 /// Runs on the blocking pool: the search if asked, then the full solution of the circle.
@@ -480,21 +526,48 @@ fn solve_target(
             (circle, Some(found))
         }
     };
-    let problem = SlopeProblem::new(
-        parts.embankment,
-        circle,
-        parts.slices,
-        parts.soil,
-        parts.seismic,
-        parts.external_loads,
-    )
-    .map_err(slope_error)?;
-    let solution = solve_spencer(&problem, &settings);
+    let build = |slices: NonZeroUsize| {
+        SlopeProblem::new(
+            parts.embankment,
+            circle,
+            slices,
+            parts.soil,
+            parts.seismic,
+            parts.external_loads.clone(),
+        )
+        .map_err(slope_error)
+    };
+    let mut problem = build(parts.slices)?;
+    let mut solution = solve_spencer(&problem, &settings);
+    let mut refinement = Vec::new();
+    if let Some(tolerance) = parts.slice_tolerance {
+        // Double the slices until F changes by less than the tolerance (relative).
+        refinement.push(SliceRefinementDto {
+            slices: parts.slices.get(),
+            factor_of_safety: solution.factor_of_safety,
+        });
+        while let Some(doubled) = parts.slices_doubled(problem.geometry.slices.len()) {
+            let finer = build(doubled)?;
+            let finer_solution = solve_spencer(&finer, &settings);
+            refinement.push(SliceRefinementDto {
+                slices: doubled.get(),
+                factor_of_safety: finer_solution.factor_of_safety,
+            });
+            let settled = match (solution.factor_of_safety, finer_solution.factor_of_safety) {
+                (Some(a), Some(b)) => (a - b).abs() <= tolerance * b,
+                _ => false,
+            };
+            (problem, solution) = (finer, finer_solution);
+            if settled {
+                break;
+            }
+        }
+    }
     let curves = match (solution.theta_rad, curves) {
         (Some(theta), true) => Some(curves_around(&problem, theta)),
         _ => None,
     };
-    Ok((problem, solution, search, curves))
+    Ok((problem, solution, search, curves, refinement))
 }
 
 /// F_f(θ) and F_m(θ) from θ* − 30° to θ* + 30° in steps of 1°.
@@ -664,9 +737,21 @@ fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
     let embankment = Embankment::new(height, length).map_err(slope_error)?;
     let slices = NonZeroUsize::new(slices)
         .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
+    let slice_tolerance = request
+        .slice_tolerance
+        .map(|t| number("slice_tolerance", t, 1e-9, false, 0.1))
+        .transpose()?;
+    if slice_tolerance.is_some() && !external_loads.is_empty() {
+        return Err(ApiError::invalid(
+            "slice_tolerance",
+            "cannot be combined with external_loads: loads are given per slice, and refining \
+             changes the slices",
+        ));
+    }
     Ok(Parts {
         embankment,
         slices,
+        slice_tolerance,
         soil,
         seismic,
         external_loads,
@@ -813,5 +898,6 @@ fn response_from(
         search: None,
         grid: None,
         curves: None,
+        slice_refinement: None,
     }
 }

@@ -269,3 +269,25 @@ async fn both_formulations_answer_alike_over_http() {
         general["hinges"].as_array().unwrap().len()
     );
 }
+
+#[tokio::test]
+async fn solver_tolerance_is_a_documented_control() {
+    let server = Server::start().await;
+    let (_, _, tight) = server.post("/arch/live-load", &quarter_span_load()).await;
+    let mut loose = quarter_span_load();
+    loose["solver_tolerance"] = json!(1e-6);
+    let (status, _, loose) = server.post("/arch/live-load", &loose).await;
+    assert_eq!(status, 200, "{loose}");
+    assert_eq!(tight["solver"]["tolerance"], 1e-10);
+    assert_eq!(loose["solver"]["tolerance"], 1e-6);
+    let (a, b) = (
+        tight["load_factor"].as_f64().unwrap(),
+        loose["load_factor"].as_f64().unwrap(),
+    );
+    // README table: tolerance 1e-6 is right to about 3e-8; allow 1e-6.
+    assert!((a - b).abs() < 1e-6 * a, "{a} vs {b}");
+    let mut bad = quarter_span_load();
+    bad["solver_tolerance"] = json!(0.1);
+    let (status, content_type, body) = server.post("/arch/live-load", &bad).await;
+    assert_problem(status, &content_type, &body, 422, "solver_tolerance");
+}

@@ -270,3 +270,31 @@ async fn circle_and_search_are_exclusive_and_search_is_validated() {
     let (status, content_type, body) = server.post("/slope/spencer", &loads).await;
     assert_problem(status, &content_type, &body, 422, "external_loads");
 }
+
+#[tokio::test]
+async fn slice_tolerance_refines_until_f_settles() {
+    let server = Server::start().await;
+    let mut body = with(spencer_example(), "slices", json!(10));
+    body["slice_tolerance"] = json!(1e-4);
+    let (status, _, body) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{body}");
+    let steps = body["slice_refinement"].as_array().unwrap();
+    assert!(steps.len() >= 2);
+    assert_eq!(steps[0]["slices"], 10);
+    let last: Vec<f64> = steps
+        .iter()
+        .rev()
+        .take(2)
+        .map(|s| s["factor_of_safety"].as_f64().unwrap())
+        .collect();
+    assert!((last[0] - last[1]).abs() <= 1e-4 * last[0]);
+    // Right to 1e-4 against the converged F = 1.0695224 (Spencer's example).
+    let f = body["factor_of_safety"].as_f64().unwrap();
+    assert!((f - 1.0695224).abs() < 1e-4 * f, "{f}");
+    assert_eq!(body["slice_count"], steps.last().unwrap()["slices"]);
+
+    let mut bad = spencer_example();
+    bad["slice_tolerance"] = json!(0.5);
+    let (status, content_type, body) = server.post("/slope/spencer", &bad).await;
+    assert_problem(status, &content_type, &body, 422, "slice_tolerance");
+}
