@@ -442,6 +442,49 @@ pub async fn dead_load(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<DeadLoadRequest>,
 ) -> Result<ApiJson<DeadLoadResponse>, ApiError> {
+    Ok(ApiJson(solve_dead_load_request(&state, &request).await?.1))
+}
+
+/// Dead-load limit analysis drawn: voussoirs, thrust line, hinges, mechanism.
+#[utoipa::path(
+    post,
+    path = "/arch/dead-load/svg",
+    tag = "arch",
+    request_body = DeadLoadRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn dead_load_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<DeadLoadRequest>,
+) -> Result<Svg, ApiError> {
+    let (problem, response) = solve_dead_load_request(&state, &request).await?;
+    let title = match response.dead_load_factor {
+        Some(f) => format!(
+            "Dead load: λ₀ = {f}{}",
+            if f >= 1.0 {
+                " (stands)"
+            } else {
+                " (collapses)"
+            }
+        ),
+        None => "Dead load: no answer".to_owned(),
+    };
+    Ok(Svg(crate::svg::arch::draw(
+        problem.assembly(),
+        is_curved(&request.geometry),
+        &response.outcome,
+        &[],
+        &title,
+    )))
+}
+
+async fn solve_dead_load_request(
+    state: &AppState,
+    request: &DeadLoadRequest,
+) -> Result<(ArchProblem, DeadLoadResponse), ApiError> {
     let problem = build_problem(
         &request.geometry,
         request.unit_weight,
@@ -475,7 +518,7 @@ pub async fn dead_load(
         dead_load_factor = solution.load_factor,
         "dead load solved"
     );
-    Ok(ApiJson(DeadLoadResponse {
+    let response = DeadLoadResponse {
         dead_load_factor: solution.load_factor,
         outcome: outcome(
             &problem,
@@ -483,7 +526,8 @@ pub async fn dead_load(
             request.formulation.name(),
             settings.tolerance,
         ),
-    }))
+    };
+    Ok((problem, response))
 }
 
 /// Live-load limit analysis (Livesley's λ).
@@ -501,6 +545,44 @@ pub async fn live_load(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<LiveLoadRequest>,
 ) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
+    Ok(ApiJson(solve_live_load_request(&state, &request).await?.1))
+}
+
+/// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.
+#[utoipa::path(
+    post,
+    path = "/arch/live-load/svg",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn live_load_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<LiveLoadRequest>,
+) -> Result<Svg, ApiError> {
+    let (problem, response) = solve_live_load_request(&state, &request).await?;
+    let title = match (response.load_factor, response.outcome.stable) {
+        (Some(f), _) => format!("Live load: λ = {f:.4}"),
+        (None, Some(false)) => "Live load: the dead load is not carried".to_owned(),
+        (None, _) => "Live load: no collapse load".to_owned(),
+    };
+    let curved = is_curved(&request.geometry);
+    Ok(Svg(crate::svg::arch::draw(
+        problem.assembly(),
+        curved,
+        &response.outcome,
+        problem.live_loads(),
+        &title,
+    )))
+}
+
+async fn solve_live_load_request(
+    state: &AppState,
+    request: &LiveLoadRequest,
+) -> Result<(ArchProblem, LiveLoadResponse), ApiError> {
     count("loads", request.loads.len(), 1, MAX_LOADS)?;
     let problem = build_problem(
         &request.geometry,
@@ -536,7 +618,7 @@ pub async fn live_load(
         load_factor = solution.load_factor,
         "live load solved"
     );
-    Ok(ApiJson(LiveLoadResponse {
+    let response = LiveLoadResponse {
         load_factor: solution.load_factor,
         outcome: outcome(
             &problem,
@@ -544,7 +626,35 @@ pub async fn live_load(
             request.formulation.name(),
             settings.tolerance,
         ),
-    }))
+    };
+    Ok((problem, response))
+}
+
+/// Whether the request's voussoirs are annular sectors (drawn with arcs).
+fn is_curved(geometry: &GeometryDto) -> bool {
+    matches!(
+        geometry,
+        GeometryDto::Circular {
+            voussoir: VoussoirDto::Curved,
+            ..
+        }
+    )
+}
+
+/// An `image/svg+xml` answer.
+pub struct Svg(pub String);
+
+impl axum::response::IntoResponse for Svg {
+    fn into_response(self) -> axum::response::Response {
+        (
+            [(
+                axum::http::header::CONTENT_TYPE,
+                "image/svg+xml; charset=utf-8",
+            )],
+            self.0,
+        )
+            .into_response()
+    }
 }
 
 /// Validates `interface_limits`: missing fields take Heyman's values, `null` is unbounded.

@@ -1,5 +1,5 @@
 //! Optional bearer-token authentication: when `THRUSTLINE_TOKEN` is set, every endpoint but
-//! `/healthz` requires `Authorization: Bearer <token>` and answers 401 problem+json otherwise.
+//! `/healthz` and the static page `/` requires `Authorization: Bearer <token>` and answers 401 problem+json otherwise.
 
 use axum::extract::{Request, State};
 use axum::http::header;
@@ -18,7 +18,8 @@ pub async fn require_token(
     let Some(token) = state.token.as_deref() else {
         return next.run(request).await;
     };
-    if request.uri().path() == "/healthz" {
+    // The probe and the static page (whose own requests carry the token) are open.
+    if matches!(request.uri().path(), "/healthz" | "/") {
         return next.run(request).await;
     }
     let given = request

@@ -16,8 +16,10 @@ pub mod health;
 pub mod metrics;
 pub mod minimum_thickness;
 pub mod openapi;
+pub mod page;
 pub mod pool;
 pub mod slope;
+pub mod svg;
 pub mod validation;
 
 use std::future::Future;
@@ -78,11 +80,15 @@ impl AppState {
 /// The service's router.
 pub fn app(state: AppState, settings: &Settings) -> Router {
     let api = Router::new()
+        .route("/", get(page::index))
         .route("/healthz", get(health::healthz))
         .route("/metrics", get(metrics::metrics))
         .route("/slope/spencer", post(slope::spencer))
+        .route("/slope/spencer/svg", post(slope::spencer_svg))
         .route("/arch/dead-load", post(arch::dead_load))
+        .route("/arch/dead-load/svg", post(arch::dead_load_svg))
         .route("/arch/live-load", post(arch::live_load))
+        .route("/arch/live-load/svg", post(arch::live_load_svg))
         .route(
             "/arch/minimum-thickness",
             post(minimum_thickness::minimum_thickness),

@@ -19,9 +19,12 @@ use utoipa::OpenApi;
         crate::health::healthz,
         crate::metrics::metrics,
         crate::arch::dead_load,
+        crate::arch::dead_load_svg,
         crate::arch::live_load,
+        crate::arch::live_load_svg,
         crate::minimum_thickness::minimum_thickness,
-        crate::slope::spencer
+        crate::slope::spencer,
+        crate::slope::spencer_svg
     ),
     components(schemas(crate::error::Problem)),
     tags(

@@ -382,6 +382,41 @@ pub async fn spencer(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
+    Ok(ApiJson(solve_request(&state, request).await?.1))
+}
+
+/// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and
+/// for a search the map of F over the centres.
+#[utoipa::path(
+    post,
+    path = "/slope/spencer/svg",
+    tag = "slope",
+    request_body = SpencerRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn spencer_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<SpencerRequest>,
+) -> Result<crate::arch::Svg, ApiError> {
+    let searched = request.search.is_some();
+    let (problem, response) = solve_request(&state, request).await?;
+    let title = if searched {
+        "Spencer's method: the critical slip circle"
+    } else {
+        "Spencer's method: one slip circle"
+    };
+    Ok(crate::arch::Svg(crate::svg::slope::draw(
+        &problem, &response, title,
+    )))
+}
+
+async fn solve_request(
+    state: &AppState,
+    request: SpencerRequest,
+) -> Result<(SlopeProblem, SpencerResponse), ApiError> {
     let parts = parts_from(&request)?;
     let request_tolerance = parts.slice_tolerance.unwrap_or(0.0);
     let time_limit = state.solve_time_limit;
@@ -461,7 +496,7 @@ pub async fn spencer(
             factor_of_safety: search.grid.factors,
         });
     }
-    Ok(ApiJson(response))
+    Ok((problem, response))
 }
 
 /// The validated parts of a request that do not depend on the circle.

@@ -291,3 +291,59 @@ async fn solver_tolerance_is_a_documented_control() {
     let (status, content_type, body) = server.post("/arch/live-load", &bad).await;
     assert_problem(status, &content_type, &body, 422, "solver_tolerance");
 }
+
+#[tokio::test]
+async fn drawings_and_the_page() {
+    let server = Server::start().await;
+    let response = server
+        .client
+        .post(format!("{}/arch/live-load/svg", server.base))
+        .json(&quarter_span_load())
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status().as_u16(), 200);
+    assert!(response.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("image/svg+xml"));
+    let svg = response.text().await.unwrap();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    // 100 voussoirs, a line of thrust, four hinges with their angles, the load as an arrow.
+    assert_eq!(svg.matches("<polygon").count(), 100 + 0);
+    assert!(svg.contains("stroke=\"#c62828\""));
+    assert_eq!(svg.matches("<circle").count(), 4);
+    assert!(svg.contains("18.0° intrados") && svg.contains("180.0° extrados"));
+    assert!(svg.contains("marker-end=\"url(#arrow)\""));
+    // Bad input to a drawing is the same problem+json as to the numbers.
+    let bad = with(quarter_span_load(), "geometry.thickness", json!(-1.0));
+    let (status, content_type, body) = server.post("/arch/live-load/svg", &bad).await;
+    assert_problem(status, &content_type, &body, 422, "geometry.thickness");
+
+    let (status, _, body) = server
+        .post("/arch/dead-load/svg", &milankovitch(1.0747))
+        .await;
+    assert_eq!(status, 200);
+    let svg = body.as_str().unwrap();
+    assert!(svg.contains("λ₀ = 0") && svg.contains("35.5° intrados"));
+
+    let response = server
+        .client
+        .get(format!("{}/", server.base))
+        .send()
+        .await
+        .unwrap();
+    assert!(response.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("text/html"));
+    let page = response.text().await.unwrap();
+    for id in [
+        "dead-request",
+        "live-request",
+        "slope-request",
+        "dead-picture",
+    ] {
+        assert!(page.contains(id), "{id}");
+    }
+}

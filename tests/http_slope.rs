@@ -298,3 +298,26 @@ async fn slice_tolerance_refines_until_f_settles() {
     let (status, content_type, body) = server.post("/slope/spencer", &bad).await;
     assert_problem(status, &content_type, &body, 422, "slice_tolerance");
 }
+
+#[tokio::test]
+async fn slope_drawing_with_the_f_map() {
+    let server = Server::start().await;
+    let mut body = spencer_example();
+    body.as_object_mut().unwrap().remove("circle");
+    body["search"] = json!({"nx": 6, "ny": 5});
+    body["slices"] = json!(20);
+    let response = server
+        .client
+        .post(format!("{}/slope/spencer/svg", server.base))
+        .json(&body)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status().as_u16(), 200);
+    let svg = response.text().await.unwrap();
+    assert!(svg.contains("the critical slip circle") && svg.contains("F map over centres"));
+    // The embankment and at most 6 × 5 map cells; 20 slice sides; the centre dot.
+    let polygons = svg.matches("<polygon").count();
+    assert!((2..=31).contains(&polygons), "{polygons}");
+    assert_eq!(svg.matches("<circle").count(), 1);
+}

@@ -186,6 +186,11 @@ impl ArchProblem {
     pub fn unit_weight(&self) -> f64 {
         self.unit_weight
     }
+
+    /// The live loads.
+    pub fn live_loads(&self) -> &[LiveLoad] {
+        &self.live_loads
+    }
 }
 
 /// Settings of the interior-point solves.

@@ -1,0 +1,166 @@
+//! Drawing of an arch: voussoirs, line of thrust, hinges with their angles, live loads as
+//! arrows, and the collapse mechanism as the displaced blocks (dashed).
+
+use thrustline_solver::arch::{Assembly, LiveLoad};
+
+use super::Canvas;
+use crate::arch::ArchOutcomeDto;
+
+/// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
+fn outline(corners: &[(f64, f64); 4], curved: bool) -> Vec<(f64, f64)> {
+    if !curved {
+        return corners.to_vec();
+    }
+    // Intrados-start → extrados-start (straight), along the extrados, extrados-end →
+    // intrados-end (straight), back along the intrados.
+    let arc = |a: (f64, f64), b: (f64, f64)| -> Vec<(f64, f64)> {
+        let (ra, ta) = (a.0.hypot(a.1), a.1.atan2(a.0));
+        let mut tb = b.1.atan2(b.0);
+        while tb - ta > std::f64::consts::PI {
+            tb -= 2.0 * std::f64::consts::PI;
+        }
+        while ta - tb > std::f64::consts::PI {
+            tb += 2.0 * std::f64::consts::PI;
+        }
+        (0..=6)
+            .map(|i| {
+                let t = ta + (tb - ta) * f64::from(i) / 6.0;
+                (ra * t.cos(), ra * t.sin())
+            })
+            .collect()
+    };
+    let mut points = vec![corners[0]];
+    points.extend(arc(corners[1], corners[2]));
+    points.extend(arc(corners[3], corners[0]));
+    points
+}
+
+/// The drawing, `curved` for annular-sector voussoirs.
+pub fn draw(
+    assembly: &Assembly,
+    curved: bool,
+    outcome: &ArchOutcomeDto,
+    loads: &[LiveLoad],
+    title: &str,
+) -> String {
+    let corners = assembly
+        .blocks
+        .iter()
+        .flat_map(|b| b.corners.iter().copied());
+    let mut canvas = Canvas::fitting(corners);
+    let span = assembly.length_scale();
+    let outlines: Vec<Vec<(f64, f64)>> = assembly
+        .blocks
+        .iter()
+        .map(|b| outline(&b.corners, curved))
+        .collect();
+    let thin = if assembly.blocks.len() > 200 {
+        "0.2"
+    } else {
+        "0.8"
+    };
+    for o in &outlines {
+        canvas.polygon(
+            o,
+            &format!("fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"{thin}\""),
+        );
+    }
+    // The collapse mechanism: blocks displaced by 8 % of the span at the fastest corner; each
+    // block dashed when there are few, the displaced intrados and extrados when there are many.
+    if let Some(mechanism) = &outcome.mechanism {
+        let delta = 0.08 * span;
+        let displaced: Vec<Vec<(f64, f64)>> = assembly
+            .blocks
+            .iter()
+            .zip(&mechanism.blocks)
+            .map(|(block, v)| {
+                let g = block.centroid;
+                let corners = if assembly.blocks.len() > 60 {
+                    block.corners.to_vec()
+                } else {
+                    outline(&block.corners, curved)
+                };
+                corners
+                    .into_iter()
+                    .map(|(x, y)| {
+                        (
+                            x + delta * (v.u - v.rotation * (y - g.1)),
+                            y + delta * (v.v + v.rotation * (x - g.0)),
+                        )
+                    })
+                    .collect()
+            })
+            .collect();
+        let style =
+            "fill=\"none\" stroke=\"#546e7a\" stroke-width=\"0.9\" stroke-dasharray=\"4 3\"";
+        if assembly.blocks.len() > 60 {
+            let intrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[0], c[3]]).collect();
+            let extrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[1], c[2]]).collect();
+            canvas.polyline(&intrados, style);
+            canvas.polyline(&extrados, style);
+        } else {
+            for d in &displaced {
+                canvas.polygon(d, style);
+            }
+        }
+    }
+    // The line of thrust through the points of action at the interfaces.
+    let thrust: Vec<(f64, f64)> = outcome
+        .thrust_line
+        .iter()
+        .map(|t| (t.x.unwrap_or(f64::NAN), t.y.unwrap_or(f64::NAN)))
+        .collect();
+    canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
+    // Hinges at the intrados or extrados end of their interface, with their polar angle.
+    for hinge in &outcome.hinges {
+        let Some(interface) = assembly.interfaces.get(hinge.interface - 1) else {
+            continue;
+        };
+        let point = if hinge.location == "intrados" {
+            interface.intrados
+        } else {
+            interface.extrados
+        };
+        canvas.dot(
+            point,
+            5.0,
+            "fill=\"#1b5e20\" stroke=\"white\" stroke-width=\"1.5\"",
+        );
+        let outward = if hinge.location == "intrados" {
+            -1.0
+        } else {
+            1.0
+        };
+        let offset = (
+            outward * 14.0 * interface.tangent.0,
+            -outward * 14.0 * interface.tangent.1,
+        );
+        canvas.text(
+            point,
+            offset,
+            &format!("{:.1}° {}", hinge.angle_deg, hinge.location),
+            "font-size=\"11\" fill=\"#1b5e20\" font-family=\"sans-serif\" text-anchor=\"middle\"",
+        );
+    }
+    // Live loads: arrows ending at their point, 12 % of the span long.
+    let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
+    for load in loads {
+        let magnitude = load.fx.hypot(load.fy);
+        if magnitude == 0.0 || largest == 0.0 {
+            continue;
+        }
+        let length = 0.12 * span * magnitude / largest;
+        let from = (
+            load.point.0 - length * load.fx / magnitude,
+            load.point.1 - length * load.fy / magnitude,
+        );
+        canvas.arrow(from, load.point, "stroke=\"#1565c0\" stroke-width=\"2\"");
+    }
+    canvas.raw(
+        "<g font-size=\"11\" font-family=\"sans-serif\"><text x=\"60\" y=\"44\" fill=\"#c62828\">— line of thrust</text>\
+         <text x=\"180\" y=\"44\" fill=\"#1b5e20\">● hinges</text>\
+         <text x=\"260\" y=\"44\" fill=\"#546e7a\">- - collapse mechanism</text>\
+         <text x=\"420\" y=\"44\" fill=\"#1565c0\">→ live loads</text></g>",
+    );
+    canvas.finish(title)
+}

@@ -1,0 +1,271 @@
+//! SVG drawings of the answers (`image/svg+xml`), built as plain strings: a [`Canvas`] maps the
+//! section's coordinates (y up, any unit) onto an 800-pixel-wide picture with axes and a scale
+//! bar; `arch` and `slope` draw on it.
+
+pub mod arch;
+pub mod slope;
+
+use std::fmt::Write;
+
+/// Width of every drawing in pixels.
+pub const WIDTH: f64 = 800.0;
+const MARGIN: f64 = 60.0;
+
+/// A picture of the region [x0, x1] × [y0, y1] of the section, y up.
+pub struct Canvas {
+    x0: f64,
+    y1: f64,
+    scale: f64,
+    height: f64,
+    body: String,
+}
+
+impl Canvas {
+    /// A canvas showing the bounding box of `points`, padded by 5 %.
+    pub fn fitting(points: impl IntoIterator<Item = (f64, f64)>) -> Self {
+        let (mut x0, mut y0, mut x1, mut y1) = (
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        );
+        for (x, y) in points {
+            if x.is_finite() && y.is_finite() {
+                x0 = x0.min(x);
+                x1 = x1.max(x);
+                y0 = y0.min(y);
+                y1 = y1.max(y);
+            }
+        }
+        let has_width = x0 < x1;
+        if !has_width {
+            (x0, x1) = (x0.min(0.0) - 1.0, x1.max(0.0) + 1.0);
+        }
+        let has_height = y0 < y1;
+        if !has_height {
+            (y0, y1) = (y0.min(0.0) - 1.0, y1.max(0.0) + 1.0);
+        }
+        let pad = 0.05 * (x1 - x0).max(y1 - y0);
+        let (x0, x1, y0, y1) = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+        let scale = (WIDTH - 2.0 * MARGIN) / (x1 - x0);
+        let height = ((y1 - y0) * scale + 2.0 * MARGIN).clamp(200.0, 2000.0);
+        let mut canvas = Self {
+            x0,
+            y1,
+            scale,
+            height,
+            body: String::new(),
+        };
+        canvas.axes(x0, x1, y0, y1);
+        canvas
+    }
+
+    /// Pixel coordinates of a point of the section.
+    pub fn px(&self, (x, y): (f64, f64)) -> (f64, f64) {
+        (
+            MARGIN + (x - self.x0) * self.scale,
+            MARGIN + (self.y1 - y) * self.scale,
+        )
+    }
+
+    /// A length of the section in pixels.
+    pub fn length(&self, l: f64) -> f64 {
+        l * self.scale
+    }
+
+    /// Appends raw SVG.
+    pub fn raw(&mut self, svg: &str) {
+        self.body.push_str(svg);
+        self.body.push('\n');
+    }
+
+    /// A closed polygon.
+    pub fn polygon(&mut self, points: &[(f64, f64)], style: &str) {
+        let mut d = String::new();
+        for &p in points {
+            let (x, y) = self.px(p);
+            let _ = write!(d, "{x:.2},{y:.2} ");
+        }
+        self.raw(&format!("<polygon points=\"{}\" {style}/>", d.trim_end()));
+    }
+
+    /// An open polyline; non-finite points break it.
+    pub fn polyline(&mut self, points: &[(f64, f64)], style: &str) {
+        let mut runs: Vec<String> = vec![String::new()];
+        for &p in points {
+            if p.0.is_finite() && p.1.is_finite() {
+                let (x, y) = self.px(p);
+                let _ = write!(runs.last_mut().expect("never empty"), "{x:.2},{y:.2} ");
+            } else if !runs.last().is_some_and(String::is_empty) {
+                runs.push(String::new());
+            }
+        }
+        for run in runs.into_iter().filter(|r| r.contains(' ')) {
+            self.raw(&format!(
+                "<polyline points=\"{}\" fill=\"none\" {style}/>",
+                run.trim_end()
+            ));
+        }
+    }
+
+    /// A dot of `radius` pixels.
+    pub fn dot(&mut self, p: (f64, f64), radius: f64, style: &str) {
+        let (x, y) = self.px(p);
+        self.raw(&format!(
+            "<circle cx=\"{x:.2}\" cy=\"{y:.2}\" r=\"{radius}\" {style}/>"
+        ));
+    }
+
+    /// Text at a point, offset in pixels.
+    pub fn text(&mut self, p: (f64, f64), offset: (f64, f64), text: &str, style: &str) {
+        let (x, y) = self.px(p);
+        self.raw(&format!(
+            "<text x=\"{:.2}\" y=\"{:.2}\" {style}>{}</text>",
+            x + offset.0,
+            y + offset.1,
+            escape(text)
+        ));
+    }
+
+    /// An arrow from `from` to `to` (section coordinates).
+    pub fn arrow(&mut self, from: (f64, f64), to: (f64, f64), style: &str) {
+        let (a, b) = (self.px(from), self.px(to));
+        self.raw(&format!(
+            "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" marker-end=\"url(#arrow)\" {style}/>",
+            a.0, a.1, b.0, b.1
+        ));
+    }
+
+    fn axes(&mut self, x0: f64, x1: f64, y0: f64, y1: f64) {
+        let step = nice_step((x1 - x0).max(y1 - y0) / 8.0);
+        let style = "stroke=\"#bbb\" stroke-width=\"0.5\"";
+        let label = "font-size=\"10\" fill=\"#666\" font-family=\"sans-serif\"";
+        let (left, bottom) = (x0, y0);
+        let mut x = (x0 / step).ceil() * step;
+        while x <= x1 {
+            let (px, py) = self.px((x, bottom));
+            self.raw(&format!(
+                "<line x1=\"{px:.2}\" y1=\"{py:.2}\" x2=\"{px:.2}\" y2=\"{:.2}\" {style}/>",
+                py + 5.0
+            ));
+            self.raw(&format!(
+                "<text x=\"{px:.2}\" y=\"{:.2}\" text-anchor=\"middle\" {label}>{}</text>",
+                py + 17.0,
+                tick(x)
+            ));
+            x += step;
+        }
+        let mut y = (y0 / step).ceil() * step;
+        while y <= y1 {
+            let (px, py) = self.px((left, y));
+            self.raw(&format!(
+                "<line x1=\"{:.2}\" y1=\"{py:.2}\" x2=\"{px:.2}\" y2=\"{py:.2}\" {style}/>",
+                px - 5.0
+            ));
+            self.raw(&format!(
+                "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\" {label}>{}</text>",
+                px - 8.0,
+                py + 3.0,
+                tick(y)
+            ));
+            y += step;
+        }
+        let (ax, ay) = self.px((left, bottom));
+        let (bx, _) = self.px((x1, bottom));
+        let (_, cy) = self.px((left, y1));
+        self.raw(&format!("<polyline points=\"{ax:.2},{cy:.2} {ax:.2},{ay:.2} {bx:.2},{ay:.2}\" fill=\"none\" stroke=\"#888\"/>"));
+        // Scale bar: one step, top right.
+        let bar = self.length(step);
+        let (sx, sy) = (WIDTH - MARGIN - bar, MARGIN - 30.0);
+        self.raw(&format!(
+            "<line x1=\"{sx:.2}\" y1=\"{sy:.2}\" x2=\"{:.2}\" y2=\"{sy:.2}\" stroke=\"#333\" stroke-width=\"3\"/>\
+             <text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" {label}>{} (scale)</text>",
+            sx + bar,
+            sx + bar / 2.0,
+            sy - 6.0,
+            tick(step)
+        ));
+    }
+
+    /// The finished document, with a title.
+    pub fn finish(self, title: &str) -> String {
+        format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\">\n\
+             <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker></defs>\n\
+             <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
+             <text x=\"{m}\" y=\"22\" font-size=\"15\" font-family=\"sans-serif\" fill=\"#222\">{t}</text>\n{b}</svg>\n",
+            w = WIDTH,
+            h = self.height,
+            m = MARGIN,
+            t = escape(title),
+            b = self.body
+        )
+    }
+}
+
+/// 1, 2 or 5 times a power of ten, at least `raw`.
+fn nice_step(raw: f64) -> f64 {
+    if !(raw > 0.0 && raw.is_finite()) {
+        return 1.0;
+    }
+    let power = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * power)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * power)
+}
+
+fn tick(v: f64) -> String {
+    let s = format!("{v:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
+    }
+}
+
+/// Escapes text for SVG.
+pub fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// A colour from blue (t = 0) through yellow to red (t = 1).
+pub fn heat(t: f64) -> String {
+    let t = t.clamp(0.0, 1.0);
+    let (r, g, b) = if t < 0.5 {
+        let u = t / 0.5;
+        (40.0 + u * 215.0, 90.0 + u * 150.0, 200.0 - u * 160.0)
+    } else {
+        let u = (t - 0.5) / 0.5;
+        (255.0, 240.0 - u * 180.0, 40.0)
+    };
+    format!("rgb({:.0},{:.0},{:.0})", r, g, b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn steps_and_ticks() {
+        assert_eq!(nice_step(0.7), 1.0);
+        assert_eq!(nice_step(13.0), 20.0);
+        assert_eq!(nice_step(0.03), 0.05);
+        assert_eq!(tick(2.50), "2.5");
+        assert_eq!(tick(-0.0), "0");
+        assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+
+    #[test]
+    fn canvas_maps_y_up_and_fits_the_width() {
+        let c = Canvas::fitting([(0.0, 0.0), (10.0, 5.0)]);
+        let (a, b) = (c.px((0.0, 0.0)), c.px((10.0, 5.0)));
+        assert!(b.0 > a.0 && b.1 < a.1);
+        assert!(a.0 >= MARGIN && b.0 <= WIDTH - MARGIN);
+    }
+}
