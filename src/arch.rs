@@ -27,6 +27,10 @@ pub const MAX_VOUSSOIRS: usize = 10_000;
 pub const MIN_LENGTH: f64 = 1e-9;
 /// Largest radius, height or length accepted.
 pub const MAX_LENGTH: f64 = 1e9;
+/// Largest unit weight or cohesion accepted (any unit).
+pub const MAX_MAGNITUDE: f64 = 1e12;
+/// Largest force, moment or interface limit accepted (any unit).
+pub const MAX_FORCE: f64 = 1e30;
 /// Largest number of live loads in one request.
 pub const MAX_LOADS: usize = 10_000;
 
@@ -215,7 +219,7 @@ pub struct DeadLoadRequest {
     pub geometry: GeometryDto,
     /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
     #[serde(default = "unit")]
-    #[schema(exclusive_minimum = 0.0, default = 1.0, example = 1.0)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, example = 1.0)]
     pub unit_weight: f64,
     /// Limits on the interface resultants. Defaults to Heyman's (no tension, no crushing).
     #[serde(default)]
@@ -251,7 +255,7 @@ pub struct LiveLoadRequest {
     pub geometry: GeometryDto,
     /// Unit weight γ (> 0). Defaults to 1.
     #[serde(default = "unit")]
-    #[schema(exclusive_minimum = 0.0, default = 1.0, example = 1.0)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, example = 1.0)]
     pub unit_weight: f64,
     /// Limits on the interface resultants. Defaults to Heyman's.
     #[serde(default)]
@@ -664,8 +668,8 @@ pub fn interface_limits(limits: &InterfaceLimitsDto) -> Result<InterfaceLimits, 
         let field = format!("interface_limits.{field}");
         match given.unwrap_or(default) {
             None => Ok(None),
-            Some(v) if lower => number(&field, v, f64::MIN, false, 0.0).map(Some),
-            Some(v) => number(&field, v, 0.0, false, f64::MAX).map(Some),
+            Some(v) if lower => number(&field, v, -MAX_FORCE, false, 0.0).map(Some),
+            Some(v) => number(&field, v, 0.0, false, MAX_FORCE).map(Some),
         }
     };
     Ok(InterfaceLimits {
@@ -694,7 +698,7 @@ pub fn build_problem(
     loads: &[LoadDto],
 ) -> Result<ArchProblem, ApiError> {
     let assembly = build_assembly(geometry)?;
-    let unit_weight = number("unit_weight", unit_weight, 0.0, true, f64::MAX)?;
+    let unit_weight = number("unit_weight", unit_weight, 0.0, true, MAX_MAGNITUDE)?;
     let limits = interface_limits(limits)?;
     let friction = friction_coefficient(friction)?;
     let n = assembly.blocks.len();
@@ -717,9 +721,9 @@ pub fn build_problem(
                         .transpose()?
                         .unwrap_or(centroid.1),
                 ),
-                fx: finite(&field("fx"), load.fx)?,
-                fy: finite(&field("fy"), load.fy)?,
-                moment: finite(&field("moment"), load.moment)?,
+                fx: number(&field("fx"), load.fx, -MAX_FORCE, false, MAX_FORCE)?,
+                fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
+                moment: number(&field("moment"), load.moment, -MAX_FORCE, false, MAX_FORCE)?,
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
@@ -797,6 +801,13 @@ fn build_assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
         ));
     };
     count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
+    for (b, block) in blocks.iter().enumerate() {
+        for (c, [x, y]) in block.corners.iter().enumerate() {
+            let field = format!("geometry.blocks[{b}].corners[{c}]");
+            number(&field, *x, -MAX_LENGTH, false, MAX_LENGTH)?;
+            number(&field, *y, -MAX_LENGTH, false, MAX_LENGTH)?;
+        }
+    }
     let corners: Vec<[(f64, f64); 4]> = blocks
         .iter()
         .map(|b| b.corners.map(|[x, y]| (x, y)))

@@ -13,7 +13,7 @@ use utoipa::ToSchema;
 use crate::arch::{
     active_constraints, arch_error, circular_arch, friction_coefficient, hinges, interface_limits,
     ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto, VoussoirDto, MAX_LENGTH,
-    MIN_LENGTH,
+    MAX_MAGNITUDE, MIN_LENGTH,
 };
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::number;
@@ -68,7 +68,7 @@ pub struct MinimumThicknessRequest {
     pub geometry: CircularGeometryDto,
     /// Unit weight γ (> 0). Defaults to 1.
     #[serde(default = "unit")]
-    #[schema(exclusive_minimum = 0.0, default = 1.0)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0)]
     pub unit_weight: f64,
     /// Limits on the interface resultants. Defaults to Heyman's.
     #[serde(default)]
@@ -155,7 +155,7 @@ pub async fn minimum_thickness(
     };
     let arch = circular_arch(&geometry)?
         .ok_or_else(|| ApiError::invalid("geometry.kind", "must be circular"))?;
-    let unit_weight = number("unit_weight", request.unit_weight, 0.0, true, f64::MAX)?;
+    let unit_weight = number("unit_weight", request.unit_weight, 0.0, true, MAX_MAGNITUDE)?;
     let limits = interface_limits(&request.interface_limits)?;
     let friction = friction_coefficient(request.friction_coefficient)?;
     let tolerance = number("tolerance", request.tolerance, 1e-9, false, 1e-2)?;

@@ -15,7 +15,7 @@ use thrustline_solver::slope::{
 };
 use utoipa::ToSchema;
 
-use crate::arch::{MAX_LENGTH, MIN_LENGTH};
+use crate::arch::{MAX_FORCE, MAX_LENGTH, MAX_MAGNITUDE, MIN_LENGTH};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::validation::{count, finite, number};
 use crate::AppState;
@@ -57,11 +57,11 @@ pub struct CircleDto {
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SoilDto {
-    /// Unit weight γ (> 0).
-    #[schema(exclusive_minimum = 0.0, example = 10.0)]
+    /// Unit weight γ, 0 < γ ≤ 1e12.
+    #[schema(exclusive_minimum = 0.0, maximum = 1e12, example = 10.0)]
     pub unit_weight: f64,
-    /// Effective cohesion c' (≥ 0; > 0 when the friction angle is 0).
-    #[schema(minimum = 0.0, example = 6.096)]
+    /// Effective cohesion c', 0 ≤ c' ≤ 1e12 (> 0 when the friction angle is 0).
+    #[schema(minimum = 0.0, maximum = 1e12, example = 6.096)]
     pub cohesion: f64,
     /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9.
     #[schema(minimum = 0.0, maximum = 89.9, example = 40.0)]
@@ -538,6 +538,7 @@ fn solve_target(
     time_limit: std::time::Duration,
 ) -> Result<Solved, ApiError> {
     let settings = SpencerSettings::default();
+    let started = std::time::Instant::now();
     let (circle, search) = match target {
         Target::Circle(circle) => (circle, None),
         Target::Search((grid, problem)) => {
@@ -582,6 +583,11 @@ fn solve_target(
             factor_of_safety: solution.factor_of_safety,
         });
         while let Some(doubled) = parts.slices_doubled(problem.geometry.slices.len()) {
+            if started.elapsed() > time_limit {
+                return Err(ApiError::TimedOut {
+                    seconds: time_limit.as_secs_f64(),
+                });
+            }
             let finer = build(doubled)?;
             let finer_solution = solve_spencer(&finer, &settings);
             refinement.push(SliceRefinementDto {
@@ -718,8 +724,14 @@ fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
     )?;
     let slices = count("slices", request.slices, 1, MAX_SLICES)?;
     let soil = &request.soil;
-    number("soil.unit_weight", soil.unit_weight, 0.0, true, f64::MAX)?;
-    number("soil.cohesion", soil.cohesion, 0.0, false, f64::MAX)?;
+    number(
+        "soil.unit_weight",
+        soil.unit_weight,
+        0.0,
+        true,
+        MAX_MAGNITUDE,
+    )?;
+    number("soil.cohesion", soil.cohesion, 0.0, false, MAX_MAGNITUDE)?;
     number(
         "soil.friction_angle_deg",
         soil.friction_angle_deg,
@@ -763,9 +775,9 @@ fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
             count(&field("slice"), load.slice, 1, slices)?;
             Ok(ExternalLoad {
                 slice: load.slice - 1,
-                fx: finite(&field("fx"), load.fx)?,
-                fy: finite(&field("fy"), load.fy)?,
-                moment: finite(&field("moment"), load.moment)?,
+                fx: number(&field("fx"), load.fx, -MAX_FORCE, false, MAX_FORCE)?,
+                fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
+                moment: number(&field("moment"), load.moment, -MAX_FORCE, false, MAX_FORCE)?,
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
