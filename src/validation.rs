@@ -17,18 +17,31 @@ pub fn number(
     }
     let lower = match (min_open, min == f64::MIN) {
         (_, true) => String::new(),
-        (true, false) => format!("{min} < "),
-        (false, false) => format!("{min} ≤ "),
+        (true, false) => format!("{} < ", readable(min)),
+        (false, false) => format!("{} ≤ ", readable(min)),
     };
     let upper = if max == f64::MAX {
         String::new()
     } else {
-        format!(" ≤ {max}")
+        format!(" ≤ {}", readable(max))
     };
     Err(ApiError::invalid(
         field,
-        format!("{value} is out of range: allowed is a finite number {lower}{field}{upper}"),
+        format!(
+            "{} is out of range: allowed is a finite number {lower}{field}{upper}",
+            readable(value)
+        ),
     ))
+}
+
+/// A number as a person reads it: plain when moderate, in e-notation when very large or small.
+pub fn readable(value: f64) -> String {
+    let magnitude = value.abs();
+    if value.is_finite() && value != 0.0 && !(1e-4..1e6).contains(&magnitude) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
 }
 
 /// Any finite number.
@@ -65,6 +78,11 @@ mod tests {
             "slices: 0 is out of range: allowed is an integer 1 ≤ slices ≤ 10000"
         );
         assert!(finite("x", f64::NAN).is_err());
+        let err = number("soil.unit_weight", 3.4e38, 0.0, true, 1e12).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "soil.unit_weight: 3.4e38 is out of range: allowed is a finite number 0 < soil.unit_weight ≤ 1e12"
+        );
         assert!(finite("x", f64::INFINITY).is_err());
     }
 }
