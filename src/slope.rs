@@ -548,9 +548,15 @@ fn solve_target(
             };
             let found = search_critical_circle(&problem, grid, &settings);
             if found.timed_out {
-                return Err(ApiError::TimedOut {
-                    seconds: time_limit.as_secs_f64(),
-                });
+                // The request asks for more work than one solve may take: the client's to change.
+                return Err(ApiError::invalid(
+                    "search",
+                    format!(
+                        "the search did not finish within the solve time limit of {} s: use a \
+                         smaller grid, fewer slices or no lower_end_factor_max",
+                        time_limit.as_secs_f64()
+                    ),
+                ));
             }
             let circle = found.circle.ok_or_else(|| {
                 ApiError::invalid(
@@ -584,9 +590,14 @@ fn solve_target(
         });
         while let Some(doubled) = parts.slices_doubled(problem.geometry.slices.len()) {
             if started.elapsed() > time_limit {
-                return Err(ApiError::TimedOut {
-                    seconds: time_limit.as_secs_f64(),
-                });
+                return Err(ApiError::invalid(
+                    "slice_tolerance",
+                    format!(
+                        "the refinement did not settle within the solve time limit of {} s: use \
+                         a larger slice_tolerance",
+                        time_limit.as_secs_f64()
+                    ),
+                ));
             }
             let finer = build(doubled)?;
             let finer_solution = solve_spencer(&finer, &settings);

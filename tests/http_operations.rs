@@ -137,7 +137,7 @@ async fn overload_is_503_with_retry_after_not_a_queue() {
 }
 
 #[tokio::test]
-async fn a_search_over_its_time_limit_is_503() {
+async fn a_search_over_its_time_limit_is_422() {
     let server = Server::start_with(thrustline::Settings {
         solve_timeout: std::time::Duration::from_millis(1),
         ..Default::default()
@@ -150,7 +150,7 @@ async fn a_search_over_its_time_limit_is_503() {
     let (status, content_type, body) = server.post("/slope/spencer", &body).await;
     assert_eq!(
         (status, content_type.as_str()),
-        (503, "application/problem+json"),
+        (422, "application/problem+json"),
         "{body}"
     );
     assert!(body["detail"].as_str().unwrap().contains("did not finish"));
