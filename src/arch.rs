@@ -496,18 +496,7 @@ async fn solve_dead_load_request(
         request.friction_coefficient,
         &[],
     )?;
-    let settings = LimitSettings {
-        time_limit_secs: state.solve_time_limit_secs(),
-        formulation: request.formulation.solver(),
-        tolerance: number(
-            "solver_tolerance",
-            request.solver_tolerance,
-            1e-12,
-            false,
-            1e-4,
-        )?,
-        ..LimitSettings::default()
-    };
+    let settings = limit_settings(state, request.formulation, request.solver_tolerance)?;
     let ((problem, solution), elapsed) = state
         .pool
         .run(move || {
@@ -595,18 +584,7 @@ async fn solve_live_load_request(
         request.friction_coefficient,
         &request.loads,
     )?;
-    let settings = LimitSettings {
-        time_limit_secs: state.solve_time_limit_secs(),
-        formulation: request.formulation.solver(),
-        tolerance: number(
-            "solver_tolerance",
-            request.solver_tolerance,
-            1e-12,
-            false,
-            1e-4,
-        )?,
-        ..LimitSettings::default()
-    };
+    let settings = limit_settings(state, request.formulation, request.solver_tolerance)?;
     let ((problem, solution), elapsed) = state
         .pool
         .run(move || {
@@ -632,6 +610,20 @@ async fn solve_live_load_request(
         ),
     };
     Ok((problem, response))
+}
+
+/// The solver settings a request asks for, within the service's time limit.
+fn limit_settings(
+    state: &AppState,
+    formulation: FormulationDto,
+    tolerance: f64,
+) -> Result<LimitSettings, ApiError> {
+    Ok(LimitSettings {
+        time_limit_secs: state.solve_time_limit_secs(),
+        formulation: formulation.solver(),
+        tolerance: number("solver_tolerance", tolerance, 1e-12, false, 1e-4)?,
+        ..LimitSettings::default()
+    })
 }
 
 /// Whether the request's voussoirs are annular sectors (drawn with arcs).
