@@ -165,6 +165,7 @@ pub async fn minimum_thickness(
             time_limit_secs: state.solve_time_limit_secs(),
             ..LimitSettings::default()
         },
+        time_limit: Some(state.solve_time_limit),
         ..MinimumThicknessSettings::default()
     };
     let (result, elapsed) = state
@@ -230,7 +231,7 @@ pub async fn minimum_thickness(
                 match failure {
                     SolverFailure::ReducedAccuracy => "reduced accuracy",
                     SolverFailure::MaxIterations => "iteration limit",
-                    SolverFailure::MaxTime => "time limit",
+                    SolverFailure::MaxTime => "the solve time limit was reached",
                     SolverFailure::Numerical => "numerical error",
                     SolverFailure::Infeasible => "reported infeasible",
                 }

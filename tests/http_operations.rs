@@ -155,3 +155,35 @@ async fn a_search_over_its_time_limit_is_422() {
     );
     assert!(body["detail"].as_str().unwrap().contains("did not finish"));
 }
+
+#[tokio::test]
+async fn graceful_shutdown_finishes_the_request_in_flight() {
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    let server = tokio::spawn(thrustline::serve(
+        listener,
+        thrustline::Settings::default(),
+        async {
+            let _ = stopped.await;
+        },
+    ));
+    let client = reqwest::Client::new();
+    let url = format!("http://{addr}/arch/dead-load");
+    let request = tokio::spawn(async move { client.post(&url).json(&slow_arch()).send().await });
+    tokio::time::sleep(std::time::Duration::from_millis(150)).await;
+    stop.send(()).unwrap();
+    let response = request.await.unwrap().unwrap();
+    assert_eq!(response.status().as_u16(), 200);
+    let body: serde_json::Value = response.json().await.unwrap();
+    assert_eq!(body["dead_load_factor"], 0.0);
+    // The server has stopped: the task ends and new connections are refused.
+    tokio::time::timeout(std::time::Duration::from_secs(10), server)
+        .await
+        .unwrap()
+        .unwrap()
+        .unwrap();
+    assert!(reqwest::get(format!("http://{addr}/healthz"))
+        .await
+        .is_err());
+}

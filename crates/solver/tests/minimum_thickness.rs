@@ -148,3 +148,24 @@ fn horseshoe_arch_needs_more_than_the_semicircle() {
     assert_eq!(mechanism.hinges[0].interface, 0);
     assert_eq!(mechanism.hinges[4].interface, 100);
 }
+
+#[test]
+fn a_search_past_its_time_limit_stops_and_says_so() {
+    let settings = MinimumThicknessSettings {
+        time_limit: Some(std::time::Duration::ZERO),
+        ..MinimumThicknessSettings::default()
+    };
+    let m = solve_minimum_thickness(
+        &arch(100, 0.0),
+        1.0,
+        InterfaceLimits::heyman(),
+        None,
+        &settings,
+    )
+    .unwrap();
+    assert_eq!(
+        m.outcome,
+        MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime)
+    );
+    assert_eq!(m.evaluations, 0);
+}

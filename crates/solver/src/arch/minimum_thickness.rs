@@ -28,6 +28,9 @@ pub struct MinimumThicknessSettings {
     pub limit: LimitSettings,
     /// Largest number of dead-load evaluations. Defaults to 100.
     pub max_evaluations: usize,
+    /// Wall-time limit of the whole search; past it the search stops with
+    /// [`MinimumThicknessOutcome::SolverFailed`] (`MaxTime`). Defaults to none.
+    pub time_limit: Option<std::time::Duration>,
 }
 
 impl Default for MinimumThicknessSettings {
@@ -36,6 +39,7 @@ impl Default for MinimumThicknessSettings {
             tolerance: 1e-6,
             limit: LimitSettings::default(),
             max_evaluations: 100,
+            time_limit: None,
         }
     }
 }
@@ -96,10 +100,14 @@ struct MarginOfThickness<'a> {
     settings: &'a LimitSettings,
     evaluations: usize,
     iterations: u32,
+    deadline: Option<Instant>,
 }
 
 impl MarginOfThickness<'_> {
     fn at(&mut self, thickness: f64) -> Result<Evaluation, Stop> {
+        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+            return Err(Stop::Solver(SolverFailure::MaxTime));
+        }
         let arch = self.arch.with_thickness(thickness).map_err(Stop::Input)?;
         let problem = ArchProblem::new(
             arch.assembly(),
@@ -138,6 +146,7 @@ pub fn solve_minimum_thickness(
         settings: &settings.limit,
         evaluations: 0,
         iterations: 0,
+        deadline: settings.time_limit.map(|limit| start + limit),
     };
     let outcome = match search(&mut delta, arch.radius(), settings) {
         Ok(outcome) => outcome,
