@@ -319,6 +319,9 @@ pub struct SpencerSolution {
 #[derive(Debug, Clone, Copy)]
 struct SliceTerms {
     alpha: f64,
+    /// sin α and cos α, so that the angle differences need no trigonometry per evaluation.
+    sin_alpha: f64,
+    cos_alpha: f64,
     a_t: f64,
     a_n: f64,
     pore_force: f64,
@@ -367,6 +370,8 @@ impl Equations {
                 let a_n = fx * sin_a - fy * cos_a;
                 SliceTerms {
                     alpha: s.base_inclination_rad,
+                    sin_alpha: sin_a,
+                    cos_alpha: cos_a,
                     a_t: -fx * cos_a - fy * sin_a,
                     a_n,
                     pore_force,
@@ -398,8 +403,10 @@ impl Equations {
     }
 
     /// Q and its derivatives for one slice; `None` if m_α ≤ 0.
-    fn q(t: &SliceTerms, f: f64, theta: f64) -> (f64, f64, f64, f64) {
-        let (d, c) = (t.alpha - theta).sin_cos();
+    fn q(t: &SliceTerms, f: f64, (sin_t, cos_t): (f64, f64)) -> (f64, f64, f64, f64) {
+        // sin(α−θ) and cos(α−θ) from the stored sin α, cos α.
+        let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
+        let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
         let numerator = t.a_t - t.resistance / f;
         let m_alpha = c + d * t.tan_phi / f;
         let q = numerator / m_alpha;
@@ -419,7 +426,7 @@ impl Equations {
             min_m_alpha: f64::INFINITY,
         };
         for t in &self.terms {
-            let (q, dq_df, dq_dt, m_alpha) = Self::q(t, f, theta);
+            let (q, dq_df, dq_dt, m_alpha) = Self::q(t, f, (sin_t, cos_t));
             let arm = t.arm.0 * sin_t - t.arm.1 * cos_t;
             let d_arm = t.arm.0 * cos_t + t.arm.1 * sin_t;
             r.force += q;
@@ -441,8 +448,10 @@ impl Equations {
     /// The interval of F on which every m_α(F, θ) is positive, clipped to [`F_RANGE`].
     fn admissible_f(&self, theta: f64) -> Option<(f64, f64)> {
         let (mut lo, mut hi) = F_RANGE;
+        let (sin_t, cos_t) = theta.sin_cos();
         for t in &self.terms {
-            let (d, c) = (t.alpha - theta).sin_cos();
+            let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
+            let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
             let dt = d * t.tan_phi;
             // m_α = c + dt/F > 0
             if c > 0.0 {
@@ -736,7 +745,7 @@ fn describe(
     let (mut z_left, mut y_left) = (0.0, g.lower_end.1);
     let n = g.slices.len();
     for (i, (slice, t)) in g.slices.iter().zip(&equations.terms).enumerate() {
-        let (q, _, _, m_alpha) = Equations::q(t, f, theta);
+        let (q, _, _, m_alpha) = Equations::q(t, f, (sin_t, cos_t));
         let weight = soil.unit_weight * slice.area;
         let pore_pressure = soil.pore_pressure_ratio * soil.unit_weight * slice.height_middle;
         // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
