@@ -315,7 +315,7 @@ async fn slope_drawing_with_the_f_map() {
         .unwrap();
     assert_eq!(response.status().as_u16(), 200);
     let svg = response.text().await.unwrap();
-    assert!(svg.contains("the critical slip circle") && svg.contains("F map over centres"));
+    assert!(svg.contains("the critical slip circle") && svg.contains("F over centres"));
     // The embankment and at most 6 × 5 map cells; 20 slice sides; the centre dot.
     let polygons = svg.matches("<polygon").count();
     assert!((2..=31).contains(&polygons), "{polygons}");
