@@ -306,12 +306,17 @@ pub enum SpencerStatusDto {
     /// No (F, θ) with positive denominators satisfies both equations (F in 1e-6…1e6,
     /// |θ| < 89°); no factor of safety is reported.
     NoSolution,
+    /// φ' = 0: no parallel inter-slice forces meet force equilibrium, but moment equilibrium
+    /// alone fixes F exactly for a circle (the base shear c'·l/F does not depend on the normal
+    /// forces): F is reported, θ and the line of thrust are not; slice forces are Bishop's.
+    MomentOnly,
 }
 
 /// Spencer's factor of safety, the inter-slice inclination and everything behind them.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct SpencerResponse {
-    /// Whether both equilibrium equations were solved.
+    /// Whether both equilibrium equations were solved (false with `status: moment_only`, which
+    /// still reports F).
     pub converged: bool,
     /// How the solution ended.
     pub status: SpencerStatusDto,
@@ -844,21 +849,25 @@ fn response_from(
     solve_time_ms: f64,
 ) -> SpencerResponse {
     let g = &problem.geometry;
-    let converged = match solution.status {
-        SpencerStatus::Converged => true,
-        SpencerStatus::NoSolution => false,
-    };
-    let status = match solution.status {
-        SpencerStatus::Converged => SpencerStatusDto::Converged,
-        SpencerStatus::NoSolution => SpencerStatusDto::NoSolution,
+    let (converged, status, has_forces) = match solution.status {
+        SpencerStatus::Converged => (true, SpencerStatusDto::Converged, true),
+        SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
+        SpencerStatus::MomentOnly => (false, SpencerStatusDto::MomentOnly, true),
     };
     let mut warnings = Vec::new();
-    if !converged {
-        warnings.push(
+    match solution.status {
+        SpencerStatus::Converged => {}
+        SpencerStatus::NoSolution => warnings.push(
             "no (F, θ) with positive m_α satisfies both equilibrium equations for this circle; \
              no factor of safety is reported"
                 .to_owned(),
-        );
+        ),
+        SpencerStatus::MomentOnly => warnings.push(
+            "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
+             moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
+             slice forces are Bishop's (θ = 0)"
+                .to_owned(),
+        ),
     }
     let one_based = |list: &[usize]| {
         list.iter()
@@ -895,7 +904,7 @@ fn response_from(
                 .join(", ")
         ));
     }
-    let slices = if converged {
+    let slices = if has_forces {
         g.slices
             .iter()
             .zip(&solution.slice_forces)

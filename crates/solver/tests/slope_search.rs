@@ -240,3 +240,42 @@ fn a_search_past_its_time_limit_says_so() {
     assert!(s.timed_out);
     assert!(s.grid.factors.iter().flatten().all(Option::is_none));
 }
+
+#[test]
+fn undrained_circle_without_parallel_forces_reports_the_moment_f() {
+    // φ' = 0, centre straight above the toe: F_f(θ) > F_m for every θ (no Spencer solution),
+    // but moment equilibrium alone fixes F. Independent check: with φ' = 0, F = Σ c'·l·d /
+    // Σ W·(x_c − x_b)… computed here from the slices: resisting moment of c'·l at the chord
+    // distance d over the driving moment of the weights about the centre (1e-9 relative).
+    let (h, c, gamma) = (10.0, 19.497667133576616, 10.0);
+    let p = SlopeProblem::new(
+        Embankment::new(h, 13.44183509448031).unwrap(),
+        SlipCircle {
+            x: 0.0,
+            y: 11.50844243885352,
+            lower_end_factor: 0.0,
+        },
+        NonZeroUsize::new(40).unwrap(),
+        Soil::new(gamma, c, 0.0, 0.0).unwrap(),
+        Seismic::default(),
+        Vec::new(),
+    )
+    .unwrap();
+    let s = solve_spencer(&p, &SpencerSettings::default());
+    assert_eq!(s.status, SpencerStatus::MomentOnly);
+    assert!(s.theta_rad.is_none() && s.thrust_line.is_empty());
+    let g = &p.geometry;
+    let (mut resisting, mut driving) = (0.0, 0.0);
+    for slice in &g.slices {
+        let (xb, yb) = slice.base_middle;
+        let (dx, dy) = (xb - g.centre.0, yb - g.centre.1);
+        // Shear c·l along the chord (up the slope) about the centre, and the weight through
+        // the base middle.
+        let (sin_a, cos_a) = slice.base_inclination_rad.sin_cos();
+        resisting += c * slice.base_length * (dx * sin_a - dy * cos_a);
+        driving += gamma * slice.area * dx;
+    }
+    let by_hand = resisting / driving;
+    let f = s.factor_of_safety.unwrap();
+    assert!((f - by_hand).abs() < 1e-9 * by_hand, "{f} vs {by_hand}");
+}

@@ -42,6 +42,9 @@ pub const SMALL_DENOMINATOR: f64 = 0.2;
 /// A scaled residual this small is rounding: the equations are solved.
 const ROUNDING_RESIDUAL: f64 = 1e3 * f64::EPSILON;
 
+/// The largest scaled residual (force / ΣW, moment / (ΣW·R)) accepted at convergence.
+const SOLVED_RESIDUAL: f64 = 1e-9;
+
 /// Range of admissible factors of safety searched by the bracketing steps.
 const F_RANGE: (f64, f64) = (1e-6, 1e6);
 
@@ -249,6 +252,12 @@ pub enum SpencerStatus {
     /// No (F, θ) with positive denominators satisfies both equations on the searched range
     /// (F in 1e-6…1e6, |θ| < 89°).
     NoSolution,
+    /// φ' = 0 and no parallel inter-slice forces satisfy force equilibrium, but the moment
+    /// equation alone fixes F: with φ' = 0 the base shear c'·l/F does not depend on the normal
+    /// forces, so moment equilibrium about the centre gives F whatever the inter-slice forces
+    /// (the classical φ = 0 analysis). F is reported, θ is not; per-slice forces are Bishop's
+    /// (θ = 0) and there is no line of thrust.
+    MomentOnly,
 }
 
 /// Forces on one slice at the solution.
@@ -402,6 +411,11 @@ impl Equations {
         }
     }
 
+    /// Whether φ' = 0 (then the moment equation alone fixes F).
+    fn is_frictionless(&self) -> bool {
+        self.terms.iter().all(|t| t.tan_phi == 0.0)
+    }
+
     /// Q and its derivatives for one slice; `None` if m_α ≤ 0.
     fn q(t: &SliceTerms, f: f64, (sin_t, cos_t): (f64, f64)) -> (f64, f64, f64, f64) {
         // sin(α−θ) and cos(α−θ) from the stored sin α, cos α.
@@ -533,7 +547,14 @@ pub fn solve_spencer_factor(
     problem: &SlopeProblem,
     settings: &SpencerSettings,
 ) -> Option<(f64, f64)> {
-    solve_equations(&Equations::new(problem), settings).0
+    let equations = Equations::new(problem);
+    let (solution, bishop, _, _) = solve_equations(&equations, settings);
+    match (solution, bishop) {
+        (Some(solution), _) => Some(solution),
+        // φ' = 0: the moment equation alone is exact (see SpencerStatus::MomentOnly).
+        (None, Some(f)) if equations.is_frictionless() => Some((f, f64::NAN)),
+        (None, _) => None,
+    }
 }
 
 /// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
@@ -569,6 +590,22 @@ pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> Spen
             iterations,
             used_fallback,
         ),
+        None if equations.is_frictionless() && bishop.is_some() => {
+            let f = bishop.unwrap_or(f64::NAN);
+            let mut s = describe(
+                problem,
+                &equations,
+                f,
+                0.0,
+                bishop,
+                iterations,
+                used_fallback,
+            );
+            s.status = SpencerStatus::MomentOnly;
+            s.theta_rad = None;
+            s.thrust_line.clear();
+            s
+        }
         None => SpencerSolution {
             status: SpencerStatus::NoSolution,
             factor_of_safety: None,
@@ -651,11 +688,16 @@ fn newton(
         let Some((f_new, theta_new, r_new)) = accepted else {
             return (current <= ROUNDING_RESIDUAL).then_some((f, theta));
         };
-        let converged = (f_new - f).abs() <= settings.tolerance * f_new.max(1.0)
+        let settled = (f_new - f).abs() <= settings.tolerance * f_new.max(1.0)
             && (theta_new - theta).abs() <= settings.tolerance;
         (f, theta, r) = (f_new, theta_new, r_new);
-        if converged || merit(&r) == 0.0 {
+        if merit(&r) == 0.0 {
             return Some((f, theta));
+        }
+        if settled {
+            // Small steps alone can mean a minimum of the residual that is not a root (the
+            // line search shortens the steps there): only a vanishing residual is a solution.
+            return (merit(&r) <= SOLVED_RESIDUAL).then_some((f, theta));
         }
     }
     // Newton stalled short of the tolerance: accept only if the residual is at rounding level.
@@ -685,36 +727,56 @@ fn fallback(
         }
     };
     let origin = difference(0.0, &mut evaluations);
+    // A bracket [a, b] of F_f − F_m: Brent, then Newton on both equations from there.
+    let mut solve_in = |a: f64, fa: f64, b: f64, fb: f64, evaluations: &mut usize| {
+        let root = brent(|t| difference(t, evaluations), a, b, fa, fb, 1e-13, 200)?;
+        let guess = (equations.f_at_theta(root.x, false, evaluations)?, root.x);
+        newton(equations, guess, settings, iterations)
+    };
     // The last finite value on each side of 0.
     let (mut up, mut down) = ((0.0f64, origin), (0.0f64, origin));
+    // Whether the edge after the last finite value was already probed, per side.
+    let mut probed = [false, false];
     let steps = (LIMIT_DEG / STEP_DEG) as usize;
     for i in 1..=steps {
         for side in [1.0, -1.0] {
+            let probed = &mut probed[usize::from(side < 0.0)];
             let theta = (side * STEP_DEG * i as f64).to_radians();
             let value = difference(theta, &mut evaluations);
             let last = if side > 0.0 { &mut up } else { &mut down };
-            if value.is_finite() && last.1.is_finite() && value * last.1 <= 0.0 {
-                let (a, fa) = *last;
-                let root = brent(
-                    |t| difference(t, &mut evaluations),
-                    a,
-                    theta,
-                    fa,
-                    value,
-                    1e-13,
-                    200,
-                );
-                let start = root
-                    .and_then(|r| Some((equations.f_at_theta(r.x, false, &mut evaluations)?, r.x)));
-                if let Some(solution) =
-                    start.and_then(|guess| newton(equations, guess, settings, iterations))
-                {
+            let (a, fa) = *last;
+            if value.is_finite() && fa.is_finite() && value * fa <= 0.0 {
+                if let Some(solution) = solve_in(a, fa, theta, value, &mut evaluations) {
                     *iterations += evaluations;
                     return Some(solution);
                 }
+            } else if !value.is_finite() && fa.is_finite() && !*probed {
+                *probed = true;
+                // The curves end between a and θ (an m_α reaches zero): a root can hide just
+                // before that edge, so find the edge and look there.
+                let (mut inside, mut outside) = (a, theta);
+                let mut edge_value = fa;
+                for _ in 0..40 {
+                    let middle = 0.5 * (inside + outside);
+                    let v = difference(middle, &mut evaluations);
+                    if v.is_finite() {
+                        (inside, edge_value) = (middle, v);
+                    } else {
+                        outside = middle;
+                    }
+                }
+                if edge_value * fa <= 0.0 && inside != a {
+                    if let Some(solution) = solve_in(a, fa, inside, edge_value, &mut evaluations) {
+                        *iterations += evaluations;
+                        return Some(solution);
+                    }
+                }
+                // Carry on from the edge: a later finite stretch is compared with it.
+                *last = (inside, edge_value);
             }
             if value.is_finite() {
                 *last = (theta, value);
+                *probed = false;
             }
         }
     }
@@ -984,6 +1046,8 @@ mod tests {
         match s.status {
             SpencerStatus::Converged => assert!(s.residual < 1e-9),
             SpencerStatus::NoSolution => assert!(s.factor_of_safety.is_none()),
+            // φ' = 40° here: the moment-only answer is for φ' = 0 alone.
+            SpencerStatus::MomentOnly => panic!("moment-only answer with friction"),
         }
     }
 
