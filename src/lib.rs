@@ -105,6 +105,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))
         .merge(api)
         .fallback(not_found)
+        .method_not_allowed_fallback(method_not_allowed)
         .layer(axum::middleware::from_fn_with_state(state, auth::require_token))
         .layer(DefaultBodyLimit::max(settings.body_limit))
         .layer(CatchPanicLayer::custom(|_| {
@@ -182,6 +183,13 @@ impl MakeRequestId for SequentialRequestId {
         HeaderValue::from_str(&format!("{}-{n}", self.prefix))
             .ok()
             .map(RequestId::new)
+    }
+}
+
+async fn method_not_allowed(method: Method, uri: axum::http::Uri) -> error::ApiError {
+    error::ApiError::BadRequest {
+        status: axum::http::StatusCode::METHOD_NOT_ALLOWED,
+        detail: format!("{method} is not allowed on {}", uri.path()),
     }
 }
 
