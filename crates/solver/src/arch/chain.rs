@@ -16,7 +16,7 @@
 //! at P_q and P_s, relative sliding) are E_kᵀ ΔV_k for the relative twist ΔV_k of the two blocks,
 //! so a mechanism's block twists are the running sums of ΔV_k = D_kᵀ d_k from the first support.
 
-use super::equilibrium::LiveLoad;
+use super::equilibrium::{force_scale, LiveLoad};
 use super::geometry::Assembly;
 
 type Matrix3 = [[f64; 3]; 3];
@@ -60,7 +60,7 @@ impl ChainStatics {
     /// The statics of `assembly` with dead weight γ·area and the given live loads, in the
     /// scaling of [`super::equilibrium::assemble_equilibrium`] (same W and L).
     pub fn new(assembly: &Assembly, unit_weight: f64, live_loads: &[LiveLoad]) -> Self {
-        let force_scale = (unit_weight * assembly.total_area()).max(f64::MIN_POSITIVE);
+        let force_scale = force_scale(assembly, unit_weight);
         let length_scale = assembly.length_scale();
         let corners = assembly.blocks.len() * 4;
         let origin = assembly

@@ -51,6 +51,11 @@ fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
     a.0 * b.1 - a.1 * b.0
 }
 
+/// The force scale W of the non-dimensional equations: the total dead weight.
+pub(crate) fn force_scale(assembly: &Assembly, unit_weight: f64) -> f64 {
+    (unit_weight * assembly.total_area()).max(f64::MIN_POSITIVE)
+}
+
 /// Assembles H, w and p for `assembly` with dead weight `unit_weight`·area per block.
 pub fn assemble_equilibrium(
     assembly: &Assembly,
@@ -58,7 +63,7 @@ pub fn assemble_equilibrium(
     live_loads: &[LiveLoad],
 ) -> Equilibrium {
     let n = assembly.blocks.len();
-    let force_scale = (unit_weight * assembly.total_area()).max(f64::MIN_POSITIVE);
+    let force_scale = force_scale(assembly, unit_weight);
     let length_scale = assembly.length_scale();
     let mut triplets = Vec::with_capacity(18 * n);
     for (k, interface) in assembly.interfaces.iter().enumerate() {

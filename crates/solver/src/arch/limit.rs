@@ -40,7 +40,9 @@ use clarabel::solver::{
 };
 
 use super::chain::ChainStatics;
-use super::equilibrium::{assemble_equilibrium, Equilibrium, LiveLoad, RESULTANTS_PER_INTERFACE};
+use super::equilibrium::{
+    assemble_equilibrium, force_scale, Equilibrium, LiveLoad, RESULTANTS_PER_INTERFACE,
+};
 use super::geometry::Assembly;
 use super::mechanism::{read_mechanism, Bound, Mechanism, Resultant};
 use super::ArchError;
@@ -651,7 +653,7 @@ struct Context<'a> {
 impl<'a> Context<'a> {
     fn new(problem: &'a ArchProblem, settings: &'a LimitSettings) -> Self {
         let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
-        let force_scale = (gamma * a.total_area()).max(f64::MIN_POSITIVE);
+        let force_scale = force_scale(a, gamma);
         let model = match settings.formulation {
             Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, loads)),
             Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, loads)),
