@@ -70,10 +70,12 @@ pub enum ApiError {
     /// The body is not JSON, or not the JSON of this request type.
     #[error("{detail}")]
     BadRequest {
-        /// Status to answer with (400, 413, 415 or 422).
+        /// Status to answer with (400, 404, 405, 413, 415 or 422).
         status: StatusCode,
         /// The message for the client.
         detail: String,
+        /// The field serde named, for a body that is JSON but not this request.
+        field: Option<String>,
     },
     /// The request is well-formed but a value is out of range or inconsistent.
     #[error("{field}: {detail}")]
@@ -127,9 +129,7 @@ impl ApiError {
     fn problem(&self) -> Problem {
         let status = self.status();
         let (detail, field) = match self {
-            Self::Invalid { field, detail } if detail.starts_with("Failed to deserialize") => {
-                (detail.clone(), Some(field.clone()))
-            }
+            Self::BadRequest { detail, field, .. } => (detail.clone(), field.clone()),
             Self::Invalid { field, detail } => (format!("{field}: {detail}"), Some(field.clone())),
             Self::Internal(_) => (
                 "the server failed to complete the calculation".to_owned(),
@@ -180,12 +180,13 @@ impl From<JsonRejection> for ApiError {
             other => other.status(),
         };
         let detail = rejection.body_text();
-        match data_error_field(&detail) {
-            Some(field) if status == StatusCode::UNPROCESSABLE_ENTITY => Self::Invalid {
-                field: field.to_owned(),
-                detail: detail.clone(),
-            },
-            _ => Self::BadRequest { status, detail },
+        let field = (status == StatusCode::UNPROCESSABLE_ENTITY)
+            .then(|| data_error_field(&detail).map(str::to_owned))
+            .flatten();
+        Self::BadRequest {
+            status,
+            detail,
+            field,
         }
     }
 }

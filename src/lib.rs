@@ -190,6 +190,7 @@ async fn method_not_allowed(method: Method, uri: axum::http::Uri) -> error::ApiE
     error::ApiError::BadRequest {
         status: axum::http::StatusCode::METHOD_NOT_ALLOWED,
         detail: format!("{method} is not allowed on {}", uri.path()),
+        field: None,
     }
 }
 
@@ -197,6 +198,7 @@ async fn not_found(uri: axum::http::Uri) -> error::ApiError {
     error::ApiError::BadRequest {
         status: axum::http::StatusCode::NOT_FOUND,
         detail: format!("no route for {}", uri.path()),
+        field: None,
     }
 }
 
