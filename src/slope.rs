@@ -464,23 +464,13 @@ async fn solve_request(
     );
     let mut response = response_from(&problem, &solution, elapsed.as_secs_f64() * 1e3);
     response.curves = curves;
-    if !refinement.is_empty() {
-        let settled = refinement.len() >= 2
-            && {
-                let tail: Vec<Option<f64>> = refinement
-                    .iter()
-                    .rev()
-                    .take(2)
-                    .map(|r| r.factor_of_safety)
-                    .collect();
-                matches!((tail[0], tail[1]), (Some(a), Some(b)) if (a - b).abs() <= request_tolerance * a)
-            };
-        if !settled {
+    if let Some(refinement) = refinement {
+        if !refinement.settled {
             response.warnings.push(format!(
                 "slice_tolerance {request_tolerance} not reached before {MAX_SLICES} slices"
             ));
         }
-        response.slice_refinement = Some(refinement);
+        response.slice_refinement = Some(refinement.steps);
     }
     if let Some(search) = search {
         if search.is_on_edge {
@@ -532,8 +522,14 @@ type Solved = (
     SpencerSolution,
     Option<SearchSolution>,
     Option<CurvesDto>,
-    Vec<SliceRefinementDto>,
+    Option<SliceRefinement>,
 );
+
+/// The steps of a slice refinement and whether F settled within the tolerance.
+struct SliceRefinement {
+    steps: Vec<SliceRefinementDto>,
+    settled: bool,
+}
 
 /// Runs on the blocking pool: the search if asked, then the full solution of the circle.
 fn solve_target(
@@ -586,13 +582,14 @@ fn solve_target(
     };
     let mut problem = build(parts.slices)?;
     let mut solution = solve_spencer(&problem, &settings);
-    let mut refinement = Vec::new();
+    let mut refinement = None;
     if let Some(tolerance) = parts.slice_tolerance {
         // Double the slices until F changes by less than the tolerance (relative).
-        refinement.push(SliceRefinementDto {
+        let mut steps = vec![SliceRefinementDto {
             slices: parts.slices.get(),
             factor_of_safety: solution.factor_of_safety,
-        });
+        }];
+        let mut settled = false;
         while let Some(doubled) = parts.slices_doubled(problem.geometry.slices.len()) {
             if started.elapsed() > time_limit {
                 return Err(ApiError::invalid(
@@ -606,11 +603,11 @@ fn solve_target(
             }
             let finer = build(doubled)?;
             let finer_solution = solve_spencer(&finer, &settings);
-            refinement.push(SliceRefinementDto {
+            steps.push(SliceRefinementDto {
                 slices: doubled.get(),
                 factor_of_safety: finer_solution.factor_of_safety,
             });
-            let settled = match (solution.factor_of_safety, finer_solution.factor_of_safety) {
+            settled = match (solution.factor_of_safety, finer_solution.factor_of_safety) {
                 (Some(a), Some(b)) => (a - b).abs() <= tolerance * b,
                 _ => false,
             };
@@ -619,6 +616,7 @@ fn solve_target(
                 break;
             }
         }
+        refinement = Some(SliceRefinement { steps, settled });
     }
     let curves = match (solution.theta_rad, curves) {
         (Some(theta), true) => Some(curves_around(&problem, theta)),
