@@ -746,16 +746,6 @@ pub fn circular_arch(geometry: &GeometryDto) -> Result<Option<CircularArch>, Api
         return Ok(None);
     };
     let radius = number("geometry.radius", *radius, MIN_LENGTH, false, MAX_LENGTH)?;
-    let thickness = number("geometry.thickness", *thickness, 0.0, true, f64::MAX)?;
-    if thickness >= 2.0 * radius {
-        return Err(ApiError::invalid(
-            "geometry.thickness",
-            format!(
-                "{thickness} is out of range: allowed is 0 < geometry.thickness < 2·radius = {}",
-                2.0 * radius
-            ),
-        ));
-    }
     let n = count("geometry.voussoirs", *voussoirs, 1, MAX_VOUSSOIRS)?;
     let left = number(
         "geometry.left_base_angle_deg",
@@ -777,7 +767,8 @@ pub fn circular_arch(geometry: &GeometryDto) -> Result<Option<CircularArch>, Api
     };
     let n = NonZeroUsize::new(n)
         .ok_or_else(|| ApiError::invalid("geometry.voussoirs", "must be at least 1"))?;
-    CircularArch::new(radius, thickness, n, left, right, shape)
+    // 0 < thickness < 2·radius is CircularArch::new's check.
+    CircularArch::new(radius, *thickness, n, left, right, shape)
         .map(Some)
         .map_err(arch_error)
 }

@@ -746,20 +746,7 @@ fn parts_from(request: &SpencerRequest) -> Result<Parts, ApiError> {
         MAX_MAGNITUDE,
     )?;
     number("soil.cohesion", soil.cohesion, 0.0, false, MAX_MAGNITUDE)?;
-    number(
-        "soil.friction_angle_deg",
-        soil.friction_angle_deg,
-        0.0,
-        false,
-        89.9,
-    )?;
-    number(
-        "soil.pore_pressure_ratio",
-        soil.pore_pressure_ratio,
-        0.0,
-        false,
-        1.0,
-    )?;
+    // The friction angle, the pore pressure ratio and the lower bounds are Soil::new's checks.
     let soil = Soil::new(
         soil.unit_weight,
         soil.cohesion,
