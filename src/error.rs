@@ -100,6 +100,17 @@ pub enum ApiError {
         /// The limit that was exceeded.
         seconds: f64,
     },
+    /// The solver stopped itself at the solve time limit: the request asks for more work than
+    /// one solve may do (a limit of the request, like the body size).
+    #[error("{field}: the calculation did not finish within the solve time limit of {seconds} s: {advice}")]
+    OverTimeLimit {
+        /// The field that sets the amount of work.
+        field: String,
+        /// The solve time limit.
+        seconds: f64,
+        /// What to change.
+        advice: &'static str,
+    },
     /// A fault of the server (a panic in a solve, a lost worker).
     #[error("internal error: {0}")]
     Internal(String),
@@ -118,7 +129,7 @@ impl ApiError {
     pub fn status(&self) -> StatusCode {
         match self {
             Self::BadRequest { status, .. } => *status,
-            Self::Invalid { .. } => StatusCode::UNPROCESSABLE_ENTITY,
+            Self::Invalid { .. } | Self::OverTimeLimit { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             Self::Unauthorized => StatusCode::UNAUTHORIZED,
             Self::Overloaded { .. } => StatusCode::SERVICE_UNAVAILABLE,
             Self::TimedOut { .. } => StatusCode::SERVICE_UNAVAILABLE,
@@ -131,6 +142,7 @@ impl ApiError {
         let (detail, field) = match self {
             Self::BadRequest { detail, field, .. } => (detail.clone(), field.clone()),
             Self::Invalid { field, detail } => (format!("{field}: {detail}"), Some(field.clone())),
+            Self::OverTimeLimit { field, .. } => (self.to_string(), Some(field.clone())),
             Self::Internal(_) => (
                 "the server failed to complete the calculation".to_owned(),
                 None,

@@ -12,9 +12,10 @@ pub mod arch;
 pub mod auth;
 pub mod config;
 pub mod error;
+pub mod fields;
 pub mod health;
+pub mod limits;
 pub mod metrics;
-pub mod minimum_thickness;
 pub mod openapi;
 pub mod page;
 pub mod pool;
@@ -93,7 +94,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .route("/arch/live-load/svg", post(arch::live_load_svg))
         .route(
             "/arch/minimum-thickness",
-            post(minimum_thickness::minimum_thickness),
+            post(arch::minimum_thickness::minimum_thickness),
         )
         .route_layer(axum::middleware::from_fn_with_state(
             state.clone(),

@@ -22,7 +22,7 @@ use utoipa::OpenApi;
         crate::arch::dead_load_svg,
         crate::arch::live_load,
         crate::arch::live_load_svg,
-        crate::minimum_thickness::minimum_thickness,
+        crate::arch::minimum_thickness::minimum_thickness,
         crate::slope::spencer,
         crate::slope::spencer_svg
     ),

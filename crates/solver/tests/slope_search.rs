@@ -207,11 +207,11 @@ fn force_and_moment_curves_cross_at_the_answer() {
     let p = spencer_example(Seismic::default(), vec![]);
     let s = solve_spencer(&p, &SpencerSettings::default());
     let (f, theta) = (s.factor_of_safety.unwrap(), s.theta_rad.unwrap());
-    let curves = factor_curves(&p, &[theta, 0.0]);
-    let (ff, fm) = curves[0];
+    let curves = factor_curves(&p, vec![theta.to_degrees(), 0.0]);
+    let (ff, fm) = (curves.force_factor[0], curves.moment_factor[0]);
     assert!((ff.unwrap() - f).abs() < 1e-9 && (fm.unwrap() - f).abs() < 1e-9);
     // At θ = 0 the moment curve is Bishop's simplified F.
-    assert!((curves[1].1.unwrap() - s.bishop_factor_of_safety.unwrap()).abs() < 1e-12);
+    assert!((curves.moment_factor[1].unwrap() - s.bishop_factor_of_safety.unwrap()).abs() < 1e-12);
 }
 
 #[test]
@@ -237,7 +237,10 @@ fn a_search_past_its_time_limit_says_so() {
         ..SearchSettings::default()
     };
     let s = search_critical_circle(&p, SearchGrid::automatic(&p.embankment, 0.0), &settings);
-    assert!(s.timed_out);
+    assert_eq!(
+        s.status,
+        SearchStatus::SolverFailed(thrustline_solver::outcome::SolverFailure::MaxTime)
+    );
     assert!(s.grid.factors.iter().flatten().all(Option::is_none));
 }
 

@@ -9,7 +9,7 @@
 
 use std::num::NonZeroUsize;
 
-use super::ArchError;
+use super::{ArchError, ArchParameter};
 use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance for "the same point" when checking that chain blocks share faces.
@@ -100,21 +100,21 @@ impl CircularArch {
     ) -> Result<Self, ArchError> {
         if !(radius.is_finite() && radius > 0.0) {
             return Err(ArchError::range(
-                "geometry.radius",
+                ArchParameter::Radius,
                 radius,
                 "a finite number > 0",
             ));
         }
         if !(thickness.is_finite() && thickness > 0.0 && thickness < 2.0 * radius) {
             return Err(ArchError::range(
-                "geometry.thickness",
+                ArchParameter::Thickness,
                 thickness,
                 format!("0 < thickness < 2·radius = {}", 2.0 * radius),
             ));
         }
         for (name, angle) in [
-            ("geometry.left_base_angle_deg", left_base_angle_deg),
-            ("geometry.right_base_angle_deg", right_base_angle_deg),
+            (ArchParameter::LeftBaseAngle, left_base_angle_deg),
+            (ArchParameter::RightBaseAngle, right_base_angle_deg),
         ] {
             if !(angle.is_finite() && angle > -90.0 && angle < 90.0) {
                 return Err(ArchError::range(name, angle, "-90 < angle < 90 degrees"));
@@ -237,7 +237,7 @@ impl Assembly {
     pub fn from_quadrilaterals(corners: &[[(f64, f64); 4]]) -> Result<Self, ArchError> {
         if corners.is_empty() {
             return Err(ArchError::geometry(
-                "geometry.blocks",
+                ArchParameter::Blocks,
                 "at least one block is needed",
             ));
         }
@@ -250,7 +250,10 @@ impl Assembly {
             for (c, &(x, y)) in block.iter().enumerate() {
                 if !(x.is_finite() && y.is_finite()) {
                     return Err(ArchError::geometry(
-                        format!("geometry.blocks[{b}].corners[{c}]"),
+                        ArchParameter::BlockCorner {
+                            block: b,
+                            corner: c,
+                        },
                         "corners must be finite numbers",
                     ));
                 }
@@ -267,7 +270,7 @@ impl Assembly {
             let has_area = signed_area.abs() > 1e-12 * extent * extent;
             if !has_area || is_self_intersecting(c) {
                 return Err(ArchError::geometry(
-                    format!("geometry.blocks[{b}].corners"),
+                    ArchParameter::BlockCorners { block: b },
                     "the block is degenerate or self-intersecting (corners must be intrados-start, \
                      extrados-start, extrados-end, intrados-end)",
                 ));
@@ -277,12 +280,12 @@ impl Assembly {
                 let same = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).hypot(p.1 - q.1) <= tolerance;
                 if !(same(previous[3], c[0]) && same(previous[2], c[1])) {
                     return Err(ArchError::geometry(
-                        format!("geometry.blocks[{b}].corners"),
+                        ArchParameter::BlockCorners { block: b },
                         format!(
-                            "block {b} does not share its start face with the end face of block {}: \
+                            "block {} does not share its start face with the end face of block {b}: \
                              its intrados-start and extrados-start must equal the previous block's \
                              intrados-end and extrados-end",
-                            b - 1
+                            b + 1
                         ),
                     ));
                 }
@@ -305,8 +308,10 @@ impl Assembly {
             let has_length = length > 1e-12 * scale;
             if !has_length {
                 return Err(ArchError::geometry(
-                    format!("geometry.blocks[{}].corners", k.min(n - 1)),
-                    format!("interface {k} has zero length"),
+                    ArchParameter::BlockCorners {
+                        block: k.min(n - 1),
+                    },
+                    format!("interface {} has zero length", k + 1),
                 ));
             }
             let tangent = (
@@ -458,9 +463,13 @@ mod tests {
         let a = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)];
         let b = [(1.1, 0.0), (1.1, 1.0), (2.0, 1.0), (2.0, 0.0)];
         let err = Assembly::from_quadrilaterals(&[a, b]).unwrap_err();
-        assert!(
-            matches!(err, ArchError::InvalidGeometry { ref parameter, .. } if parameter == "geometry.blocks[1].corners")
-        );
+        assert!(matches!(
+            err,
+            ArchError::InvalidGeometry {
+                parameter: ArchParameter::BlockCorners { block: 1 },
+                ..
+            }
+        ));
         let bowtie = [(0.0, 0.0), (1.0, 1.0), (0.0, 1.0), (1.0, 0.0)];
         assert!(Assembly::from_quadrilaterals(&[bowtie]).is_err());
         let flat = [(0.0, 0.0), (0.0, 0.0), (1.0, 0.0), (1.0, 0.0)];

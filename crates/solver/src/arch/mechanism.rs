@@ -8,10 +8,18 @@
 //! order μ/slack on inactive limits, many orders below the active ones.
 
 use super::geometry::Assembly;
-use super::limit::RowTag;
 
 /// Multipliers below this fraction of the largest are treated as inactive.
 pub const ACTIVE_FRACTION: f64 = 1e-3;
+
+/// Which limit a row of the programme is: the bound of one resultant of one interface. The
+/// mechanism is read from the multipliers of the rows through these tags.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct LimitTag {
+    pub interface: usize,
+    pub resultant: Resultant,
+    pub bound: Bound,
+}
 
 /// A stress resultant of an interface: Livesley's q, s, t and the friction variables u, v.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -108,7 +116,7 @@ pub(crate) fn read_mechanism(
     length_scale: f64,
     y: &[f64],
     z: &[f64],
-    tags: &[RowTag],
+    tags: &[LimitTag],
 ) -> Option<Mechanism> {
     // Moment rows were divided by L: their multiplier is ω·L.
     let raw: Vec<[f64; 3]> = y

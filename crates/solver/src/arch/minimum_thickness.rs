@@ -12,12 +12,11 @@
 
 use std::time::Instant;
 
-use super::limit::{
-    full_dead_load_margin, ArchProblem, InterfaceLimits, LimitSettings, SolverFailure,
-};
+use super::limit::{full_dead_load_margin, ArchProblem, InterfaceLimits, LimitSettings};
 use super::mechanism::{HingeSide, Mechanism};
 use super::{ArchError, CircularArch};
-use crate::roots::brent;
+use crate::numerics::brent;
+use crate::outcome::SolverFailure;
 
 /// Settings of the search.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -118,13 +117,12 @@ impl MarginOfThickness<'_> {
         )
         .map_err(Stop::Input)?;
         self.evaluations += 1;
-        let (margin, mechanism, iterations) =
-            full_dead_load_margin(&problem, self.settings).map_err(Stop::Solver)?;
-        self.iterations += iterations;
+        let full = full_dead_load_margin(&problem, self.settings).map_err(Stop::Solver)?;
+        self.iterations += full.iterations;
         Ok(Evaluation {
             thickness,
-            margin,
-            mechanism,
+            margin: full.margin,
+            mechanism: full.mechanism,
         })
     }
 }

@@ -10,7 +10,7 @@
 //! inclination α is that of the chord, positive where the base rises towards the crest. This is
 //! the idealisation with which the thesis reproduces Spencer's (1967) numbers digit for digit.
 
-use super::{check_range, SlopeError};
+use super::{check_range, SlopeError, SlopeParameter};
 use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance on lengths used to tell a genuine exit point from the lower end itself.
@@ -28,8 +28,8 @@ impl Embankment {
     pub fn new(height: f64, length: f64) -> Result<Self, SlopeError> {
         let allowed = "a finite number > 0";
         Ok(Self {
-            height: check_range("slope.height", height, 0.0, true, f64::MAX, allowed)?,
-            length: check_range("slope.length", length, 0.0, true, f64::MAX, allowed)?,
+            height: check_range(SlopeParameter::Height, height, 0.0, true, f64::MAX, allowed)?,
+            length: check_range(SlopeParameter::Length, length, 0.0, true, f64::MAX, allowed)?,
         })
     }
 
@@ -117,6 +117,8 @@ impl Slice {
 pub struct SlopeGeometry {
     /// The embankment.
     pub embankment: Embankment,
+    /// The circle as given.
+    pub circle: SlipCircle,
     /// Centre of the circle in embankment coordinates.
     pub centre: (f64, f64),
     /// Radius of the circle.
@@ -141,7 +143,7 @@ impl SlopeGeometry {
     ) -> Result<Self, SlopeError> {
         let h = embankment.height;
         check_range(
-            "circle.x",
+            SlopeParameter::CircleX,
             circle.x,
             f64::MIN,
             false,
@@ -149,7 +151,7 @@ impl SlopeGeometry {
             "a finite number",
         )?;
         check_range(
-            "circle.y",
+            SlopeParameter::CircleY,
             circle.y,
             0.0,
             true,
@@ -157,7 +159,7 @@ impl SlopeGeometry {
             "a finite number > 0 (the centre lies above the lower end)",
         )?;
         check_range(
-            "circle.lower_end_factor",
+            SlopeParameter::LowerEndFactor,
             circle.lower_end_factor,
             0.0,
             false,
@@ -179,7 +181,7 @@ impl SlopeGeometry {
         };
         if arc_slope >= ground_slope {
             return Err(SlopeError::NoSlipMass {
-                parameter: "circle.x",
+                parameter: SlopeParameter::CircleX,
                 reason: format!(
                     "the circle does not enter the ground at its lower end (its slope there is \
                      {arc_slope:.4}, the ground's {ground_slope:.4}); move the centre further \
@@ -189,7 +191,7 @@ impl SlopeGeometry {
         }
         let exit_x = upper_exit(&embankment, centre, radius, lower_end.0).ok_or_else(|| {
             SlopeError::NoSlipMass {
-                parameter: "circle.y",
+                parameter: SlopeParameter::CircleY,
                 reason: format!(
                     "the lower half of the circle (radius {radius:.4}) does not come back to \
                      the ground surface; raise the centre or move it towards the toe"
@@ -220,6 +222,7 @@ impl SlopeGeometry {
             .collect();
         Ok(Self {
             embankment,
+            circle,
             centre,
             radius,
             lower_end,
@@ -366,7 +369,7 @@ mod tests {
         assert!(matches!(
             err,
             Err(SlopeError::NoSlipMass {
-                parameter: "circle.x",
+                parameter: SlopeParameter::CircleX,
                 ..
             })
         ));
@@ -386,7 +389,7 @@ mod tests {
         assert!(matches!(
             err,
             Err(SlopeError::NoSlipMass {
-                parameter: "circle.y",
+                parameter: SlopeParameter::CircleY,
                 ..
             })
         ));

@@ -13,6 +13,9 @@ use std::num::NonZeroUsize;
 use rayon::prelude::*;
 
 use super::geometry::{Embankment, SlipCircle};
+use crate::numerics::{nelder_mead, Minimum};
+use crate::outcome::SolverFailure;
+
 use super::spencer::{solve_spencer_factor, Seismic, SlopeProblem, Soil, SpencerSettings};
 
 /// The region of centres searched and the grid laid over it.
@@ -129,9 +132,22 @@ pub struct FactorGrid {
     pub factors: Vec<Vec<Option<f64>>>,
 }
 
+/// How a search ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SearchStatus {
+    /// The critical circle was found.
+    Found,
+    /// No centre of the region gives a circle with a solution.
+    NoValidCircle,
+    /// The search stopped early (its time limit): its answer is not to be trusted.
+    SolverFailed(SolverFailure),
+}
+
 /// The critical circle found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchSolution {
+    /// How the search ended.
+    pub status: SearchStatus,
     /// The critical circle; `None` when no grid point gives a valid circle.
     pub circle: Option<SlipCircle>,
     /// Its factor of safety.
@@ -145,8 +161,6 @@ pub struct SearchSolution {
     /// Whether the minimum still lies on the edge of the last grid (the true minimum may lie
     /// outside the region searched).
     pub is_on_edge: bool,
-    /// Whether the time limit cut the search short (the answer is then not to be trusted).
-    pub timed_out: bool,
 }
 
 /// Spencer's F for one circle, or `None` when the circle is invalid or has no solution.
@@ -164,7 +178,7 @@ pub fn factor_of_safety(
         Vec::new(),
     )
     .ok()?;
-    solve_spencer_factor(&slope, settings).map(|(f, _)| f)
+    solve_spencer_factor(&slope, settings).map(|s| s.factor_of_safety)
 }
 
 /// An optional instant after which no more circles are evaluated.
@@ -173,6 +187,15 @@ struct Deadline(Option<std::time::Instant>);
 impl Deadline {
     fn is_past(&self) -> bool {
         self.0.is_some_and(|d| std::time::Instant::now() >= d)
+    }
+}
+
+/// `otherwise`, unless the deadline cut the search short.
+fn status(deadline: &Deadline, otherwise: SearchStatus) -> SearchStatus {
+    if deadline.is_past() {
+        SearchStatus::SolverFailed(SolverFailure::MaxTime)
+    } else {
+        otherwise
     }
 }
 
@@ -234,13 +257,13 @@ pub fn search_critical_circle(
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
         let Some(&(_, bi, bj)) = points.first() else {
             return SearchSolution {
+                status: status(&deadline, SearchStatus::NoValidCircle),
                 circle: None,
                 factor_of_safety: None,
                 grid: factors,
                 evaluations,
                 regrids,
                 is_on_edge: false,
-                timed_out: deadline.is_past(),
             };
         };
         let (dx, dy) = grid.cell();
@@ -257,7 +280,7 @@ pub fn search_critical_circle(
                 starts.push((i, j));
             }
         }
-        let refined: Vec<(f64, Vec<f64>, usize)> = starts
+        let refined: Vec<Minimum> = starts
             .par_iter()
             .map(|&(i, j)| {
                 let scale = dx.abs().max(dy.abs());
@@ -280,7 +303,7 @@ pub fn search_critical_circle(
                 };
                 // Centres first, at the grid's lower-end factor…
                 let start = [factors.xs[i], factors.ys[j]];
-                let (f, v, n) = nelder_mead(
+                let centres = nelder_mead(
                     objective,
                     &start,
                     &[0.5 * dx, 0.5 * dy],
@@ -290,29 +313,33 @@ pub fn search_critical_circle(
                 // …then, when it is searched too, the lower end with them, from there: never
                 // worse than the first refinement, whose point starts the simplex.
                 match problem.lower_end_factor_max {
-                    Some(max) if f.is_finite() => {
+                    Some(max) if centres.value.is_finite() => {
+                        let v = &centres.point;
                         let start = [v[0], v[1], problem.lower_end_factor.clamp(0.0, max)];
                         let step = [0.25 * dx, 0.25 * dy, 0.1 * max];
-                        let (f3, v3, n3) = nelder_mead(
+                        let with_lower_end = nelder_mead(
                             objective,
                             &start,
                             &step,
                             1e-9 * scale,
                             settings.max_refine_evaluations,
                         );
-                        (f3, v3, n + n3)
+                        Minimum {
+                            evaluations: centres.evaluations + with_lower_end.evaluations,
+                            ..with_lower_end
+                        }
                     }
-                    _ => (f, v, n),
+                    _ => centres,
                 }
             })
             .collect();
-        evaluations += refined.iter().map(|r| r.2).sum::<usize>();
+        evaluations += refined.iter().map(|r| r.evaluations).sum::<usize>();
         let best = refined
             .into_iter()
-            .filter(|r| r.0.is_finite())
-            .min_by(|a, b| a.0.total_cmp(&b.0));
+            .filter(|r| r.value.is_finite())
+            .min_by(|a, b| a.value.total_cmp(&b.value));
         let (f, v) = match best {
-            Some((f, v, _)) => (f, v),
+            Some(m) => (m.value, m.point),
             None => {
                 let f = points[0].0;
                 (f, vec![factors.xs[bi], factors.ys[bj]])
@@ -344,118 +371,13 @@ pub fn search_critical_circle(
             continue;
         }
         return SearchSolution {
+            status: status(&deadline, SearchStatus::Found),
             circle: Some(circle),
             factor_of_safety: Some(f),
             grid: factors,
             evaluations,
             regrids,
             is_on_edge: on_edge || outside,
-            timed_out: deadline.is_past(),
         };
-    }
-}
-
-/// Nelder–Mead simplex minimisation (Nelder & Mead 1965; standard coefficients 1, 2, ½, ½).
-/// Returns (best value, best point, evaluations).
-fn nelder_mead(
-    f: impl Fn(&[f64]) -> f64,
-    start: &[f64],
-    step: &[f64],
-    x_tolerance: f64,
-    max_evaluations: usize,
-) -> (f64, Vec<f64>, usize) {
-    let n = start.len();
-    let mut simplex: Vec<Vec<f64>> = vec![start.to_vec()];
-    for i in 0..n {
-        let mut p = start.to_vec();
-        p[i] += step[i];
-        simplex.push(p);
-    }
-    let mut values: Vec<f64> = simplex.iter().map(|p| f(p)).collect();
-    let mut evaluations = n + 1;
-    while evaluations < max_evaluations {
-        let mut order: Vec<usize> = (0..=n).collect();
-        order.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
-        simplex = order.iter().map(|&i| simplex[i].clone()).collect();
-        values = order.iter().map(|&i| values[i]).collect();
-        let size = simplex[1..]
-            .iter()
-            .map(|p| {
-                p.iter()
-                    .zip(&simplex[0])
-                    .map(|(a, b)| (a - b).abs())
-                    .fold(0.0, f64::max)
-            })
-            .fold(0.0, f64::max);
-        if size <= x_tolerance {
-            break;
-        }
-        let centroid: Vec<f64> = (0..n)
-            .map(|d| simplex[..n].iter().map(|p| p[d]).sum::<f64>() / n as f64)
-            .collect();
-        let along = |t: f64| -> Vec<f64> {
-            (0..n)
-                .map(|d| centroid[d] + t * (simplex[n][d] - centroid[d]))
-                .collect()
-        };
-        let reflected = along(-1.0);
-        let fr = f(&reflected);
-        evaluations += 1;
-        if fr < values[0] {
-            let expanded = along(-2.0);
-            let fe = f(&expanded);
-            evaluations += 1;
-            if fe < fr {
-                simplex[n] = expanded;
-                values[n] = fe;
-            } else {
-                simplex[n] = reflected;
-                values[n] = fr;
-            }
-        } else if fr < values[n - 1] {
-            simplex[n] = reflected;
-            values[n] = fr;
-        } else {
-            let (contracted, fc) = if fr < values[n] {
-                let c = along(-0.5);
-                let fc = f(&c);
-                (c, fc)
-            } else {
-                let c = along(0.5);
-                let fc = f(&c);
-                (c, fc)
-            };
-            evaluations += 1;
-            if fc < values[n].min(fr) {
-                simplex[n] = contracted;
-                values[n] = fc;
-            } else {
-                // Shrink towards the best point.
-                let best = simplex[0].clone();
-                for (point, value) in simplex.iter_mut().zip(values.iter_mut()).skip(1) {
-                    for (x, b) in point.iter_mut().zip(&best) {
-                        *x = b + 0.5 * (*x - b);
-                    }
-                    *value = f(point);
-                }
-                evaluations += n;
-            }
-        }
-    }
-    let best = (0..=n)
-        .min_by(|&a, &b| values[a].total_cmp(&values[b]))
-        .unwrap_or(0);
-    (values[best], simplex[best].clone(), evaluations)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn nelder_mead_finds_the_minimum_of_a_quadratic() {
-        let f = |v: &[f64]| (v[0] - 1.0).powi(2) + 3.0 * (v[1] + 2.0).powi(2);
-        let (value, x, _) = nelder_mead(f, &[0.0, 0.0], &[0.5, 0.5], 1e-10, 1000);
-        assert!(value < 1e-15 && (x[0] - 1.0).abs() < 1e-7 && (x[1] + 2.0).abs() < 1e-7);
     }
 }

@@ -1,14 +1,14 @@
 //! Drawing of a slope: the embankment, the slip circle and its centre, the slices, the line of
 //! thrust, and for a search the map of F over the grid of centres with the critical centre.
 
-use thrustline_solver::slope::SlopeProblem;
+use super::response::SolvedSlope;
+use crate::svg::{escape, heat, Canvas};
 
-use super::{heat, Canvas};
-use crate::slope::SpencerResponse;
-
-/// The drawing of `problem` (the analysed or critical circle) and its answer.
-pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> String {
-    let g = &problem.geometry;
+/// The drawing of a solved request (the analysed or critical circle) and its answer.
+pub fn draw(solved: &SolvedSlope, title: &str) -> String {
+    let g = &solved.problem.geometry;
+    let solution = &solved.solution;
+    let grid = solved.search.as_ref().map(|s| &s.grid);
     let e = &g.embankment;
     let (h, l) = (e.height(), e.length());
     let left = g.lower_end.0.min(0.0) - 0.3 * (l + h);
@@ -20,9 +20,7 @@ pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> 
         (g.centre.0, g.centre.1 - g.radius),
     ];
     let lower_end = g.lower_end;
-    let grid_centres: Vec<(f64, f64)> = response
-        .grid
-        .as_ref()
+    let grid_centres: Vec<(f64, f64)> = grid
         .map(|grid| {
             grid.xs
                 .iter()
@@ -37,14 +35,8 @@ pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> 
     extent.extend(grid_centres.iter().copied());
     let mut canvas = Canvas::fitting(extent);
     // The F map of a search: one cell per grid point, coloured from the least F (red) up.
-    if let Some(grid) = &response.grid {
-        let values: Vec<f64> = grid
-            .factor_of_safety
-            .iter()
-            .flatten()
-            .flatten()
-            .copied()
-            .collect();
+    if let Some(grid) = grid {
+        let values: Vec<f64> = grid.factors.iter().flatten().flatten().copied().collect();
         let (lo, hi) = values
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
@@ -52,7 +44,7 @@ pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> 
             });
         let cap = lo + (hi - lo).min(2.0 * lo.max(1e-9));
         let (dx, dy) = (cell(&grid.xs), cell(&grid.ys));
-        for (j, row) in grid.factor_of_safety.iter().enumerate() {
+        for (j, row) in grid.factors.iter().enumerate() {
             for (i, f) in row.iter().enumerate() {
                 let Some(f) = f else { continue };
                 let t = 1.0 - ((f - lo) / (cap - lo).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
@@ -74,7 +66,7 @@ pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> 
         let absolute_ys: Vec<f64> = grid.ys.iter().map(|y| lower_end.1 + y).collect();
         for factor in [1.02, 1.05, 1.1, 1.2, 1.4, 1.7] {
             let level = lo * factor;
-            for segment in contour(&absolute_xs, &absolute_ys, &grid.factor_of_safety, level) {
+            for segment in contour(&absolute_xs, &absolute_ys, &grid.factors, level) {
                 canvas.polyline(&segment, "stroke=\"#4e342e\" stroke-width=\"0.8\"");
             }
         }
@@ -119,23 +111,24 @@ pub fn draw(problem: &SlopeProblem, response: &SpencerResponse, title: &str) -> 
         "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
     );
     // The line of thrust on the slice boundaries.
-    let thrust: Vec<(f64, f64)> = response
+    let thrust: Vec<(f64, f64)> = solution
         .thrust_line
         .iter()
         .map(|t| (t.x, t.y.unwrap_or(f64::NAN)))
         .collect();
     canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
-    let caption = match (response.factor_of_safety, response.theta_deg) {
-        (Some(f), Some(t)) => format!(
-            "F = {f:.4}, θ = {t:.2}° (Spencer); Bishop {:.4}",
-            response.bishop_factor_of_safety.unwrap_or(f64::NAN)
+    let caption = match (solution.factor_of_safety, solution.theta_rad) {
+        (Some(f), Some(theta)) => format!(
+            "F = {f:.4}, θ = {:.2}° (Spencer); Bishop {:.4}",
+            theta.to_degrees(),
+            solution.bishop_factor_of_safety.unwrap_or(f64::NAN)
         ),
         _ => "no solution for this circle".to_owned(),
     };
     canvas.raw(&format!(
         "<text x=\"60\" y=\"{}\" font-size=\"12\" font-family=\"sans-serif\" fill=\"#c62828\">— line of thrust. {}</text>",
-        if response.grid.is_some() { 58 } else { 44 },
-        super::escape(&caption)
+        if grid.is_some() { 58 } else { 44 },
+        escape(&caption)
     ));
     canvas.finish(title)
 }

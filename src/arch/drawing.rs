@@ -1,10 +1,10 @@
 //! Drawing of an arch: voussoirs, line of thrust, hinges with their angles, live loads as
 //! arrows, and the collapse mechanism as the displaced blocks (dashed).
 
-use thrustline_solver::arch::{Assembly, LiveLoad};
+use thrustline_solver::arch::HingeSide;
 
-use super::Canvas;
-use crate::arch::ArchOutcomeDto;
+use super::response::SolvedArch;
+use crate::svg::Canvas;
 
 /// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
 fn outline(corners: &[(f64, f64); 4], curved: bool) -> Vec<(f64, f64)> {
@@ -35,14 +35,12 @@ fn outline(corners: &[(f64, f64); 4], curved: bool) -> Vec<(f64, f64)> {
     points
 }
 
-/// The drawing, `curved` for annular-sector voussoirs.
-pub fn draw(
-    assembly: &Assembly,
-    curved: bool,
-    outcome: &ArchOutcomeDto,
-    loads: &[LiveLoad],
-    title: &str,
-) -> String {
+/// The drawing of a solved arch (with arcs for annular-sector voussoirs).
+pub fn draw(solved: &SolvedArch, title: &str) -> String {
+    let assembly = solved.input.problem.assembly();
+    let curved = solved.input.is_curved;
+    let loads = solved.input.problem.live_loads();
+    let mechanism = solved.solution.mechanism.as_ref();
     let corners = assembly
         .blocks
         .iter()
@@ -67,13 +65,13 @@ pub fn draw(
     }
     // The collapse mechanism: blocks displaced by 8 % of the span at the fastest corner; each
     // block dashed when there are few, the displaced intrados and extrados when there are many.
-    if let Some(mechanism) = &outcome.mechanism {
+    if let Some(mechanism) = mechanism {
         let delta = 0.08 * span;
         let displaced: Vec<Vec<(f64, f64)>> = assembly
             .blocks
             .iter()
-            .zip(&mechanism.blocks)
-            .map(|(block, v)| {
+            .zip(&mechanism.velocities)
+            .map(|(block, &[u, v, rotation])| {
                 let g = block.centroid;
                 let corners = if assembly.blocks.len() > 60 {
                     block.corners.to_vec()
@@ -84,8 +82,8 @@ pub fn draw(
                     .into_iter()
                     .map(|(x, y)| {
                         (
-                            x + delta * (v.u - v.rotation * (y - g.1)),
-                            y + delta * (v.v + v.rotation * (x - g.0)),
+                            x + delta * (u - rotation * (y - g.1)),
+                            y + delta * (v + rotation * (x - g.0)),
                         )
                     })
                     .collect()
@@ -105,32 +103,26 @@ pub fn draw(
         }
     }
     // The line of thrust through the points of action at the interfaces.
-    let thrust: Vec<(f64, f64)> = outcome
+    let thrust: Vec<(f64, f64)> = solved
         .thrust_line
         .iter()
-        .map(|t| (t.x.unwrap_or(f64::NAN), t.y.unwrap_or(f64::NAN)))
+        .map(|t| t.point.unwrap_or((f64::NAN, f64::NAN)))
         .collect();
     canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
     // Hinges at the intrados or extrados end of their interface, with their polar angle.
-    for hinge in &outcome.hinges {
-        let Some(interface) = assembly.interfaces.get(hinge.interface - 1) else {
+    for hinge in mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default() {
+        let Some(interface) = assembly.interfaces.get(hinge.interface) else {
             continue;
         };
-        let point = if hinge.location == "intrados" {
-            interface.intrados
-        } else {
-            interface.extrados
+        let (point, outward, location) = match hinge.side {
+            HingeSide::Intrados => (interface.intrados, -1.0, "intrados"),
+            HingeSide::Extrados => (interface.extrados, 1.0, "extrados"),
         };
         canvas.dot(
             point,
             5.0,
             "fill=\"#1b5e20\" stroke=\"white\" stroke-width=\"1.5\"",
         );
-        let outward = if hinge.location == "intrados" {
-            -1.0
-        } else {
-            1.0
-        };
         let offset = (
             outward * 14.0 * interface.tangent.0,
             -outward * 14.0 * interface.tangent.1,
@@ -138,7 +130,7 @@ pub fn draw(
         canvas.text(
             point,
             offset,
-            &format!("{:.1}° {}", hinge.angle_deg, hinge.location),
+            &format!("{:.1}° {location}", hinge.angle_deg),
             "font-size=\"11\" fill=\"#1b5e20\" font-family=\"sans-serif\" text-anchor=\"middle\"",
         );
     }

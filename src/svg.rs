@@ -1,11 +1,25 @@
-//! SVG drawings of the answers (`image/svg+xml`), built as plain strings: a [`Canvas`] maps the
-//! section's coordinates (y up, any unit) onto an 800-pixel-wide picture with axes and a scale
-//! bar; `arch` and `slope` draw on it.
-
-pub mod arch;
-pub mod slope;
+//! The drawing surface of the `/svg` routes (`image/svg+xml`), built as plain strings: a
+//! [`Canvas`] maps the section's coordinates (y up, any unit) onto an 800-pixel-wide picture with
+//! axes and a scale bar; `arch::drawing` and `slope::drawing` draw on it from the solvers' own
+//! results, and [`Svg`] answers with the picture.
 
 use std::fmt::Write;
+
+/// An `image/svg+xml` answer.
+pub struct Svg(pub String);
+
+impl axum::response::IntoResponse for Svg {
+    fn into_response(self) -> axum::response::Response {
+        (
+            [(
+                axum::http::header::CONTENT_TYPE,
+                "image/svg+xml; charset=utf-8",
+            )],
+            self.0,
+        )
+            .into_response()
+    }
+}
 
 /// Width of every drawing in pixels.
 pub const WIDTH: f64 = 800.0;

@@ -5,17 +5,16 @@
 use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
-    rupture_angle_deg, solve_minimum_thickness, LimitSettings, MinimumThicknessOutcome,
-    MinimumThicknessSettings, SolverFailure,
+    rupture_angle_deg, solve_minimum_thickness, CircularArch, LimitSettings, MinimumThickness,
+    MinimumThicknessOutcome, MinimumThicknessSettings, SolverFailure,
 };
 use utoipa::ToSchema;
 
-use crate::arch::{
-    active_constraints, arch_error, circular_arch, friction_coefficient, hinges, interface_limits,
-    ActiveConstraintDto, GeometryDto, HingeDto, InterfaceLimitsDto, VoussoirDto, MAX_LENGTH,
-    MAX_MAGNITUDE, MIN_LENGTH,
-};
+use super::input::{circular_arch, material, CircularFields};
+use super::request::{arch_request, unit, InterfaceLimitsDto, VoussoirDto};
+use super::response::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
 use crate::validation::number;
 use crate::AppState;
 
@@ -55,41 +54,42 @@ pub struct CircularGeometryDto {
     pub voussoir: VoussoirDto,
 }
 
-/// The minimum-thickness question for a circular arch.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-#[schema(example = json!({
-    "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 1800},
-    "unit_weight": 1.0,
-    "tolerance": 1e-6
-}))]
-pub struct MinimumThicknessRequest {
-    /// The circular arch; its `thickness`, if given, is ignored.
-    pub geometry: CircularGeometryDto,
-    /// Unit weight γ (> 0). Defaults to 1.
-    #[serde(default = "unit")]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0)]
-    pub unit_weight: f64,
-    /// Limits on the interface resultants. Defaults to Heyman's.
-    #[serde(default)]
-    pub interface_limits: InterfaceLimitsDto,
-    /// Coulomb friction coefficient μ ≥ 0; null = no sliding.
-    #[serde(default)]
-    #[schema(minimum = 0.0, maximum = 1000000.0)]
-    pub friction_coefficient: Option<f64>,
-    /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults to
-    /// 1e-6.
-    #[serde(default = "default_tolerance")]
-    #[schema(minimum = 1e-9, maximum = 0.01, default = 1e-6)]
-    pub tolerance: f64,
-}
-
-fn unit() -> f64 {
-    1.0
+arch_request! {
+    /// The minimum-thickness question for a circular arch.
+    #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schema(example = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 1800},
+        "unit_weight": 1.0,
+        "tolerance": 1e-6
+    }))]
+    pub struct MinimumThicknessRequest {
+        /// The circular arch; its `thickness`, if given, is ignored.
+        pub geometry: CircularGeometryDto,
+        /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults
+        /// to 1e-6.
+        #[serde(default = "default_tolerance")]
+        #[schema(minimum = 1e-9, maximum = 0.01, default = 1e-6)]
+        pub tolerance: f64,
+    }
 }
 
 fn default_tolerance() -> f64 {
     1e-6
+}
+
+/// What the search found.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum MinimumThicknessOutcomeDto {
+    /// The minimum thickness was found.
+    Found,
+    /// No finite minimum: even 1e-6·R stands (e.g. N ≤ 3).
+    StandsHoweverThin,
+    /// No thickness below 2R carries the weight (e.g. friction too low).
+    NeverStands,
+    /// A dead-load programme failed without an answer it can vouch for.
+    SolverFailed,
 }
 
 /// The minimum thickness, or why there is none.
@@ -98,8 +98,7 @@ pub struct MinimumThicknessResponse {
     /// found; stands_however_thin (no finite minimum: even 1e-6·R stands, e.g. N ≤ 3);
     /// never_stands (no thickness below 2R carries the weight, e.g. friction too low);
     /// solver_failed.
-    #[schema(example = "found")]
-    pub outcome: &'static str,
+    pub outcome: MinimumThicknessOutcomeDto,
     /// The thinnest thickness found to carry the dead load (within `tolerance`·R of the limit,
     /// on the safe side); null unless found.
     #[schema(example = 1.0747802)]
@@ -144,23 +143,22 @@ pub async fn minimum_thickness(
     let g = &request.geometry;
     // The thickness is ignored: any valid one serves as the template.
     let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
-    let template = 0.1 * radius;
-    let geometry = GeometryDto::Circular {
-        radius: g.radius,
-        thickness: template,
+    let arch = circular_arch(CircularFields {
+        radius,
+        thickness: 0.1 * radius,
         voussoirs: g.voussoirs,
         left_base_angle_deg: g.left_base_angle_deg,
         right_base_angle_deg: g.right_base_angle_deg,
         voussoir: g.voussoir,
-    };
-    let arch = circular_arch(&geometry)?
-        .ok_or_else(|| ApiError::invalid("geometry.kind", "must be circular"))?;
-    let unit_weight = number("unit_weight", request.unit_weight, 0.0, true, MAX_MAGNITUDE)?;
-    let limits = interface_limits(&request.interface_limits)?;
-    let friction = friction_coefficient(request.friction_coefficient)?;
-    let tolerance = number("tolerance", request.tolerance, 1e-9, false, 1e-2)?;
+    })?;
+    let material = material(
+        request.unit_weight,
+        &request.interface_limits,
+        request.friction_coefficient,
+    )?;
+    let (min, max) = THICKNESS_TOLERANCE;
     let settings = MinimumThicknessSettings {
-        tolerance,
+        tolerance: number("tolerance", request.tolerance, min, false, max)?,
         limit: LimitSettings {
             time_limit_secs: state.solve_time_limit_secs(),
             ..LimitSettings::default()
@@ -170,17 +168,39 @@ pub async fn minimum_thickness(
     };
     let (result, elapsed) = state
         .pool
-        .run(move || solve_minimum_thickness(&arch, unit_weight, limits, friction, &settings))
+        .run(move || {
+            let result = solve_minimum_thickness(
+                &arch,
+                material.unit_weight,
+                material.limits,
+                material.friction,
+                &settings,
+            );
+            (arch, result)
+        })
         .await?;
-    let result = result.map_err(arch_error)?;
+    let (arch, result) = result;
+    let result = result?;
     tracing::info!(
         evaluations = result.evaluations,
         solve_ms = elapsed.as_secs_f64() * 1e3,
         "minimum thickness solved"
     );
+    if result.outcome == MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime) {
+        return Err(ApiError::OverTimeLimit {
+            field: "tolerance".to_owned(),
+            seconds: state.solve_time_limit_secs(),
+            advice: "use a larger tolerance or fewer voussoirs",
+        });
+    }
+    Ok(ApiJson(response(&arch, &result)))
+}
+
+/// The answer, built whole for each outcome.
+fn response(arch: &CircularArch, result: &MinimumThickness) -> MinimumThicknessResponse {
     let radius = arch.radius();
-    let mut response = MinimumThicknessResponse {
-        outcome: "found",
+    let none = MinimumThicknessResponse {
+        outcome: MinimumThicknessOutcomeDto::SolverFailed,
         thickness: None,
         thickness_to_radius: None,
         thickness_below: None,
@@ -197,36 +217,40 @@ pub async fn minimum_thickness(
             thickness,
             thickness_below,
             mechanism,
-        } => {
-            response.thickness = Some(*thickness);
-            response.thickness_to_radius = Some(thickness / radius);
-            response.thickness_below = Some(*thickness_below);
-            if let Some(m) = mechanism {
-                response.rupture_angle_deg = rupture_angle_deg(&arch, m);
-                response.hinges = hinges(m);
-                response.active_constraints = active_constraints(m);
-            }
-            response.detail = format!(
+        } => MinimumThicknessResponse {
+            outcome: MinimumThicknessOutcomeDto::Found,
+            thickness: Some(*thickness),
+            thickness_to_radius: Some(thickness / radius),
+            thickness_below: Some(*thickness_below),
+            rupture_angle_deg: mechanism.as_ref().and_then(|m| rupture_angle_deg(arch, m)),
+            hinges: mechanism.as_ref().map(hinges).unwrap_or_default(),
+            active_constraints: mechanism
+                .as_ref()
+                .map(active_constraints)
+                .unwrap_or_default(),
+            detail: format!(
                 "the arch carries its own weight from thickness {thickness} on; at {thickness_below} it collapses"
-            );
-        }
-        MinimumThicknessOutcome::StandsHoweverThin => {
-            response.outcome = "stands_however_thin";
-            response.detail = format!(
+            ),
+            ..none
+        },
+        MinimumThicknessOutcome::StandsHoweverThin => MinimumThicknessResponse {
+            outcome: MinimumThicknessOutcomeDto::StandsHoweverThin,
+            detail: format!(
                 "no finite minimum: even thickness {} (1e-6·R) carries the dead load \
                  (with three or fewer voussoirs no mechanism can form under symmetric dead load)",
                 1e-6 * radius
-            );
-        }
-        MinimumThicknessOutcome::NeverStands => {
-            response.outcome = "never_stands";
-            response.detail = "no thickness below 2·radius carries the dead load (with friction: \
-                               the coefficient is too low for the joints at the springings)"
-                .to_owned();
-        }
-        MinimumThicknessOutcome::SolverFailed(failure) => {
-            response.outcome = "solver_failed";
-            response.detail = format!(
+            ),
+            ..none
+        },
+        MinimumThicknessOutcome::NeverStands => MinimumThicknessResponse {
+            outcome: MinimumThicknessOutcomeDto::NeverStands,
+            detail: "no thickness below 2·radius carries the dead load (with friction: the \
+                     coefficient is too low for the joints at the springings)"
+                .to_owned(),
+            ..none
+        },
+        MinimumThicknessOutcome::SolverFailed(failure) => MinimumThicknessResponse {
+            detail: format!(
                 "a dead-load programme failed ({}); no thickness is reported",
                 match failure {
                     SolverFailure::ReducedAccuracy => "reduced accuracy",
@@ -235,8 +259,8 @@ pub async fn minimum_thickness(
                     SolverFailure::Numerical => "numerical error",
                     SolverFailure::Infeasible => "reported infeasible",
                 }
-            );
-        }
+            ),
+            ..none
+        },
     }
-    Ok(ApiJson(response))
 }

@@ -1,0 +1,269 @@
+//! The state of one limit analysis: the model the programmes are written on (assembly or chain),
+//! its rows and scale, the margin and live-load programmes, and the reading of resultants and
+//! mechanism from their solutions. [`super`] drives it.
+
+use std::time::Instant;
+
+use super::super::chain::ChainStatics;
+use super::super::equilibrium::{
+    assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
+};
+use super::super::mechanism::{read_mechanism, LimitTag, Mechanism};
+use super::programme::{
+    dot, failure, solve_chain_programme, solve_programme, Programme, ProgrammeSpec,
+};
+use super::rows::{limit_rows, Row};
+use super::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
+use crate::outcome::SolverFailure;
+
+/// Live loads are scaled to a unit largest component; λ above this counts as no collapse.
+pub(super) const LIVE_LOAD_CAP: f64 = 1e6;
+
+/// The answer of a solve, before the solve statistics are added.
+pub(super) struct Found {
+    pub status: LimitStatus,
+    pub load_factor: Option<f64>,
+    pub dead_load_carried: Option<bool>,
+    pub dead_load_margin: Option<f64>,
+    pub resultants: Vec<[f64; 3]>,
+    pub mechanism: Option<Mechanism>,
+}
+
+/// margin(λ) with its state and multipliers.
+pub(super) struct MarginEvaluation {
+    pub lambda: f64,
+    pub value: f64,
+    pub programme: Programme,
+}
+
+/// The model the programmes are written on.
+enum Model {
+    /// Livesley's general assembly: all resultants and H r + λ₀w + λp = 0.
+    Assembly(Equilibrium),
+    /// The chain: three redundants, resultants affine in them.
+    Chain(ChainStatics),
+}
+
+pub(super) struct Context<'a> {
+    problem: &'a ArchProblem,
+    model: Model,
+    rows: Vec<Row>,
+    force_scale: f64,
+    settings: &'a LimitSettings,
+    pub iterations: u32,
+    pub programmes: usize,
+}
+
+impl<'a> Context<'a> {
+    pub fn new(problem: &'a ArchProblem, settings: &'a LimitSettings) -> Self {
+        let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
+        let force_scale = force_scale(a, gamma);
+        let model = match settings.formulation {
+            Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, loads)),
+            Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, loads)),
+        };
+        let rows = limit_rows(problem, force_scale);
+        Self {
+            problem,
+            model,
+            rows,
+            force_scale,
+            settings,
+            iterations: 0,
+            programmes: 0,
+        }
+    }
+
+    fn count(&mut self, programme: Programme) -> Result<Programme, SolverFailure> {
+        self.iterations += programme.iterations;
+        self.programmes += 1;
+        match failure(programme.status) {
+            Some(f) => Err(f),
+            None => Ok(programme),
+        }
+    }
+
+    /// The index of the extra variable (δ or λ) in the programme's x.
+    pub fn extra(&self) -> usize {
+        match &self.model {
+            Model::Assembly(eq) => eq.columns,
+            Model::Chain(_) => 3,
+        }
+    }
+
+    pub fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
+        let programme = match &self.model {
+            Model::Assembly(eq) => {
+                let b_eq: Vec<f64> = eq.dead.iter().map(|w| -lambda * w).collect();
+                let zeros = vec![0.0; eq.rows];
+                let spec = ProgrammeSpec {
+                    extra_equilibrium: &zeros,
+                    b_eq: &b_eq,
+                    row_extra: Some(-1.0),
+                    cap: (-1.0, 1.0),
+                    objective: 1.0,
+                };
+                solve_programme(eq, &self.rows, &spec, self.settings)
+            }
+            Model::Chain(chain) => solve_chain_programme(
+                chain,
+                &self.rows,
+                lambda,
+                |_, _| -1.0,
+                ((-1.0, 1.0), 1.0),
+                self.settings,
+            ),
+        };
+        let programme = self.count(programme)?;
+        let value = programme.x[self.extra()];
+        Ok(MarginEvaluation {
+            lambda,
+            value,
+            programme,
+        })
+    }
+
+    /// The live-load programme: λ̂ = λ·scale with the live loads scaled to a unit largest
+    /// component; returns the programme and the scale.
+    pub fn live(&mut self) -> Result<(Programme, f64), SolverFailure> {
+        let (programme, scale) = match &self.model {
+            Model::Assembly(eq) => {
+                let scale = eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let live: Vec<f64> = eq.live.iter().map(|p| p / scale).collect();
+                let b_eq: Vec<f64> = eq.dead.iter().map(|w| -w).collect();
+                let spec = ProgrammeSpec {
+                    extra_equilibrium: &live,
+                    b_eq: &b_eq,
+                    row_extra: None,
+                    cap: (1.0, LIVE_LOAD_CAP),
+                    objective: -1.0,
+                };
+                (solve_programme(eq, &self.rows, &spec, self.settings), scale)
+            }
+            Model::Chain(chain) => {
+                let scale = chain.live_scale;
+                let coefficient = |a: &[f64; 3], k: usize| dot(a, &chain.affine(k).2) / scale;
+                let programme = solve_chain_programme(
+                    chain,
+                    &self.rows,
+                    1.0,
+                    coefficient,
+                    ((1.0, LIVE_LOAD_CAP), -1.0),
+                    self.settings,
+                );
+                (programme, scale)
+            }
+        };
+        Ok((self.count(programme)?, scale))
+    }
+
+    /// Whether any live load is non-zero.
+    pub fn has_live_load(&self) -> bool {
+        match &self.model {
+            Model::Assembly(eq) => eq.live.iter().any(|v| *v != 0.0),
+            Model::Chain(chain) => chain.live_scale > 0.0,
+        }
+    }
+
+    /// Slope dmargin/dλ at the multipliers of `evaluation`: minus the λ-derivative of the
+    /// right-hand side, dotted with the multipliers (LP sensitivity).
+    pub fn slope(&self, evaluation: &MarginEvaluation) -> f64 {
+        let z = &evaluation.programme.z;
+        match &self.model {
+            Model::Assembly(eq) => eq.dead.iter().zip(z).map(|(w, y)| w * y).sum(),
+            Model::Chain(chain) => self
+                .rows
+                .iter()
+                .zip(z)
+                .map(|(row, z)| {
+                    let (k, a) = row.local();
+                    z * dot(&a, &chain.affine(k).1)
+                })
+                .sum(),
+        }
+    }
+
+    /// Resultants in force units from a programme's x at the given factors.
+    pub fn resultants(&self, x: &[f64], dead_factor: f64, live_factor: f64) -> Vec<[f64; 3]> {
+        let w = self.force_scale;
+        match &self.model {
+            Model::Assembly(eq) => x[..eq.columns]
+                .chunks_exact(RESULTANTS_PER_INTERFACE)
+                .map(|r| [r[0] * w, r[1] * w, r[2] * w])
+                .collect(),
+            Model::Chain(chain) => chain
+                .resultants([x[0], x[1], x[2]], dead_factor, live_factor)
+                .into_iter()
+                .map(|r| [r[0] * w, r[1] * w, r[2] * w])
+                .collect(),
+        }
+    }
+
+    pub fn mechanism(&self, programme: &Programme) -> Option<Mechanism> {
+        let tags: Vec<LimitTag> = self.rows.iter().map(|r| r.tag).collect();
+        let assembly = &self.problem.assembly;
+        match &self.model {
+            Model::Assembly(eq) => read_mechanism(
+                assembly,
+                eq.length_scale,
+                &programme.z[..eq.rows],
+                &programme.z[eq.rows..eq.rows + self.rows.len()],
+                &tags,
+            ),
+            Model::Chain(chain) => {
+                // Deformation rates d_k = −Σ a·z over the rows of interface k (H ᵀy = −A ᵀz).
+                let mut deformation = vec![[0.0; 3]; chain.interfaces()];
+                for (row, z) in self.rows.iter().zip(&programme.z) {
+                    let (k, a) = row.local();
+                    for i in 0..3 {
+                        deformation[k][i] -= a[i] * z;
+                    }
+                }
+                let y = chain.block_velocities(&deformation);
+                read_mechanism(
+                    assembly,
+                    assembly.length_scale(),
+                    &y,
+                    &programme.z[..self.rows.len()],
+                    &tags,
+                )
+            }
+        }
+    }
+
+    pub fn finish(&self, found: Found, start: Instant) -> LimitSolution {
+        let Found {
+            status,
+            load_factor,
+            dead_load_carried,
+            dead_load_margin,
+            resultants,
+            mechanism,
+        } = found;
+        LimitSolution {
+            status,
+            load_factor,
+            dead_load_carried,
+            dead_load_margin,
+            resultants,
+            mechanism,
+            iterations: self.iterations,
+            programmes: self.programmes,
+            solve_time_secs: start.elapsed().as_secs_f64(),
+        }
+    }
+
+    pub fn failed(&self, failure: SolverFailure, start: Instant) -> LimitSolution {
+        self.finish(
+            Found {
+                status: LimitStatus::SolverFailed(failure),
+                load_factor: None,
+                dead_load_carried: None,
+                dead_load_margin: None,
+                resultants: Vec::new(),
+                mechanism: None,
+            },
+            start,
+        )
+    }
+}

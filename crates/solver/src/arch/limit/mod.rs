@@ -1,0 +1,228 @@
+//! The limit-analysis linear programmes of a rigid-block assembly (Livesley 1978, §2.3–2.6),
+//! solved with Clarabel's interior-point method.
+//!
+//! # Formulations
+//! An interior-point method needs a feasible set with an interior. The textbook dead-load
+//! programme — maximise λ₀ with H r + λ₀ w = 0 and the yield limits — does not have one when the
+//! structure is too thin (with Heyman's limits its feasible set is then the single point r = 0).
+//! So the dead load is measured by a **margin** programme that is always well posed:
+//!
+//! ```text
+//!   margin(λ) = min δ   subject to  H r + λ w = 0,
+//!                                    every finite limit relaxed by δ·W  (r⁻ − δW ≤ r ≤ r⁺ + δW,
+//!                                    friction rows μ(q+s) ∓ t ≥ −δW),  δ ≥ −1,
+//! ```
+//!
+//! W being the total weight. margin(λ) ≤ 0 exactly when λ·w can be carried; it is convex and
+//! piecewise linear in λ with margin(0) ≤ 0 (r = 0 is admissible when every limit admits zero
+//! force). Hence λ₀ = 1 when margin(1) ≤ 0; with homogeneous limits (all finite limits zero:
+//! Heyman's case, friction) the feasible set is a cone and λ₀ = 0 otherwise; in general λ₀ is the
+//! root of margin(λ), found by Newton's method on the convex function (monotone from the right,
+//! finite on a piecewise-linear function) with the slope dmargin/dλ = w·y from the multipliers.
+//!
+//! The live load is the textbook programme, max λ subject to H r + w + λ p = 0 and the limits,
+//! solved once the dead load is known to be carried (then r is strictly admissible at λ = 0
+//! unless the structure sits exactly at its limit). λ is capped to detect loads that cause no
+//! collapse.
+//!
+//! # Multipliers
+//! With Clarabel's convention (min c'x, Ax + s = b, s ∈ K; dual A'z + c = 0) the multipliers y of
+//! the equilibrium rows satisfy Hᵀy = z_lower − z_upper: y are the block velocities (u, v, ω)
+//! of the collapse mechanism and z the plastic multipliers of the limits, with the loads doing
+//! positive work. See [`super::mechanism`].
+
+mod context;
+mod problem;
+mod programme;
+mod rows;
+
+use std::time::Instant;
+
+use super::mechanism::Mechanism;
+use super::{ArchError, ArchParameter};
+use crate::outcome::SolverFailure;
+use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
+
+pub use problem::{
+    ArchProblem, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
+};
+
+/// The dead-load margin at full dead load, for the minimum-thickness search.
+pub(crate) struct FullDeadLoadMargin {
+    /// δ, a fraction of the total weight; ≤ 0 when the weight is carried.
+    pub margin: f64,
+    /// The collapse mechanism when δ > 0.
+    pub mechanism: Option<Mechanism>,
+    /// Interior-point iterations spent.
+    pub iterations: u32,
+}
+
+/// The dead-load margin δ at full dead load with its mechanism.
+pub(crate) fn full_dead_load_margin(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+) -> Result<FullDeadLoadMargin, SolverFailure> {
+    let mut cx = Context::new(problem, settings);
+    let full = cx.margin(1.0)?;
+    let mechanism = if full.value > settings.margin_tolerance {
+        cx.mechanism(&full.programme)
+    } else {
+        None
+    };
+    Ok(FullDeadLoadMargin {
+        margin: full.value,
+        mechanism,
+        iterations: cx.iterations,
+    })
+}
+
+/// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
+/// carried, the mechanism in which the structure collapses under it.
+pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
+    let start = Instant::now();
+    let mut cx = Context::new(problem, settings);
+    let full = match cx.margin(1.0) {
+        Ok(e) => e,
+        Err(f) => return cx.failed(f, start),
+    };
+    let tol = settings.margin_tolerance;
+    if full.value <= tol {
+        let resultants = cx.resultants(&full.programme.x, 1.0, 0.0);
+        return cx.finish(
+            Found {
+                status: LimitStatus::Solved,
+                load_factor: Some(1.0),
+                dead_load_carried: Some(true),
+                dead_load_margin: Some(full.value),
+                resultants,
+                mechanism: None,
+            },
+            start,
+        );
+    }
+    if problem.limits.is_homogeneous() {
+        // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0.
+        let mechanism = cx.mechanism(&full.programme);
+        return cx.finish(
+            Found {
+                status: LimitStatus::Solved,
+                load_factor: Some(0.0),
+                dead_load_carried: Some(false),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism,
+            },
+            start,
+        );
+    }
+    // Newton from the right on the convex margin(λ), safeguarded by bisection on [lo, hi].
+    let full_margin = full.value;
+    let (mut lo, mut hi) = (0.0, full);
+    let mut carried: Option<MarginEvaluation> = None;
+    for _ in 0..60 {
+        let slope = cx.slope(&hi);
+        let newton = hi.lambda - hi.value / slope;
+        let lambda = if slope > 0.0 && newton.is_finite() && newton > lo && newton < hi.lambda {
+            newton
+        } else {
+            0.5 * (lo + hi.lambda)
+        };
+        let e = match cx.margin(lambda) {
+            Ok(e) => e,
+            Err(f) => return cx.failed(f, start),
+        };
+        if e.value <= tol {
+            lo = lambda;
+            let done = e.value >= -tol || hi.lambda - lo <= 1e-12;
+            carried = Some(e);
+            if done {
+                break;
+            }
+        } else {
+            hi = e;
+        }
+        if hi.lambda - lo <= 1e-12 {
+            break;
+        }
+    }
+    let resultants = carried
+        .map(|e| cx.resultants(&e.programme.x, e.lambda, 0.0))
+        .unwrap_or_default();
+    let mechanism = cx.mechanism(&hi.programme);
+    cx.finish(
+        Found {
+            status: LimitStatus::Solved,
+            load_factor: Some(lo),
+            dead_load_carried: Some(false),
+            dead_load_margin: Some(full_margin),
+            resultants,
+            mechanism,
+        },
+        start,
+    )
+}
+
+/// The live-load factor λ (Livesley's live-load problem), given that the dead load is carried.
+pub fn solve_live_load(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+) -> Result<LimitSolution, ArchError> {
+    let start = Instant::now();
+    let mut cx = Context::new(problem, settings);
+    if !cx.has_live_load() {
+        return Err(ArchError::range(
+            ArchParameter::Loads,
+            0.0,
+            "at least one load with a non-zero force or moment",
+        ));
+    }
+    let full = match cx.margin(1.0) {
+        Ok(e) => e,
+        Err(f) => return Ok(cx.failed(f, start)),
+    };
+    if full.value > settings.margin_tolerance {
+        let mechanism = cx.mechanism(&full.programme);
+        return Ok(cx.finish(
+            Found {
+                status: LimitStatus::DeadLoadNotCarried,
+                load_factor: None,
+                dead_load_carried: Some(false),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism,
+            },
+            start,
+        ));
+    }
+    let (programme, scale) = match cx.live() {
+        Ok(p) => p,
+        Err(f) => return Ok(cx.failed(f, start)),
+    };
+    let lambda_scaled = programme.x[cx.extra()];
+    if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
+        return Ok(cx.finish(
+            Found {
+                status: LimitStatus::Unbounded,
+                load_factor: None,
+                dead_load_carried: Some(true),
+                dead_load_margin: Some(full.value),
+                resultants: Vec::new(),
+                mechanism: None,
+            },
+            start,
+        ));
+    }
+    let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
+    let mechanism = cx.mechanism(&programme);
+    Ok(cx.finish(
+        Found {
+            status: LimitStatus::Solved,
+            load_factor: Some(lambda_scaled / scale),
+            dead_load_carried: Some(true),
+            dead_load_margin: Some(full.value),
+            resultants,
+            mechanism,
+        },
+        start,
+    ))
+}

@@ -1,0 +1,231 @@
+//! The data of a limit analysis: the structure with its loads and yield limits, the settings of
+//! the interior-point solves, and the plain solution they return (Livesley 1978, §2.3).
+
+use super::super::equilibrium::LiveLoad;
+use super::super::geometry::Assembly;
+use super::super::mechanism::{Bound, Mechanism, Resultant};
+use super::super::{ArchError, ArchParameter};
+use crate::outcome::SolverFailure;
+
+/// Limits on the stress resultants of every interface (absolute forces; `None` = unbounded).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceLimits {
+    /// Lower limit of q (0 = no tension at the extrados end).
+    pub q_min: Option<f64>,
+    /// Upper limit of q (crushing).
+    pub q_max: Option<f64>,
+    /// Lower limit of s (0 = no tension at the intrados end).
+    pub s_min: Option<f64>,
+    /// Upper limit of s (crushing).
+    pub s_max: Option<f64>,
+    /// Lower limit of the shear t.
+    pub t_min: Option<f64>,
+    /// Upper limit of the shear t.
+    pub t_max: Option<f64>,
+}
+
+impl InterfaceLimits {
+    /// Heyman's assumptions: no tension, infinite compressive strength, no sliding.
+    pub fn heyman() -> Self {
+        Self {
+            q_min: Some(0.0),
+            q_max: None,
+            s_min: Some(0.0),
+            s_max: None,
+            t_min: None,
+            t_max: None,
+        }
+    }
+
+    pub(super) fn bounds(&self) -> [(Resultant, Bound, Option<f64>); 6] {
+        [
+            (Resultant::Q, Bound::Lower, self.q_min),
+            (Resultant::Q, Bound::Upper, self.q_max),
+            (Resultant::S, Bound::Lower, self.s_min),
+            (Resultant::S, Bound::Upper, self.s_max),
+            (Resultant::T, Bound::Lower, self.t_min),
+            (Resultant::T, Bound::Upper, self.t_max),
+        ]
+    }
+
+    /// Whether every finite limit is zero: the admissible set is then a cone.
+    pub fn is_homogeneous(&self) -> bool {
+        self.bounds()
+            .iter()
+            .all(|(_, _, v)| v.unwrap_or(0.0) == 0.0)
+    }
+}
+
+/// A rigid-block structure with its loads and limits, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArchProblem {
+    pub(super) assembly: Assembly,
+    pub(super) unit_weight: f64,
+    pub(super) limits: InterfaceLimits,
+    pub(super) friction: Option<f64>,
+    pub(super) live_loads: Vec<LiveLoad>,
+}
+
+impl ArchProblem {
+    /// Checks the numbers: unit weight > 0; each limit finite with min ≤ 0 ≤ max (the unloaded
+    /// state must be admissible); friction coefficient finite ≥ 0; loads on existing blocks.
+    pub fn new(
+        assembly: Assembly,
+        unit_weight: f64,
+        limits: InterfaceLimits,
+        friction: Option<f64>,
+        live_loads: Vec<LiveLoad>,
+    ) -> Result<Self, ArchError> {
+        if !(unit_weight.is_finite() && unit_weight > 0.0) {
+            return Err(ArchError::range(
+                ArchParameter::UnitWeight,
+                unit_weight,
+                "a finite number > 0",
+            ));
+        }
+        for &(resultant, bound, value) in &limits.bounds() {
+            if let Some(v) = value {
+                let ok = v.is_finite()
+                    && match bound {
+                        Bound::Lower => v <= 0.0,
+                        Bound::Upper => v >= 0.0,
+                    };
+                if !ok {
+                    let allowed = match bound {
+                        Bound::Lower => "a finite number ≤ 0 or null (unbounded)",
+                        Bound::Upper => "a finite number ≥ 0 or null (unbounded)",
+                    };
+                    return Err(ArchError::range(
+                        ArchParameter::InterfaceLimit { resultant, bound },
+                        v,
+                        allowed,
+                    ));
+                }
+            }
+        }
+        if let Some(mu) = friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(ArchError::range(
+                    ArchParameter::FrictionCoefficient,
+                    mu,
+                    "a finite number ≥ 0 or null (no sliding)",
+                ));
+            }
+        }
+        for (i, load) in live_loads.iter().enumerate() {
+            if load.block >= assembly.blocks.len() {
+                return Err(ArchError::range(
+                    ArchParameter::LoadBlock { index: i },
+                    (load.block + 1) as f64,
+                    format!("a block number 1 ≤ block ≤ {}", assembly.blocks.len()),
+                ));
+            }
+            let values = [load.point.0, load.point.1, load.fx, load.fy, load.moment];
+            if values.iter().any(|v| !v.is_finite()) {
+                return Err(ArchError::range(
+                    ArchParameter::Load { index: i },
+                    f64::NAN,
+                    "finite numbers",
+                ));
+            }
+        }
+        Ok(Self {
+            assembly,
+            unit_weight,
+            limits,
+            friction,
+            live_loads,
+        })
+    }
+
+    /// The blocks and interfaces.
+    pub fn assembly(&self) -> &Assembly {
+        &self.assembly
+    }
+
+    /// The unit weight γ.
+    pub fn unit_weight(&self) -> f64 {
+        self.unit_weight
+    }
+
+    /// The live loads.
+    pub fn live_loads(&self) -> &[LiveLoad] {
+        &self.live_loads
+    }
+}
+
+/// Settings of the interior-point solves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LimitSettings {
+    /// Clarabel's gap and feasibility tolerances (relative). Defaults to 1e-10.
+    pub tolerance: f64,
+    /// A dead-load margin at or below this (a fraction of the total weight) counts as carried.
+    /// Defaults to 1e-9.
+    pub margin_tolerance: f64,
+    /// Interior-point iterations per programme. Defaults to 200.
+    pub max_iterations: u32,
+    /// Time limit of one programme in seconds. Defaults to 30.
+    pub time_limit_secs: f64,
+    /// Which model the programmes are written on. Defaults to [`Formulation::Chain`].
+    pub formulation: Formulation,
+}
+
+/// The model of the limit-analysis programmes; both give the same answers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Formulation {
+    /// Three redundant forces of the chain (four variables; see [`super::chain`]).
+    #[default]
+    Chain,
+    /// Livesley's general assembly: three resultants per interface and the equilibrium rows.
+    Assembly,
+}
+
+impl Default for LimitSettings {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            margin_tolerance: 1e-9,
+            max_iterations: 200,
+            time_limit_secs: 30.0,
+            formulation: Formulation::Chain,
+        }
+    }
+}
+
+/// How a limit analysis ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LimitStatus {
+    /// The load factor was found.
+    Solved,
+    /// Live load only: the dead load is not carried, so there is no live-load factor.
+    DeadLoadNotCarried,
+    /// Live load only: no finite multiple of the live load causes collapse.
+    Unbounded,
+    /// The interior-point method stopped without an answer it can vouch for.
+    SolverFailed(SolverFailure),
+}
+
+/// What a limit analysis found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LimitSolution {
+    /// How it ended.
+    pub status: LimitStatus,
+    /// The dead-load factor λ₀ (dead load) or live-load factor λ (live load), when solved.
+    pub load_factor: Option<f64>,
+    /// Whether the dead load is carried (λ₀ = 1); `None` if that could not be decided.
+    pub dead_load_carried: Option<bool>,
+    /// Dead-load margin δ at full dead load, a fraction of the total weight: negative is a
+    /// reserve (every limit is met with that much to spare), positive a shortfall.
+    pub dead_load_margin: Option<f64>,
+    /// Resultants (q, s, t) per interface in force units at the load factor (empty when there
+    /// is no admissible state to show).
+    pub resultants: Vec<[f64; 3]>,
+    /// The collapse mechanism, when the structure is at its limit.
+    pub mechanism: Option<Mechanism>,
+    /// Interior-point iterations over all programmes.
+    pub iterations: u32,
+    /// Linear programmes solved.
+    pub programmes: usize,
+    /// Wall time of the solves in seconds.
+    pub solve_time_secs: f64,
+}

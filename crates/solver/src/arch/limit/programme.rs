@@ -1,0 +1,264 @@
+//! One linear programme on Clarabel: the general (assembly) form over all resultants, the chain
+//! form over three redundants solved by constraint generation, and Clarabel's status named as a
+//! [`SolverFailure`].
+
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
+    SupportedConeT, ZeroConeT,
+};
+
+use super::super::chain::ChainStatics;
+use super::super::equilibrium::Equilibrium;
+use super::rows::Row;
+use super::LimitSettings;
+use crate::outcome::SolverFailure;
+
+/// Outcome of one programme.
+pub(super) struct Programme {
+    pub status: SolverStatus,
+    pub x: Vec<f64>,
+    pub z: Vec<f64>,
+    pub iterations: u32,
+}
+
+/// One programme over the resultants r and one extra variable x (δ or λ):
+/// min objective·x subject to H r + extra_equilibrium·x = b_eq, the limit rows (each with
+/// `row_extra`·x added), and cap.0·x ≤ cap.1.
+pub(super) struct ProgrammeSpec<'a> {
+    pub extra_equilibrium: &'a [f64],
+    pub b_eq: &'a [f64],
+    pub row_extra: Option<f64>,
+    pub cap: (f64, f64),
+    pub objective: f64,
+}
+
+pub(super) fn solve_programme(
+    eq: &Equilibrium,
+    rows: &[Row],
+    spec: &ProgrammeSpec,
+    settings: &LimitSettings,
+) -> Programme {
+    let ProgrammeSpec {
+        extra_equilibrium,
+        b_eq,
+        row_extra,
+        cap,
+        objective: objective_extra,
+    } = *spec;
+    let n = eq.columns + 1;
+    let extra = eq.columns;
+    let m_eq = eq.rows;
+    let m = m_eq + rows.len() + 1;
+    let mut ti = Vec::with_capacity(eq.triplets.len() + m_eq + 3 * rows.len() + 1);
+    let mut tj = Vec::with_capacity(ti.capacity());
+    let mut tv = Vec::with_capacity(ti.capacity());
+    for &(i, j, v) in &eq.triplets {
+        ti.push(i);
+        tj.push(j);
+        tv.push(v);
+    }
+    for (i, &v) in extra_equilibrium.iter().enumerate() {
+        if v != 0.0 {
+            ti.push(i);
+            tj.push(extra);
+            tv.push(v);
+        }
+    }
+    let mut b = b_eq.to_vec();
+    for (r, row) in rows.iter().enumerate() {
+        for &(j, v) in &row.entries[..row.len] {
+            ti.push(m_eq + r);
+            tj.push(j);
+            tv.push(v);
+        }
+        if let Some(coefficient) = row_extra {
+            ti.push(m_eq + r);
+            tj.push(extra);
+            tv.push(coefficient);
+        }
+        b.push(row.b);
+    }
+    // Cap on the extra variable: cap.0·x_extra ≤ cap.1.
+    ti.push(m - 1);
+    tj.push(extra);
+    tv.push(cap.0);
+    b.push(cap.1);
+    let mut c = vec![0.0; n];
+    c[extra] = objective_extra;
+    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, settings)
+}
+
+/// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq).
+fn run_clarabel(
+    (m, n, m_eq): (usize, usize, usize),
+    (ti, tj, tv): (Vec<usize>, Vec<usize>, Vec<f64>),
+    b: &[f64],
+    c: &[f64],
+    settings: &LimitSettings,
+) -> Programme {
+    let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
+    let p = CscMatrix::zeros((n, n));
+    let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(m_eq), NonnegativeConeT(m - m_eq)];
+    let tol = settings.tolerance;
+    let clarabel_settings = DefaultSettingsBuilder::default()
+        .verbose(false)
+        .max_iter(settings.max_iterations)
+        .time_limit(settings.time_limit_secs)
+        .tol_gap_abs(tol)
+        .tol_gap_rel(tol)
+        .tol_feas(tol)
+        .tol_ktratio(tol.sqrt() * 1e-2)
+        .build()
+        .expect("the settings are within Clarabel's ranges");
+    let mut solver = match DefaultSolver::new(&p, c, &a, b, &cones, clarabel_settings) {
+        Ok(solver) => solver,
+        Err(_) => {
+            return Programme {
+                status: SolverStatus::NumericalError,
+                x: Vec::new(),
+                z: Vec::new(),
+                iterations: 0,
+            }
+        }
+    };
+    solver.solve();
+    let solution = solver.solution;
+    Programme {
+        status: solution.status,
+        x: solution.x,
+        z: solution.z,
+        iterations: solution.iterations,
+    }
+}
+
+/// A programme of the chain formulation over (x₀, x₁, x₂, extra): each limit row a·r_k ≤ b
+/// becomes (D_kᵀa)·x + extra_coefficient(a, k)·extra ≤ b − dead_factor·a·(D_k C_k), plus the
+/// cap cap.0·extra ≤ cap.1; minimise objective·extra.
+///
+/// Only a few rows are active at the optimum (the hinges), so the programme is solved by
+/// constraint generation: start from the rows of about 32 evenly spread interfaces, solve,
+/// add the violated rows that are local maxima of the violation along the chain, repeat until
+/// no row is violated by more than the solver tolerance. The multipliers of rows never added
+/// are zero, exactly as at the optimum of the full programme.
+pub(super) fn solve_chain_programme(
+    chain: &ChainStatics,
+    rows: &[Row],
+    dead_factor: f64,
+    extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
+    (cap, objective): ((f64, f64), f64),
+    settings: &LimitSettings,
+) -> Programme {
+    const MAX_ROUNDS: usize = 40;
+    const MAX_ADDED_PER_ROUND: usize = 256;
+    let dense: Vec<([f64; 4], f64)> = rows
+        .iter()
+        .map(|row| {
+            let (k, a) = row.local();
+            let (d, dead, _) = chain.affine(k);
+            let coefficients = [
+                a[0] * d[0][0] + a[1] * d[1][0] + a[2] * d[2][0],
+                a[0] * d[0][1] + a[1] * d[1][1] + a[2] * d[2][1],
+                a[0] * d[0][2] + a[1] * d[1][2] + a[2] * d[2][2],
+                extra_coefficient(&a, k),
+            ];
+            (coefficients, row.b - dead_factor * dot(&a, &dead))
+        })
+        .collect();
+    let interfaces = chain.interfaces();
+    let per_interface = rows.len() / interfaces.max(1);
+    let stride = (interfaces / 32).max(1);
+    let mut selected: Vec<bool> = rows
+        .iter()
+        .map(|row| row.tag.interface % stride == 0 || row.tag.interface + 1 == interfaces)
+        .collect();
+    let mut c = vec![0.0; 4];
+    c[3] = objective;
+    let mut iterations = 0;
+    for _ in 0..MAX_ROUNDS {
+        let subset: Vec<usize> = (0..rows.len()).filter(|&i| selected[i]).collect();
+        let m = subset.len() + 1;
+        let (mut ti, mut tj, mut tv, mut b) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::with_capacity(m));
+        for (r, &i) in subset.iter().enumerate() {
+            let (coefficients, rhs) = &dense[i];
+            for (j, &v) in coefficients.iter().enumerate() {
+                if v != 0.0 {
+                    ti.push(r);
+                    tj.push(j);
+                    tv.push(v);
+                }
+            }
+            b.push(*rhs);
+        }
+        ti.push(m - 1);
+        tj.push(3);
+        tv.push(cap.0);
+        b.push(cap.1);
+        let mut programme = run_clarabel((m, 4, 0), (ti, tj, tv), &b, &c, settings);
+        iterations += programme.iterations;
+        programme.iterations = iterations;
+        if failure(programme.status).is_some() {
+            return programme;
+        }
+        let x = &programme.x;
+        let violation = |i: usize| {
+            let (a, rhs) = &dense[i];
+            a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] - rhs
+        };
+        let tolerance = settings.tolerance;
+        let mut added: Vec<(f64, usize)> = (0..rows.len())
+            .filter(|&i| !selected[i])
+            .filter_map(|i| {
+                let v = violation(i);
+                let is_peak = [i.checked_sub(per_interface), Some(i + per_interface)]
+                    .into_iter()
+                    .flatten()
+                    .filter(|&j| j < rows.len())
+                    .all(|j| violation(j) <= v);
+                (v > tolerance && is_peak).then_some((v, i))
+            })
+            .collect();
+        if added.is_empty() {
+            // Multipliers of the full programme: zero on the rows never added.
+            let mut z = vec![0.0; rows.len() + 1];
+            for (r, &i) in subset.iter().enumerate() {
+                z[i] = programme.z[r];
+            }
+            z[rows.len()] = programme.z[subset.len()];
+            programme.z = z;
+            return programme;
+        }
+        added.sort_by(|a, b| b.0.total_cmp(&a.0));
+        for &(_, i) in added.iter().take(MAX_ADDED_PER_ROUND) {
+            selected[i] = true;
+        }
+    }
+    Programme {
+        status: SolverStatus::MaxIterations,
+        x: Vec::new(),
+        z: Vec::new(),
+        iterations,
+    }
+}
+
+pub(super) fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub(super) fn failure(status: SolverStatus) -> Option<SolverFailure> {
+    match status {
+        SolverStatus::Solved => None,
+        SolverStatus::AlmostSolved => Some(SolverFailure::ReducedAccuracy),
+        SolverStatus::MaxIterations => Some(SolverFailure::MaxIterations),
+        SolverStatus::MaxTime => Some(SolverFailure::MaxTime),
+        SolverStatus::PrimalInfeasible
+        | SolverStatus::AlmostPrimalInfeasible
+        | SolverStatus::DualInfeasible
+        | SolverStatus::AlmostDualInfeasible => Some(SolverFailure::Infeasible),
+        SolverStatus::Unsolved
+        | SolverStatus::NumericalError
+        | SolverStatus::InsufficientProgress
+        | SolverStatus::CallbackTerminated => Some(SolverFailure::Numerical),
+    }
+}

@@ -1,0 +1,76 @@
+//! The yield rows of the programmes: each finite limit r⁻ ≤ r ≤ r⁺ of an interface resultant as
+//! an inequality a·x ≤ b, and Livesley's friction rows μ(q + s) ∓ t ≥ 0 (§2.7) where friction is
+//! finite. Forces are scaled by the total weight.
+
+use super::super::equilibrium::RESULTANTS_PER_INTERFACE;
+use super::super::mechanism::{Bound, LimitTag, Resultant};
+use super::ArchProblem;
+
+/// An inequality row a·x ≤ b.
+pub(super) struct Row {
+    pub entries: [(usize, f64); 3],
+    pub len: usize,
+    pub b: f64,
+    pub tag: LimitTag,
+}
+
+impl Row {
+    /// The interface of the row and its coefficients on that interface's (q, s, t).
+    pub fn local(&self) -> (usize, [f64; 3]) {
+        let k = self.tag.interface;
+        let mut a = [0.0; 3];
+        for &(j, v) in &self.entries[..self.len] {
+            a[j - RESULTANTS_PER_INTERFACE * k] += v;
+        }
+        (k, a)
+    }
+}
+
+/// The yield rows of every interface, in scaled units (forces divided by the total weight).
+pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
+    let w = force_scale;
+    let mut rows = Vec::new();
+    for k in 0..problem.assembly.interfaces.len() {
+        let col = RESULTANTS_PER_INTERFACE * k;
+        for (resultant, bound, value) in problem.limits.bounds() {
+            let Some(value) = value else { continue };
+            let offset = match resultant {
+                Resultant::Q => 0,
+                Resultant::S => 1,
+                _ => 2,
+            };
+            // Lower: −r ≤ −r⁻; upper: r ≤ r⁺.
+            let sign = match bound {
+                Bound::Lower => -1.0,
+                Bound::Upper => 1.0,
+            };
+            rows.push(Row {
+                entries: [(col + offset, sign), (col, 0.0), (col, 0.0)],
+                len: 1,
+                b: sign * value / w,
+                tag: LimitTag {
+                    interface: k,
+                    resultant,
+                    bound,
+                },
+            });
+        }
+        if let Some(mu) = problem.friction {
+            // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
+            // −v ≤ 0; only where friction is finite.
+            for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
+                rows.push(Row {
+                    entries: [(col, -mu), (col + 1, -mu), (col + 2, t_sign)],
+                    len: 3,
+                    b: 0.0,
+                    tag: LimitTag {
+                        interface: k,
+                        resultant,
+                        bound: Bound::Lower,
+                    },
+                });
+            }
+        }
+    }
+    rows
+}

@@ -1,0 +1,111 @@
+//! F independent of the number of slices: the slices are doubled from the requested count until
+//! F changes by less than a relative tolerance (the accuracy control of the service; the README's
+//! F-against-N table shows the error falling as 1/N², so each doubling cuts it about fourfold).
+
+use std::num::NonZeroUsize;
+use std::time::Instant;
+
+use super::spencer::{solve_spencer, SlopeProblem, SpencerSettings, SpencerSolution};
+use super::SlopeError;
+use crate::outcome::SolverFailure;
+
+/// Settings of a slice refinement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefinementSettings {
+    /// Relative change of F between two doublings that counts as settled.
+    pub tolerance: f64,
+    /// No more slices than this. Defaults to 10000.
+    pub max_slices: usize,
+    /// No doubling starts after this instant. Defaults to none.
+    pub deadline: Option<Instant>,
+    /// Settings of each Spencer solution.
+    pub spencer: SpencerSettings,
+}
+
+impl RefinementSettings {
+    /// Refinement to `tolerance` with the other settings at their defaults.
+    pub fn new(tolerance: f64) -> Self {
+        Self {
+            tolerance,
+            max_slices: 10_000,
+            deadline: None,
+            spencer: SpencerSettings::default(),
+        }
+    }
+}
+
+/// F at one slice count.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefinementStep {
+    /// Number of slices.
+    pub slices: usize,
+    /// F with that many slices; `None` where the equations had no solution.
+    pub factor_of_safety: Option<f64>,
+}
+
+/// How a refinement ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RefinementStatus {
+    /// The last doubling changed F by less than the tolerance.
+    Settled,
+    /// The slice limit was reached first.
+    SliceLimit,
+    /// The deadline was reached first.
+    SolverFailed(SolverFailure),
+}
+
+/// The finest problem solved, its solution and the steps that led there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RefinedSolution {
+    /// How it ended.
+    pub status: RefinementStatus,
+    /// The problem at the last slice count.
+    pub problem: SlopeProblem,
+    /// Its solution.
+    pub solution: SpencerSolution,
+    /// F at each slice count tried, the last one answered.
+    pub steps: Vec<RefinementStep>,
+}
+
+/// Solves `problem`, then doubles its slices until F settles within the tolerance.
+pub fn refine_slices(
+    problem: SlopeProblem,
+    settings: &RefinementSettings,
+) -> Result<RefinedSolution, SlopeError> {
+    let mut solution = solve_spencer(&problem, &settings.spencer);
+    let mut problem = problem;
+    let mut steps = vec![RefinementStep {
+        slices: problem.geometry.slices.len(),
+        factor_of_safety: solution.factor_of_safety,
+    }];
+    let status = loop {
+        let doubled = NonZeroUsize::new(2 * problem.geometry.slices.len())
+            .filter(|n| n.get() <= settings.max_slices);
+        let Some(doubled) = doubled else {
+            break RefinementStatus::SliceLimit;
+        };
+        if settings.deadline.is_some_and(|d| Instant::now() > d) {
+            break RefinementStatus::SolverFailed(SolverFailure::MaxTime);
+        }
+        let finer = problem.with_slices(doubled)?;
+        let finer_solution = solve_spencer(&finer, &settings.spencer);
+        steps.push(RefinementStep {
+            slices: doubled.get(),
+            factor_of_safety: finer_solution.factor_of_safety,
+        });
+        let settled = match (solution.factor_of_safety, finer_solution.factor_of_safety) {
+            (Some(a), Some(b)) => (a - b).abs() <= settings.tolerance * b,
+            _ => false,
+        };
+        (problem, solution) = (finer, finer_solution);
+        if settled {
+            break RefinementStatus::Settled;
+        }
+    };
+    Ok(RefinedSolution {
+        status,
+        problem,
+        solution,
+        steps,
+    })
+}

@@ -1,0 +1,93 @@
+//! Everything behind a converged (F, θ): the forces on every slice, the line of thrust (moments
+//! about each base middle, Spencer 1973) and the flags an engineer should look at.
+
+use super::equations::{Equations, SliceResultant};
+use super::{
+    EquationsSolution, SliceForces, SlopeProblem, SpencerSolution, SpencerStatus, ThrustPoint,
+    SMALL_DENOMINATOR,
+};
+
+/// Forces, line of thrust and flags at the converged (F, θ).
+pub(super) fn describe(
+    problem: &SlopeProblem,
+    equations: &Equations,
+    f: f64,
+    theta: f64,
+    solved: &EquationsSolution,
+) -> SpencerSolution {
+    let g = &problem.geometry;
+    let soil = &problem.soil;
+    let residuals = equations.evaluate(f, theta);
+    let (sin_t, cos_t) = theta.sin_cos();
+    let mut slice_forces = Vec::with_capacity(g.slices.len());
+    let mut thrust_line = Vec::with_capacity(g.slices.len().saturating_sub(1));
+    let mut small_m_alpha_slices = Vec::new();
+    let mut negative_effective_normal_slices = Vec::new();
+    // Inter-slice force and the height of its point of action on the left boundary of the
+    // current slice; the lower end carries none.
+    let (mut z_left, mut y_left) = (0.0, g.lower_end.1);
+    let n = g.slices.len();
+    for (i, (slice, t)) in g.slices.iter().zip(&equations.terms).enumerate() {
+        let SliceResultant { q, m_alpha, .. } = Equations::q(t, f, (sin_t, cos_t));
+        let weight = soil.unit_weight * slice.area;
+        let pore_pressure = soil.pore_pressure_ratio * soil.unit_weight * slice.height_middle;
+        // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
+        let normal_force = t.a_n + q * (t.alpha - theta).sin();
+        let effective_normal_force = normal_force - t.pore_force;
+        let shear_force =
+            (soil.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
+        // Z_{i+1} = Z_i − Q_i: Q is the net push of the two neighbours along (cos θ, sin θ).
+        let z_right = z_left - q;
+        if m_alpha < SMALL_DENOMINATOR {
+            small_m_alpha_slices.push(i);
+        }
+        if effective_normal_force < 0.0 {
+            negative_effective_normal_slices.push(i);
+        }
+        slice_forces.push(SliceForces {
+            weight,
+            pore_pressure,
+            normal_force,
+            effective_normal_force,
+            shear_force,
+            interslice_resultant: q,
+            interslice_force_right: if i + 1 == n { 0.0 } else { z_right },
+            m_alpha,
+        });
+        if i + 1 < n {
+            // Moments about the base middle (1973): left force +Z_i·(cos θ, sin θ) at
+            // (x_left, y_left), right force −Z_{i+1}·(cos θ, sin θ) at (x_right, y_right), plus
+            // the known moment, sum to zero.
+            let (xb, yb) = slice.base_middle;
+            let left = (slice.x_left - xb) * z_left * sin_t - (y_left - yb) * z_left * cos_t;
+            let y_right = (z_right.abs() * cos_t.abs() > f64::MIN_POSITIVE)
+                .then(|| {
+                    yb + ((slice.x_right - xb) * z_right * sin_t - left - t.moment)
+                        / (z_right * cos_t)
+                })
+                .filter(|y| y.is_finite());
+            let top = problem.geometry.embankment.ground(slice.x_right);
+            thrust_line.push(ThrustPoint {
+                boundary: i + 1,
+                x: slice.x_right,
+                y: y_right,
+                force: z_right,
+                is_inside_slice: y_right.is_some_and(|y| y >= slice.base_right_y && y <= top),
+            });
+            (z_left, y_left) = (z_right, y_right.unwrap_or(yb));
+        }
+    }
+    SpencerSolution {
+        status: SpencerStatus::Converged,
+        factor_of_safety: Some(f),
+        theta_rad: Some(theta),
+        bishop_factor_of_safety: solved.bishop,
+        iterations: solved.iterations,
+        used_fallback: solved.used_fallback,
+        slice_forces,
+        thrust_line,
+        small_m_alpha_slices,
+        negative_effective_normal_slices,
+        residual: Some(residuals.force.abs().max(residuals.moment.abs())).filter(|r| r.is_finite()),
+    }
+}

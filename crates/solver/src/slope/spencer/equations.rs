@@ -1,0 +1,241 @@
+//! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
+//! equation alone at a fixed θ (SPEC §2.2; the equations are written out in [`super`]).
+
+use super::{SlopeProblem, F_RANGE};
+use crate::numerics::brent;
+
+/// Per-slice constants of the equations, computed once.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct SliceTerms {
+    pub alpha: f64,
+    /// sin α and cos α, so that the angle differences need no trigonometry per evaluation.
+    pub sin_alpha: f64,
+    pub cos_alpha: f64,
+    pub a_t: f64,
+    pub a_n: f64,
+    pub pore_force: f64,
+    /// c'·l + (A_n − u·l)·tan φ': the resisting force at F = 1 without the Q term.
+    pub resistance: f64,
+    pub tan_phi: f64,
+    /// Base middle relative to the circle centre.
+    pub arm: (f64, f64),
+    /// Moment of the known forces about the base middle.
+    pub moment: f64,
+}
+
+/// Value and derivatives of the two scaled residuals.
+pub(super) struct Residuals {
+    pub force: f64,
+    pub moment: f64,
+    pub d_force: (f64, f64),
+    pub d_moment: (f64, f64),
+    pub min_m_alpha: f64,
+}
+
+/// Q of one slice (SPEC §2.2) with its derivatives and the denominator m_α.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct SliceResultant {
+    pub q: f64,
+    pub dq_df: f64,
+    pub dq_dtheta: f64,
+    pub m_alpha: f64,
+}
+
+pub(super) struct Equations {
+    pub terms: Vec<SliceTerms>,
+    force_scale: f64,
+    moment_scale: f64,
+    known_moment: f64,
+}
+
+impl Equations {
+    pub fn new(problem: &SlopeProblem) -> Self {
+        let g = &problem.geometry;
+        let soil = &problem.soil;
+        let tan_phi = soil.friction_angle_rad.tan();
+        let mut total_weight = 0.0;
+        let mut terms: Vec<SliceTerms> = g
+            .slices
+            .iter()
+            .map(|s| {
+                let weight = soil.unit_weight * s.area;
+                total_weight += weight;
+                let (sin_a, cos_a) = s.base_inclination_rad.sin_cos();
+                let fx = -problem.seismic.kh * weight;
+                let fy = -(1.0 + problem.seismic.kv) * weight;
+                let pore_force =
+                    soil.pore_pressure_ratio * soil.unit_weight * s.height_middle * s.base_length;
+                let a_n = fx * sin_a - fy * cos_a;
+                SliceTerms {
+                    alpha: s.base_inclination_rad,
+                    sin_alpha: sin_a,
+                    cos_alpha: cos_a,
+                    a_t: -fx * cos_a - fy * sin_a,
+                    a_n,
+                    pore_force,
+                    resistance: soil.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
+                    tan_phi,
+                    arm: (s.base_middle.0 - g.centre.0, s.base_middle.1 - g.centre.1),
+                    // Horizontal seismic force at the centroid height: r × F = −dy·F_x.
+                    moment: -(s.centroid.1 - s.base_middle.1) * fx,
+                }
+            })
+            .collect();
+        for load in &problem.external_loads {
+            let t = &mut terms[load.slice];
+            let (sin_a, cos_a) = t.alpha.sin_cos();
+            let a_n = load.fx * sin_a - load.fy * cos_a;
+            t.a_t += -load.fx * cos_a - load.fy * sin_a;
+            t.a_n += a_n;
+            t.resistance += a_n * tan_phi;
+            t.moment += load.moment;
+        }
+        let known_moment = terms.iter().map(|t| t.moment).sum();
+        let force_scale = total_weight.max(f64::MIN_POSITIVE);
+        Self {
+            terms,
+            force_scale,
+            moment_scale: force_scale * g.radius,
+            known_moment,
+        }
+    }
+
+    /// Whether φ' = 0 (then the moment equation alone fixes F).
+    pub fn is_frictionless(&self) -> bool {
+        self.terms.iter().all(|t| t.tan_phi == 0.0)
+    }
+
+    /// Q and its derivatives for one slice (m_α may be ≤ 0: the callers check it).
+    pub fn q(t: &SliceTerms, f: f64, (sin_t, cos_t): (f64, f64)) -> SliceResultant {
+        // sin(α−θ) and cos(α−θ) from the stored sin α, cos α.
+        let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
+        let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
+        let numerator = t.a_t - t.resistance / f;
+        let m_alpha = c + d * t.tan_phi / f;
+        let q = numerator / m_alpha;
+        let dq_df =
+            (t.resistance * m_alpha + numerator * d * t.tan_phi) / (f * f * m_alpha * m_alpha);
+        let dq_dtheta = -numerator * (d - c * t.tan_phi / f) / (m_alpha * m_alpha);
+        SliceResultant {
+            q,
+            dq_df,
+            dq_dtheta,
+            m_alpha,
+        }
+    }
+
+    pub fn evaluate(&self, f: f64, theta: f64) -> Residuals {
+        let (sin_t, cos_t) = theta.sin_cos();
+        let mut r = Residuals {
+            force: 0.0,
+            moment: -self.known_moment,
+            d_force: (0.0, 0.0),
+            d_moment: (0.0, 0.0),
+            min_m_alpha: f64::INFINITY,
+        };
+        for t in &self.terms {
+            let SliceResultant {
+                q,
+                dq_df,
+                dq_dtheta: dq_dt,
+                m_alpha,
+            } = Self::q(t, f, (sin_t, cos_t));
+            let arm = t.arm.0 * sin_t - t.arm.1 * cos_t;
+            let d_arm = t.arm.0 * cos_t + t.arm.1 * sin_t;
+            r.force += q;
+            r.moment += q * arm;
+            r.d_force.0 += dq_df;
+            r.d_force.1 += dq_dt;
+            r.d_moment.0 += dq_df * arm;
+            r.d_moment.1 += dq_dt * arm + q * d_arm;
+            r.min_m_alpha = r.min_m_alpha.min(m_alpha);
+        }
+        let (fs, ms) = (self.force_scale, self.moment_scale);
+        r.force /= fs;
+        r.moment /= ms;
+        r.d_force = (r.d_force.0 / fs, r.d_force.1 / fs);
+        r.d_moment = (r.d_moment.0 / ms, r.d_moment.1 / ms);
+        r
+    }
+
+    /// The interval of F on which every m_α(F, θ) is positive, clipped to [`F_RANGE`].
+    fn admissible_f(&self, theta: f64) -> Option<(f64, f64)> {
+        let (mut lo, mut hi) = F_RANGE;
+        let (sin_t, cos_t) = theta.sin_cos();
+        for t in &self.terms {
+            let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
+            let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
+            let dt = d * t.tan_phi;
+            // m_α = c + dt/F > 0
+            if c > 0.0 {
+                if dt < 0.0 {
+                    lo = lo.max(-dt / c);
+                }
+            } else if dt > 0.0 {
+                hi = hi.min(dt / -c);
+            } else {
+                return None;
+            }
+        }
+        // Stay clear of the pole itself.
+        let (lo, hi) = (lo * (1.0 + 1e-9), hi * (1.0 - 1e-9));
+        (lo < hi).then_some((lo, hi))
+    }
+
+    /// F solving the force (`moment = false`) or moment equation at fixed θ: the crossing from
+    /// negative to positive residual (more driving than resisting as F grows).
+    pub fn f_at_theta(&self, theta: f64, moment: bool, evaluations: &mut usize) -> Option<f64> {
+        let (lo, hi) = self.admissible_f(theta)?;
+        // Newton from F = 1 first (a handful of evaluations for ordinary slopes); the residual
+        // must cross from negative to positive, as on the bracketed path below.
+        let mut f = 1.0f64.clamp(lo, hi);
+        for _ in 0..30 {
+            let r = self.evaluate(f, theta);
+            *evaluations += 1;
+            let (value, slope) = if moment {
+                (r.moment, r.d_moment.0)
+            } else {
+                (r.force, r.d_force.0)
+            };
+            if !(value.is_finite() && slope > 0.0) || r.min_m_alpha <= 0.0 {
+                break;
+            }
+            let next = f - value / slope;
+            if !(next > lo && next < hi) {
+                break;
+            }
+            if (next - f).abs() <= 1e-14 * next {
+                return Some(next);
+            }
+            f = next;
+        }
+        let residual = |f: f64| {
+            let r = self.evaluate(f, theta);
+            if moment {
+                r.moment
+            } else {
+                r.force
+            }
+        };
+        const SAMPLES: usize = 48;
+        let ratio = (hi / lo).powf(1.0 / SAMPLES as f64);
+        let (mut a, mut fa) = (lo, residual(lo));
+        *evaluations += 1;
+        for i in 1..=SAMPLES {
+            let b = if i == SAMPLES {
+                hi
+            } else {
+                lo * ratio.powi(i as i32)
+            };
+            let fb = residual(b);
+            *evaluations += 1;
+            if fa.is_finite() && fb.is_finite() && fa < 0.0 && fb >= 0.0 {
+                let root = brent(residual, a, b, fa, fb, 1e-14 * b, 200)?;
+                *evaluations += root.evaluations;
+                return Some(root.x);
+            }
+            (a, fa) = (b, fb);
+        }
+        None
+    }
+}

@@ -1,0 +1,197 @@
+//! Spencer's method: the factor of safety F and the inclination θ of parallel inter-slice
+//! forces that satisfy both force and moment equilibrium (Spencer 1967; moment equation of the
+//! 1973 revision, about each base middle).
+//!
+//! # Equations (SPEC §2.2)
+//! Slice i carries known forces (weight W, seismic k_h·W towards the toe and k_v·W downwards,
+//! external F_x, F_y): A_n is their component normal to the base (pressing it), A_t their
+//! component along the base in the driving sense. With the base shear mobilised as
+//! S = (c'·l + (N − u·l)·tan φ')/F, the resultant Q of the two inter-slice forces, taken
+//! positive along (cos θ, sin θ), is
+//!
+//! ```text
+//!   Q = (A_t − [c'·l + (A_n − u·l)·tan φ'] / F) / (cos(α−θ) + sin(α−θ)·tan φ' / F)
+//! ```
+//!
+//! and equilibrium needs Σ Q = 0 (forces; the Q are parallel) and
+//! Σ Q·((x_b − x_c)·sin θ − (y_b − y_c)·cos θ) = Σ M (moments about the circle centre, which
+//! the sum of the per-slice moment equations about the base middles (x_b, y_b) reduces to; M
+//! are the moments of the known forces about the base middles). At θ = 0 the moment equation
+//! alone is Bishop's simplified method.
+//!
+//! Vertical body forces (W, k_v·W) act on the vertical through the base middle, the usual
+//! method-of-slices idealisation with which the thesis reproduces Spencer's numbers; the
+//! horizontal seismic force acts at the height of the slice centroid.
+//!
+//! # Solution
+//! Damped Newton on (F, θ) with analytic derivatives, step limits and a check that every
+//! denominator m_α = cos(α−θ) + sin(α−θ)·tan φ'/F stays positive; if it fails, a bracketing
+//! fallback: for each θ on a grid, F_f(θ) and F_m(θ) from the two equations separately, then
+//! Brent's method on F_f − F_m (Spencer's own figure: the answer is where the curves cross).
+
+mod describe;
+mod equations;
+mod newton;
+mod problem;
+mod solution;
+#[cfg(test)]
+mod tests;
+
+use describe::describe;
+use equations::Equations;
+use newton::{fallback, newton};
+
+pub use problem::{ExternalLoad, Seismic, SlopeProblem, Soil};
+pub use solution::{SliceForces, SpencerSettings, SpencerSolution, SpencerStatus, ThrustPoint};
+
+/// Denominators m_α below this are reported: the base normal force becomes unreliable there
+/// (a common guard in slope programs; Duncan & Wright recommend 0.2).
+pub const SMALL_DENOMINATOR: f64 = 0.2;
+
+/// A scaled residual this small is rounding: the equations are solved.
+const ROUNDING_RESIDUAL: f64 = 1e3 * f64::EPSILON;
+
+/// The largest scaled residual (force / ΣW, moment / (ΣW·R)) accepted at convergence.
+const SOLVED_RESIDUAL: f64 = 1e-9;
+
+/// Range of admissible factors of safety searched by the bracketing steps.
+const F_RANGE: (f64, f64) = (1e-6, 1e6);
+
+/// Spencer's F for one slip surface without the per-slice forces: what a search needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpencerFactor {
+    /// The factor of safety.
+    pub factor_of_safety: f64,
+    /// θ in radians; `None` when φ' = 0 and F is from moment equilibrium alone
+    /// ([`SpencerStatus::MomentOnly`]).
+    pub theta_rad: Option<f64>,
+}
+
+/// Spencer's (F, θ) alone, without the per-slice forces: what a search over circles needs.
+/// `None` when the equations have no solution.
+pub fn solve_spencer_factor(
+    problem: &SlopeProblem,
+    settings: &SpencerSettings,
+) -> Option<SpencerFactor> {
+    let equations = Equations::new(problem);
+    let solved = solve_equations(&equations, settings);
+    match (solved.root, solved.bishop) {
+        (Some((f, theta)), _) => Some(SpencerFactor {
+            factor_of_safety: f,
+            theta_rad: Some(theta),
+        }),
+        // φ' = 0: the moment equation alone is exact (see SpencerStatus::MomentOnly).
+        (None, Some(f)) if equations.is_frictionless() => Some(SpencerFactor {
+            factor_of_safety: f,
+            theta_rad: None,
+        }),
+        (None, _) => None,
+    }
+}
+
+/// What [`solve_equations`] found.
+struct EquationsSolution {
+    /// (F, θ) solving both equations.
+    root: Option<(f64, f64)>,
+    /// Bishop's F (θ = 0, moment equation), when it has a root.
+    bishop: Option<f64>,
+    /// Newton iterations plus fallback evaluations.
+    iterations: usize,
+    /// Whether the bracketing fallback was needed.
+    used_fallback: bool,
+}
+
+/// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
+fn solve_equations(equations: &Equations, settings: &SpencerSettings) -> EquationsSolution {
+    let mut evaluations = 0;
+    let bishop = equations.f_at_theta(0.0, true, &mut evaluations);
+    let start = (bishop.unwrap_or(1.0), 0.0);
+    let mut iterations = 0;
+    let mut used_fallback = false;
+    let mut root = newton(equations, start, settings, &mut iterations);
+    if root.is_none() {
+        used_fallback = true;
+        root = fallback(equations, settings, &mut iterations);
+    }
+    EquationsSolution {
+        root,
+        bishop,
+        iterations,
+        used_fallback,
+    }
+}
+
+/// Solves Spencer's two equations for the slip circle of `problem`.
+pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> SpencerSolution {
+    let equations = Equations::new(problem);
+    let solved = solve_equations(&equations, settings);
+    match (solved.root, solved.bishop) {
+        (Some((f, theta)), _) => describe(problem, &equations, f, theta, &solved),
+        (None, Some(bishop)) if equations.is_frictionless() => {
+            let mut s = describe(problem, &equations, bishop, 0.0, &solved);
+            s.status = SpencerStatus::MomentOnly;
+            s.theta_rad = None;
+            s.thrust_line.clear();
+            s
+        }
+        (None, _) => SpencerSolution {
+            status: SpencerStatus::NoSolution,
+            factor_of_safety: None,
+            theta_rad: None,
+            bishop_factor_of_safety: solved.bishop,
+            iterations: solved.iterations,
+            used_fallback: solved.used_fallback,
+            slice_forces: vec![SliceForces::default(); problem.geometry.slices.len()],
+            thrust_line: Vec::new(),
+            small_m_alpha_slices: Vec::new(),
+            negative_effective_normal_slices: Vec::new(),
+            residual: None,
+        },
+    }
+}
+
+/// Spencer's figure: F_f(θ) from the force equation alone and F_m(θ) from the moment equation
+/// alone, against θ; they cross at the answer.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FactorCurves {
+    /// Inclinations θ in degrees.
+    pub theta_deg: Vec<f64>,
+    /// F_f(θ); `None` where the force equation has no root with positive m_α.
+    pub force_factor: Vec<Option<f64>>,
+    /// F_m(θ); `None` where the moment equation has no root with positive m_α.
+    pub moment_factor: Vec<Option<f64>>,
+}
+
+/// Half-width of the θ range of [`factor_curves_around`], in whole degrees.
+const CURVE_HALF_WIDTH_DEG: i32 = 30;
+
+/// F_f(θ) and F_m(θ) at whole degrees from θ* − 30° to θ* + 30° (θ* rounded), within |θ| < 89°.
+pub fn factor_curves_around(problem: &SlopeProblem, theta_rad: f64) -> FactorCurves {
+    let centre = theta_rad.to_degrees().round();
+    let theta_deg: Vec<f64> = (-CURVE_HALF_WIDTH_DEG..=CURVE_HALF_WIDTH_DEG)
+        .map(|i| centre + f64::from(i))
+        .filter(|t| t.abs() < 89.0)
+        .collect();
+    factor_curves(problem, theta_deg)
+}
+
+/// F_f(θ) and F_m(θ) at the given θ in degrees.
+pub fn factor_curves(problem: &SlopeProblem, theta_deg: Vec<f64>) -> FactorCurves {
+    let equations = Equations::new(problem);
+    let mut evaluations = 0;
+    let (force_factor, moment_factor) = theta_deg
+        .iter()
+        .map(|t| {
+            let theta = t.to_radians();
+            (
+                equations.f_at_theta(theta, false, &mut evaluations),
+                equations.f_at_theta(theta, true, &mut evaluations),
+            )
+        })
+        .unzip();
+    FactorCurves {
+        theta_deg,
+        force_factor,
+        moment_factor,
+    }
+}

@@ -1,0 +1,204 @@
+//! The data of one Spencer analysis: the soil, the seismic coefficients, known loads on slices,
+//! and the slip circle cut into slices on the embankment — validated on construction.
+
+use std::num::NonZeroUsize;
+
+use super::super::geometry::{Embankment, SlipCircle, SlopeGeometry};
+use super::super::{check_range, SlopeError, SlopeParameter};
+
+/// Soil properties, common to all slices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Soil {
+    pub(super) unit_weight: f64,
+    pub(super) cohesion: f64,
+    pub(super) friction_angle_rad: f64,
+    pub(super) pore_pressure_ratio: f64,
+}
+
+impl Soil {
+    /// Soil with unit weight γ > 0, cohesion c' ≥ 0, friction angle 0 ≤ φ' < 90° and pore
+    /// pressure ratio 0 ≤ r_u ≤ 1; c' and φ' must not both be zero (a soil with no strength).
+    pub fn new(
+        unit_weight: f64,
+        cohesion: f64,
+        friction_angle_deg: f64,
+        pore_pressure_ratio: f64,
+    ) -> Result<Self, SlopeError> {
+        let unit_weight = check_range(
+            SlopeParameter::UnitWeight,
+            unit_weight,
+            0.0,
+            true,
+            f64::MAX,
+            "a finite number > 0",
+        )?;
+        let cohesion = check_range(
+            SlopeParameter::Cohesion,
+            cohesion,
+            0.0,
+            false,
+            f64::MAX,
+            "a finite number ≥ 0",
+        )?;
+        let friction_angle_deg = check_range(
+            SlopeParameter::FrictionAngle,
+            friction_angle_deg,
+            0.0,
+            false,
+            89.9,
+            "0 ≤ φ' ≤ 89.9 degrees",
+        )?;
+        let pore_pressure_ratio = check_range(
+            SlopeParameter::PorePressureRatio,
+            pore_pressure_ratio,
+            0.0,
+            false,
+            1.0,
+            "0 ≤ r_u ≤ 1",
+        )?;
+        if cohesion == 0.0 && friction_angle_deg == 0.0 {
+            return Err(SlopeError::OutOfRange {
+                parameter: SlopeParameter::Cohesion,
+                value: cohesion,
+                allowed: "> 0 when soil.friction_angle_deg is 0 (a soil with neither cohesion nor friction has no strength)",
+            });
+        }
+        Ok(Self {
+            unit_weight,
+            cohesion,
+            friction_angle_rad: friction_angle_deg.to_radians(),
+            pore_pressure_ratio,
+        })
+    }
+
+    /// Unit weight γ.
+    pub fn unit_weight(&self) -> f64 {
+        self.unit_weight
+    }
+}
+
+/// Pseudo-static seismic coefficients: k_h·W towards the toe and k_v·W downwards, at the slice
+/// centroids.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Seismic {
+    /// Horizontal coefficient k_h (≥ 0 acts towards the toe).
+    pub kh: f64,
+    /// Vertical coefficient k_v (positive downwards).
+    pub kv: f64,
+}
+
+/// A known force on one slice, applied at the middle of its base (the thesis' F_x, F_y, M1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExternalLoad {
+    /// Index of the slice, 0 at the lower end.
+    pub slice: usize,
+    /// Horizontal force, positive towards +x (the crest side).
+    pub fx: f64,
+    /// Vertical force, positive upwards.
+    pub fy: f64,
+    /// Moment of the load about the middle of the base, counter-clockwise positive.
+    pub moment: f64,
+}
+
+/// One slip circle of one embankment with its soil and loads, ready to solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SlopeProblem {
+    /// Geometry of the embankment, the circle and the slices.
+    pub geometry: SlopeGeometry,
+    /// The soil.
+    pub soil: Soil,
+    /// Seismic coefficients (zero for a static analysis).
+    pub seismic: Seismic,
+    /// External loads on slices.
+    pub external_loads: Vec<ExternalLoad>,
+}
+
+impl SlopeProblem {
+    /// Builds the problem, validating the circle against the embankment and the loads against
+    /// the slices.
+    pub fn new(
+        embankment: Embankment,
+        circle: SlipCircle,
+        slices: NonZeroUsize,
+        soil: Soil,
+        seismic: Seismic,
+        external_loads: Vec<ExternalLoad>,
+    ) -> Result<Self, SlopeError> {
+        check_range(
+            SlopeParameter::SeismicKh,
+            seismic.kh,
+            -10.0,
+            false,
+            10.0,
+            "-10 ≤ kh ≤ 10",
+        )?;
+        check_range(
+            SlopeParameter::SeismicKv,
+            seismic.kv,
+            -0.99,
+            false,
+            10.0,
+            "-0.99 ≤ kv ≤ 10",
+        )?;
+        for (index, load) in external_loads.iter().enumerate() {
+            if load.slice >= slices.get() {
+                return Err(SlopeError::OutOfRange {
+                    parameter: SlopeParameter::ExternalLoadSlice { index },
+                    value: (load.slice + 1) as f64,
+                    allowed: "the number of an existing slice, 1 ≤ slice ≤ slices",
+                });
+            }
+            let finite = "a finite number";
+            check_range(
+                SlopeParameter::ExternalLoad { index },
+                load.fx,
+                f64::MIN,
+                false,
+                f64::MAX,
+                finite,
+            )?;
+            check_range(
+                SlopeParameter::ExternalLoad { index },
+                load.fy,
+                f64::MIN,
+                false,
+                f64::MAX,
+                finite,
+            )?;
+            check_range(
+                SlopeParameter::ExternalLoad { index },
+                load.moment,
+                f64::MIN,
+                false,
+                f64::MAX,
+                finite,
+            )?;
+        }
+        let geometry = SlopeGeometry::new(embankment, circle, slices)?;
+        Ok(Self {
+            geometry,
+            soil,
+            seismic,
+            external_loads,
+        })
+    }
+
+    /// The same problem cut into `slices` slices (external loads are given per slice, so a
+    /// problem with them cannot be re-cut: it is refused).
+    pub fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
+        if !self.external_loads.is_empty() {
+            return Err(SlopeError::Conflict {
+                parameter: SlopeParameter::ExternalLoads,
+                reason: "loads are given per slice: the slices cannot change".to_owned(),
+            });
+        }
+        Self::new(
+            self.geometry.embankment,
+            self.geometry.circle,
+            slices,
+            self.soil,
+            self.seismic,
+            Vec::new(),
+        )
+    }
+}

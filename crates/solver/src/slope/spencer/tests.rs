@@ -1,0 +1,195 @@
+use std::num::NonZeroUsize;
+
+use super::*;
+use crate::slope::{Embankment, SlipCircle, SlopeError, SlopeParameter};
+
+/// Spencer (1967) example in the thesis' SI units: H = 100 ft, 2:1, c'/(γH) = 0.02, φ' = 40°,
+/// r_u = 0.5, centre X = 31.6 ft, Y = 209.2 ft from the toe.
+fn spencer_example(n: usize, unit_weight: f64, cohesion_scale: f64) -> SlopeProblem {
+    let height = 30.48;
+    SlopeProblem::new(
+        Embankment::new(height, 60.96).unwrap(),
+        SlipCircle {
+            x: 9.63168,
+            y: 63.76416,
+            lower_end_factor: 0.0,
+        },
+        NonZeroUsize::new(n).unwrap(),
+        Soil::new(
+            unit_weight,
+            0.02 * unit_weight * height * cohesion_scale,
+            40.0,
+            0.5,
+        )
+        .unwrap(),
+        Seismic::default(),
+        Vec::new(),
+    )
+    .unwrap()
+}
+
+fn solve(p: &SlopeProblem) -> (f64, f64, SpencerSolution) {
+    let s = solve_spencer(p, &SpencerSettings::default());
+    assert_eq!(s.status, SpencerStatus::Converged);
+    (
+        s.factor_of_safety.unwrap(),
+        s.theta_rad.unwrap().to_degrees(),
+        s,
+    )
+}
+
+#[test]
+fn spencer_1967_example_converged() {
+    // Spencer (1967) example, converged F = 1.0695, θ = 22.43° (SPEC §2.3); ±2e-4, ±0.01°.
+    for n in [500, 1000] {
+        let (f, theta, _) = solve(&spencer_example(n, 10.0, 1.0));
+        assert!((f - 1.0695).abs() < 2e-4, "N = {n}: F = {f}");
+        assert!((theta - 22.43).abs() < 0.01, "N = {n}: θ = {theta}");
+    }
+}
+
+#[test]
+fn thesis_table_of_f_against_number_of_slices() {
+    // Thesis §5.6, F and θ for N = 10 … 1000, printed to 5 and 3 decimals: half a unit in
+    // the last printed digit.
+    let table = [
+        (10, 1.07188, 22.735),
+        (20, 1.07068, 22.491),
+        (50, 1.06974, 22.439),
+        (100, 1.06958, 22.432),
+        (200, 1.06954, 22.431),
+        (500, 1.06952, 22.430),
+        (1000, 1.06952, 22.430),
+    ];
+    for (n, f_ref, theta_ref) in table {
+        let (f, theta, _) = solve(&spencer_example(n, 10.0, 1.0));
+        assert!(
+            (f - f_ref).abs() <= 5e-6,
+            "N = {n}: F = {f}, thesis {f_ref}"
+        );
+        assert!(
+            (theta - theta_ref).abs() <= 5e-4,
+            "N = {n}: θ = {theta}, thesis {theta_ref}"
+        );
+    }
+}
+
+#[test]
+fn bishop_simplified_for_the_spencer_circle() {
+    // SPEC §2.3: Bishop's simplified F for the same circle ≈ 1.040 (1.0397 to 4 decimals).
+    let (_, _, s) = solve(&spencer_example(1000, 10.0, 1.0));
+    let bishop = s.bishop_factor_of_safety.unwrap();
+    assert!((bishop - 1.0397).abs() < 1e-4, "Bishop F = {bishop}");
+}
+
+#[test]
+fn f_depends_on_cohesion_and_unit_weight_only_through_their_ratio() {
+    // SPEC §2.3: scaling c' and γ together leaves F and θ unchanged (1e-10: rounding).
+    let (f1, t1, _) = solve(&spencer_example(200, 10.0, 1.0));
+    for gamma in [1e-6, 1.0, 18.5, 1e6] {
+        let (f, t, _) = solve(&spencer_example(200, gamma, 1.0));
+        assert!((f - f1).abs() < 1e-10 * f1, "γ = {gamma}: {f} vs {f1}");
+        assert!((t - t1).abs() < 1e-8, "γ = {gamma}: {t} vs {t1}");
+    }
+    // And doubling c' alone does change it (upwards).
+    let (f2, _, _) = solve(&spencer_example(200, 10.0, 2.0));
+    assert!(f2 > f1 + 0.01);
+}
+
+#[test]
+fn f_converges_as_slices_are_added() {
+    // Chords cut the arc with an error O(N⁻²); the slices that straddle the kinks of the
+    // ground add a wobble of the same order. For this circle |F_N − F_4000|·N² stays below
+    // 1 from N = 10 on (0.46 at N = 20, 0.67 at N = 320).
+    let (converged, _, _) = solve(&spencer_example(4000, 10.0, 1.0));
+    for n in [10, 20, 40, 80, 160, 320, 640] {
+        let (f, _, _) = solve(&spencer_example(n, 10.0, 1.0));
+        let error = (f - converged).abs();
+        assert!(
+            error * (n * n) as f64 <= 1.0,
+            "N = {n}: F = {f}, error {error}"
+        );
+    }
+}
+
+#[test]
+fn returned_forces_satisfy_both_equilibrium_equations() {
+    // Independent check of the solution: resolve every slice's forces (W, N, S, Q) in x and
+    // y, and sum the moments about the centre. 1e-9 of the total weight: rounding.
+    let p = spencer_example(100, 10.0, 1.0);
+    let (_, theta, s) = solve(&p);
+    let theta = theta.to_radians();
+    let total_weight: f64 = s.slice_forces.iter().map(|f| f.weight).sum();
+    for (slice, forces) in p.geometry.slices.iter().zip(&s.slice_forces) {
+        let (sin_a, cos_a) = slice.base_inclination_rad.sin_cos();
+        // Normal N along (−sin α, cos α), shear S up the slope along (cos α, sin α).
+        let fx = -forces.normal_force * sin_a
+            + forces.shear_force * cos_a
+            + forces.interslice_resultant * theta.cos();
+        let fy = -forces.weight
+            + forces.normal_force * cos_a
+            + forces.shear_force * sin_a
+            + forces.interslice_resultant * theta.sin();
+        assert!(fx.abs() < 1e-9 * total_weight, "fx = {fx}");
+        assert!(fy.abs() < 1e-9 * total_weight, "fy = {fy}");
+    }
+    let sum_q: f64 = s.slice_forces.iter().map(|f| f.interslice_resultant).sum();
+    assert!(sum_q.abs() < 1e-9 * total_weight);
+    // The inter-slice force dies out at the upper exit and the thrust line is inside the
+    // mass over the bulk of the slices (Spencer 1973: near the lower third point).
+    let last = s.slice_forces.last().unwrap();
+    assert_eq!(last.interslice_force_right, 0.0);
+    let inside = s.thrust_line.iter().filter(|t| t.is_inside_slice).count();
+    assert!(
+        inside * 10 >= s.thrust_line.len() * 9,
+        "{inside} of {}",
+        s.thrust_line.len()
+    );
+}
+
+#[test]
+fn thrust_line_near_lower_third_point() {
+    // Spencer (1967): the line of thrust passes close to the lower third point of the
+    // inter-slice boundaries. Check the middle half of the boundaries lies within the lower
+    // 0.2–0.45 of the boundary height.
+    let p = spencer_example(200, 10.0, 1.0);
+    let (_, _, s) = solve(&p);
+    let n = s.thrust_line.len();
+    for t in &s.thrust_line[n / 4..3 * n / 4] {
+        let slice = &p.geometry.slices[t.boundary - 1];
+        let top = p.geometry.embankment.ground(t.x);
+        let ratio = (t.y.unwrap() - slice.base_right_y) / (top - slice.base_right_y);
+        assert!(
+            (0.2..0.45).contains(&ratio),
+            "boundary {}: {ratio}",
+            t.boundary
+        );
+    }
+}
+
+#[test]
+fn one_slice_is_solved_or_reported_honestly() {
+    // N = 1: a single slice cannot satisfy both equations unless Q = 0; whatever the status,
+    // a converged answer must satisfy the equations.
+    let s = solve_spencer(&spencer_example(1, 10.0, 1.0), &SpencerSettings::default());
+    match s.status {
+        SpencerStatus::Converged => assert!(s.residual.unwrap() < 1e-9),
+        SpencerStatus::NoSolution => assert!(s.factor_of_safety.is_none()),
+        // φ' = 40° here: the moment-only answer is for φ' = 0 alone.
+        SpencerStatus::MomentOnly => panic!("moment-only answer with friction"),
+    }
+}
+
+#[test]
+fn soil_without_strength_is_rejected() {
+    assert!(matches!(
+        Soil::new(10.0, 0.0, 0.0, 0.0),
+        Err(SlopeError::OutOfRange {
+            parameter: SlopeParameter::Cohesion,
+            ..
+        })
+    ));
+    assert!(Soil::new(10.0, 1.0, 90.0, 0.0).is_err());
+    assert!(Soil::new(10.0, 1.0, 30.0, 1.5).is_err());
+    assert!(Soil::new(-1.0, 1.0, 30.0, 0.0).is_err());
+}

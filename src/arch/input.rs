@@ -1,0 +1,280 @@
+//! The one validation of an arch request: JSON values → the solver's typed inputs. Every range
+//! the API states is checked here (naming the field); what the solver's own constructors check
+//! (thickness below twice the radius, shared faces of a chain, loads on existing blocks) comes
+//! back from them as a typed parameter that [`crate::fields`] names.
+
+use std::num::NonZeroUsize;
+
+use thrustline_solver::arch::{
+    ArchProblem, Assembly, CircularArch, InterfaceLimits, LimitSettings, LiveLoad, VoussoirShape,
+};
+
+use super::request::{
+    DeadLoadRequest, GeometryDto, InterfaceLimitsDto, LiveLoadRequest, LoadDto, VoussoirDto,
+};
+use crate::error::ApiError;
+use crate::limits::{
+    MAX_BASE_ANGLE_DEG, MAX_FORCE, MAX_FRICTION_COEFFICIENT, MAX_LENGTH, MAX_LOADS, MAX_MAGNITUDE,
+    MAX_VOUSSOIRS, MIN_LENGTH, SOLVER_TOLERANCE,
+};
+use crate::validation::{count, finite, number};
+
+/// A validated dead- or live-load request, ready for the solver.
+#[derive(Debug, Clone)]
+pub struct ArchInput {
+    /// The structure, its loads and limits.
+    pub problem: ArchProblem,
+    /// The interior-point settings, within the service's time limit.
+    pub settings: LimitSettings,
+    /// Whether the voussoirs are annular sectors (drawn with arcs).
+    pub is_curved: bool,
+}
+
+/// The material part of every arch request, validated.
+#[derive(Debug, Clone, Copy)]
+pub struct Material {
+    /// Unit weight γ.
+    pub unit_weight: f64,
+    /// Limits on the interface resultants.
+    pub limits: InterfaceLimits,
+    /// Coulomb friction coefficient; `None` = no sliding.
+    pub friction: Option<f64>,
+}
+
+impl DeadLoadRequest {
+    /// Validates the request into the solver's input.
+    pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
+        let material = material(
+            self.unit_weight,
+            &self.interface_limits,
+            self.friction_coefficient,
+        )?;
+        input(
+            &self.geometry,
+            material,
+            &[],
+            self.formulation.solver(),
+            (self.solver_tolerance, time_limit_secs),
+        )
+    }
+}
+
+impl LiveLoadRequest {
+    /// Validates the request into the solver's input.
+    pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
+        count("loads", self.loads.len(), 1, MAX_LOADS)?;
+        let material = material(
+            self.unit_weight,
+            &self.interface_limits,
+            self.friction_coefficient,
+        )?;
+        input(
+            &self.geometry,
+            material,
+            &self.loads,
+            self.formulation.solver(),
+            (self.solver_tolerance, time_limit_secs),
+        )
+    }
+}
+
+fn input(
+    geometry: &GeometryDto,
+    material: Material,
+    loads: &[LoadDto],
+    formulation: thrustline_solver::arch::Formulation,
+    (tolerance, time_limit_secs): (f64, f64),
+) -> Result<ArchInput, ApiError> {
+    let assembly = assembly(geometry)?;
+    let live_loads = live_loads(&assembly, loads)?;
+    let problem = ArchProblem::new(
+        assembly,
+        material.unit_weight,
+        material.limits,
+        material.friction,
+        live_loads,
+    )?;
+    let (min, max) = SOLVER_TOLERANCE;
+    let settings = LimitSettings {
+        time_limit_secs,
+        formulation,
+        tolerance: number("solver_tolerance", tolerance, min, false, max)?,
+        ..LimitSettings::default()
+    };
+    Ok(ArchInput {
+        problem,
+        settings,
+        is_curved: matches!(
+            geometry,
+            GeometryDto::Circular {
+                voussoir: VoussoirDto::Curved,
+                ..
+            }
+        ),
+    })
+}
+
+/// Validates the unit weight, `interface_limits` (missing fields take Heyman's values, `null`
+/// is unbounded) and `friction_coefficient` (null: no sliding).
+pub fn material(
+    unit_weight: f64,
+    limits: &InterfaceLimitsDto,
+    friction: Option<f64>,
+) -> Result<Material, ApiError> {
+    let unit_weight = number("unit_weight", unit_weight, 0.0, true, MAX_MAGNITUDE)?;
+    let heyman = InterfaceLimits::heyman();
+    let limit = |field: &str, given: Option<Option<f64>>, default: Option<f64>, lower: bool| {
+        let field = format!("interface_limits.{field}");
+        match given.unwrap_or(default) {
+            None => Ok(None),
+            Some(v) if lower => number(&field, v, -MAX_FORCE, false, 0.0).map(Some),
+            Some(v) => number(&field, v, 0.0, false, MAX_FORCE).map(Some),
+        }
+    };
+    let limits = InterfaceLimits {
+        q_min: limit("q_min", limits.q_min, heyman.q_min, true)?,
+        q_max: limit("q_max", limits.q_max, heyman.q_max, false)?,
+        s_min: limit("s_min", limits.s_min, heyman.s_min, true)?,
+        s_max: limit("s_max", limits.s_max, heyman.s_max, false)?,
+        t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
+        t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
+    };
+    let friction = friction
+        .map(|mu| {
+            number(
+                "friction_coefficient",
+                mu,
+                0.0,
+                false,
+                MAX_FRICTION_COEFFICIENT,
+            )
+        })
+        .transpose()?;
+    Ok(Material {
+        unit_weight,
+        limits,
+        friction,
+    })
+}
+
+/// The fields of a circular arch (`geometry.kind = circular`) as the request gives them.
+#[derive(Debug, Clone, Copy)]
+pub struct CircularFields {
+    /// Middle radius.
+    pub radius: f64,
+    /// Voussoir thickness.
+    pub thickness: f64,
+    /// Number of voussoirs.
+    pub voussoirs: usize,
+    /// Left base angle in degrees.
+    pub left_base_angle_deg: f64,
+    /// Right base angle in degrees.
+    pub right_base_angle_deg: f64,
+    /// Voussoir shape.
+    pub voussoir: VoussoirDto,
+}
+
+/// Validates a circular arch (its thickness against the radius is `CircularArch::new`'s check).
+pub fn circular_arch(fields: CircularFields) -> Result<CircularArch, ApiError> {
+    let radius = number(
+        "geometry.radius",
+        fields.radius,
+        MIN_LENGTH,
+        false,
+        MAX_LENGTH,
+    )?;
+    let n = count("geometry.voussoirs", fields.voussoirs, 1, MAX_VOUSSOIRS)?;
+    let angle = |field: &str, value: f64| number(field, value, -90.0, true, MAX_BASE_ANGLE_DEG);
+    let left = angle("geometry.left_base_angle_deg", fields.left_base_angle_deg)?;
+    let right = angle("geometry.right_base_angle_deg", fields.right_base_angle_deg)?;
+    let shape = match fields.voussoir {
+        VoussoirDto::Curved => VoussoirShape::Curved,
+        VoussoirDto::Quadrilateral => VoussoirShape::Quadrilateral,
+    };
+    let n = NonZeroUsize::new(n)
+        .ok_or_else(|| ApiError::invalid("geometry.voussoirs", "must be at least 1"))?;
+    Ok(CircularArch::new(
+        radius,
+        fields.thickness,
+        n,
+        left,
+        right,
+        shape,
+    )?)
+}
+
+fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
+    match geometry {
+        &GeometryDto::Circular {
+            radius,
+            thickness,
+            voussoirs,
+            left_base_angle_deg,
+            right_base_angle_deg,
+            voussoir,
+        } => Ok(circular_arch(CircularFields {
+            radius,
+            thickness,
+            voussoirs,
+            left_base_angle_deg,
+            right_base_angle_deg,
+            voussoir,
+        })?
+        .assembly()),
+        GeometryDto::Blocks { blocks } => {
+            count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
+            for (b, block) in blocks.iter().enumerate() {
+                for (c, [x, y]) in block.corners.iter().enumerate() {
+                    let field = format!("geometry.blocks[{b}].corners[{c}]");
+                    number(&field, *x, -MAX_LENGTH, false, MAX_LENGTH)?;
+                    number(&field, *y, -MAX_LENGTH, false, MAX_LENGTH)?;
+                }
+            }
+            let corners: Vec<[(f64, f64); 4]> = blocks
+                .iter()
+                .map(|b| b.corners.map(|[x, y]| (x, y)))
+                .collect();
+            Ok(Assembly::from_quadrilaterals(&corners)?)
+        }
+    }
+}
+
+/// The live loads, 1-based blocks in, 0-based out; the point defaults to the block centroid.
+fn live_loads(assembly: &Assembly, loads: &[LoadDto]) -> Result<Vec<LiveLoad>, ApiError> {
+    let n = assembly.blocks.len();
+    let live_loads = loads
+        .iter()
+        .enumerate()
+        .map(|(i, load)| {
+            let field = |name: &str| format!("loads[{i}].{name}");
+            let block = count(&field("block"), load.block, 1, n)? - 1;
+            let centroid = assembly.blocks[block].centroid;
+            let coordinate = |name: &str, value: Option<f64>, default: f64| {
+                value.map_or(Ok(default), |v| finite(&field(name), v))
+            };
+            let force =
+                |name: &str, value: f64| number(&field(name), value, -MAX_FORCE, false, MAX_FORCE);
+            Ok(LiveLoad {
+                block,
+                point: (
+                    coordinate("x", load.x, centroid.0)?,
+                    coordinate("y", load.y, centroid.1)?,
+                ),
+                fx: force("fx", load.fx)?,
+                fy: force("fy", load.fy)?,
+                moment: force("moment", load.moment)?,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    if !loads.is_empty()
+        && live_loads
+            .iter()
+            .all(|l| l.fx == 0.0 && l.fy == 0.0 && l.moment == 0.0)
+    {
+        return Err(ApiError::invalid(
+            "loads",
+            "every load is zero: give at least one non-zero fx, fy or moment",
+        ));
+    }
+    Ok(live_loads)
+}

@@ -1,0 +1,181 @@
+//! `POST /arch/dead-load` and `POST /arch/live-load`: limit analysis of rigid-block arches
+//! (Livesley 1978; SPEC §1, §3).
+//!
+//! Blocks and interfaces are numbered from 1 in requests and responses, in order of increasing
+//! polar angle for circular arches (interface 1 at the right springing), as the thesis prints
+//! them. Angles are polar angles in degrees (for block chains: the direction of the joint from
+//! its intrados to its extrados end).
+
+pub mod drawing;
+pub mod input;
+pub mod minimum_thickness;
+pub mod request;
+pub mod response;
+
+use axum::extract::State;
+use thrustline_solver::arch::{solve_dead_load, solve_live_load, thrust_line};
+
+use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::svg::Svg;
+use crate::AppState;
+use input::ArchInput;
+use request::{DeadLoadRequest, LiveLoadRequest};
+use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
+
+/// Dead-load limit analysis (Livesley's λ₀).
+#[utoipa::path(
+    post,
+    path = "/arch/dead-load",
+    tag = "arch",
+    request_body = DeadLoadRequest,
+    responses(
+        (status = 200, description = "The dead-load factor, mechanism and thrust line", body = DeadLoadResponse),
+        ProblemResponses,
+    )
+)]
+pub async fn dead_load(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<DeadLoadRequest>,
+) -> Result<ApiJson<DeadLoadResponse>, ApiError> {
+    let solved = solve(
+        &state,
+        Problem::DeadLoad,
+        request.validate(state.solve_time_limit_secs())?,
+    )
+    .await?;
+    Ok(ApiJson(DeadLoadResponse::new(&solved)))
+}
+
+/// Dead-load limit analysis drawn: voussoirs, thrust line, hinges, mechanism.
+#[utoipa::path(
+    post,
+    path = "/arch/dead-load/svg",
+    tag = "arch",
+    request_body = DeadLoadRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn dead_load_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<DeadLoadRequest>,
+) -> Result<Svg, ApiError> {
+    let solved = solve(
+        &state,
+        Problem::DeadLoad,
+        request.validate(state.solve_time_limit_secs())?,
+    )
+    .await?;
+    let title = match solved.solution.load_factor {
+        Some(f) => format!(
+            "Dead load: λ₀ = {f}{}",
+            if f >= 1.0 {
+                " (stands)"
+            } else {
+                " (collapses)"
+            }
+        ),
+        None => "Dead load: no answer".to_owned(),
+    };
+    Ok(Svg(drawing::draw(&solved, &title)))
+}
+
+/// Live-load limit analysis (Livesley's λ).
+#[utoipa::path(
+    post,
+    path = "/arch/live-load",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    responses(
+        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
+        ProblemResponses,
+    )
+)]
+pub async fn live_load(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<LiveLoadRequest>,
+) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
+    let solved = solve(
+        &state,
+        Problem::LiveLoad,
+        request.validate(state.solve_time_limit_secs())?,
+    )
+    .await?;
+    Ok(ApiJson(LiveLoadResponse::new(&solved)))
+}
+
+/// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.
+#[utoipa::path(
+    post,
+    path = "/arch/live-load/svg",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn live_load_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<LiveLoadRequest>,
+) -> Result<Svg, ApiError> {
+    let solved = solve(
+        &state,
+        Problem::LiveLoad,
+        request.validate(state.solve_time_limit_secs())?,
+    )
+    .await?;
+    let title = match (
+        solved.solution.load_factor,
+        solved.solution.dead_load_carried,
+    ) {
+        (Some(f), _) => format!("Live load: λ = {f:.4}"),
+        (None, Some(false)) => "Live load: the dead load is not carried".to_owned(),
+        (None, _) => "Live load: no collapse load".to_owned(),
+    };
+    Ok(Svg(drawing::draw(&solved, &title)))
+}
+
+/// Which of Livesley's two programmes.
+#[derive(Debug, Clone, Copy)]
+enum Problem {
+    DeadLoad,
+    LiveLoad,
+}
+
+/// Solves on the pool; the solver's time limit becomes the 422 of the README's outcome rule.
+async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<SolvedArch, ApiError> {
+    let (solved, elapsed) = state
+        .pool
+        .run(move || {
+            let solution = match which {
+                Problem::DeadLoad => Ok(solve_dead_load(&input.problem, &input.settings)),
+                Problem::LiveLoad => solve_live_load(&input.problem, &input.settings),
+            };
+            (input, solution)
+        })
+        .await?;
+    let (input, solution) = solved;
+    let solution = solution?;
+    tracing::info!(
+        problem = ?which,
+        blocks = input.problem.assembly().blocks.len(),
+        iterations = solution.iterations,
+        solve_ms = elapsed.as_secs_f64() * 1e3,
+        load_factor = solution.load_factor,
+        "arch solved"
+    );
+    let status = ArchStatusDto::try_from(solution.status).map_err(|_| ApiError::OverTimeLimit {
+        field: "geometry".to_owned(),
+        seconds: state.solve_time_limit_secs(),
+        advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
+    })?;
+    let thrust_line = thrust_line(input.problem.assembly(), &solution.resultants);
+    Ok(SolvedArch {
+        input,
+        solution,
+        status,
+        thrust_line,
+    })
+}

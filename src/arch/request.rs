@@ -1,0 +1,264 @@
+//! The arch requests as clients send them (serde + OpenAPI types). [`super::input`] turns them
+//! into the solver's validated inputs; nothing else reads them.
+//!
+//! The three arch routes share the material and the solver controls: [`arch_request!`]
+//! declares them once.
+
+use serde::{Deserialize, Deserializer, Serialize};
+use thrustline_solver::arch::Formulation;
+use utoipa::ToSchema;
+
+/// Shape of the voussoirs of a circular arch.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum VoussoirDto {
+    /// Annular sectors (curved intrados and extrados; exact centroid).
+    #[default]
+    Curved,
+    /// Straight intrados and extrados between the corners (polygon centroid).
+    Quadrilateral,
+}
+
+/// The model of the limit-analysis programmes.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum FormulationDto {
+    /// Three redundant forces of the chain, with constraint generation.
+    #[default]
+    Chain,
+    /// Livesley's general assembly: three resultants per interface and equilibrium rows.
+    Assembly,
+}
+
+impl FormulationDto {
+    /// The solver's formulation.
+    pub fn solver(self) -> Formulation {
+        match self {
+            Self::Chain => Formulation::Chain,
+            Self::Assembly => Formulation::Assembly,
+        }
+    }
+}
+
+/// One block of an explicit chain.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BlockCornersDto {
+    /// Corners [x, y] in the order intrados-start, extrados-start, extrados-end, intrados-end;
+    /// a block's start face is the previous block's end face.
+    #[schema(schema_with = corners_schema)]
+    pub corners: [[f64; 2]; 4],
+}
+
+/// Four [x, y] points.
+fn corners_schema() -> utoipa::openapi::schema::Array {
+    use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Type};
+    let point = ArrayBuilder::new()
+        .items(ObjectBuilder::new().schema_type(Type::Number))
+        .min_items(Some(2))
+        .max_items(Some(2));
+    ArrayBuilder::new()
+        .items(point)
+        .min_items(Some(4))
+        .max_items(Some(4))
+        .description(Some(
+            "Corners [x, y]: intrados-start, extrados-start, extrados-end, intrados-end",
+        ))
+        .examples([serde_json::json!([
+            [9.5, 0.0],
+            [10.5, 0.0],
+            [10.5, 1.0],
+            [9.5, 1.0]
+        ])])
+        .build()
+}
+
+/// The structure: the thesis' circular arch, or any chain of quadrilateral blocks.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum GeometryDto {
+    /// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
+    /// 180° − B (left springing), N voussoirs of equal angle.
+    Circular {
+        /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
+        #[schema(minimum = 1e-9, maximum = 1e9, example = 10.0)]
+        radius: f64,
+        /// Voussoir thickness D, 0 < D < 2R.
+        #[schema(exclusive_minimum = 0.0, example = 1.0748)]
+        thickness: f64,
+        /// Number of voussoirs N, 1 ≤ N ≤ 10000.
+        #[schema(minimum = 1, maximum = 10000, example = 1800)]
+        voussoirs: usize,
+        /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
+        /// horseshoe). Defaults to 0.
+        #[serde(default)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        left_base_angle_deg: f64,
+        /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
+        #[serde(default)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        right_base_angle_deg: f64,
+        /// Voussoir shape. Defaults to `curved`.
+        #[serde(default)]
+        voussoir: VoussoirDto,
+    },
+    /// A chain of quadrilateral blocks; the first block's start face and the last block's end
+    /// face rest on supports.
+    Blocks {
+        /// The blocks, 1 to 10000 of them, in order.
+        #[schema(min_items = 1, max_items = 10000)]
+        blocks: Vec<BlockCornersDto>,
+    },
+}
+
+/// Limits on the interface resultants (absolute forces). A missing field takes Heyman's value
+/// (q_min = s_min = 0, the rest unbounded); `null` means unbounded.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InterfaceLimitsDto {
+    /// Lower limit of q, the normal force at the extrados end (≤ 0; 0 = no tension).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    pub q_min: Option<Option<f64>>,
+    /// Upper limit of q (≥ 0; crushing).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub q_max: Option<Option<f64>>,
+    /// Lower limit of s, the normal force at the intrados end (≤ 0; 0 = no tension).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    pub s_min: Option<Option<f64>>,
+    /// Upper limit of s (≥ 0; crushing).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub s_max: Option<Option<f64>>,
+    /// Lower limit of the shear t (≤ 0).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, maximum = 0.0)]
+    pub t_min: Option<Option<f64>>,
+    /// Upper limit of the shear t (≥ 0).
+    #[serde(default, deserialize_with = "present")]
+    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    pub t_max: Option<Option<f64>>,
+}
+
+/// Tells a field that is present (possibly `null`) from one that is absent.
+fn present<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<Option<f64>>, D::Error> {
+    Option::<f64>::deserialize(deserializer).map(Some)
+}
+
+/// A live load: a force and a moment on one block.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LoadDto {
+    /// Block number (1-based).
+    #[schema(minimum = 1, maximum = 10000, example = 5)]
+    pub block: usize,
+    /// x of the point of application. Defaults to the block centroid.
+    #[serde(default)]
+    pub x: Option<f64>,
+    /// y of the point of application. Defaults to the block centroid.
+    #[serde(default)]
+    pub y: Option<f64>,
+    /// Horizontal force component. Defaults to 0.
+    #[serde(default)]
+    pub fx: f64,
+    /// Vertical force component (up positive). Defaults to 0.
+    #[serde(default)]
+    #[schema(example = -1.0)]
+    pub fy: f64,
+    /// Applied moment, counter-clockwise positive. Defaults to 0.
+    #[serde(default)]
+    pub moment: f64,
+}
+
+/// Declares an arch request: the route's own fields, then the material every arch route shares
+/// (unit weight, interface limits, friction), documented once.
+macro_rules! arch_request {
+    ($(#[$attr:meta])* pub struct $name:ident { $($(#[$field_attr:meta])* pub $field:ident: $ty:ty,)* }) => {
+        $(#[$attr])*
+        pub struct $name {
+            $($(#[$field_attr])* pub $field: $ty,)*
+            /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
+            #[serde(default = "unit")]
+            #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, example = 1.0)]
+            pub unit_weight: f64,
+            /// Limits on the interface resultants. Defaults to Heyman's (no tension, no
+            /// crushing).
+            #[serde(default)]
+            pub interface_limits: InterfaceLimitsDto,
+            /// Coulomb friction coefficient μ ≥ 0 at every interface; null = no sliding.
+            /// Defaults to null.
+            #[serde(default)]
+            #[schema(minimum = 0.0, maximum = 1000000.0)]
+            pub friction_coefficient: Option<f64>,
+        }
+    };
+}
+pub(crate) use arch_request;
+
+arch_request! {
+    /// Livesley's dead-load problem: does the structure carry its own weight?
+    #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schema(example = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800,
+                     "left_base_angle_deg": 0.0, "right_base_angle_deg": 0.0, "voussoir": "curved"},
+        "unit_weight": 1.0,
+        "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null, "t_min": null, "t_max": null},
+        "friction_coefficient": null
+    }))]
+    pub struct DeadLoadRequest {
+        /// The structure.
+        pub geometry: GeometryDto,
+        /// Which model the programmes are written on: `chain` (three redundant forces, the
+        /// default and fastest) or `assembly` (Livesley's general formulation, three unknowns per
+        /// interface). Both give the same answer; the choice is for cross-checking.
+        #[serde(default)]
+        pub formulation: FormulationDto,
+        /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults
+        /// to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to
+        /// 1e-7 (see the README's accuracy tables).
+        #[serde(default = "default_solver_tolerance")]
+        #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+        pub solver_tolerance: f64,
+    }
+}
+
+arch_request! {
+    /// Livesley's live-load problem: the factor on the live loads at collapse.
+    #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schema(example = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+        "unit_weight": 1.0,
+        "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
+    }))]
+    pub struct LiveLoadRequest {
+        /// The structure.
+        pub geometry: GeometryDto,
+        /// Which model the programmes are written on: `chain` (three redundant forces, the
+        /// default and fastest) or `assembly` (Livesley's general formulation, three unknowns per
+        /// interface). Both give the same answer; the choice is for cross-checking.
+        #[serde(default)]
+        pub formulation: FormulationDto,
+        /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults
+        /// to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to
+        /// 1e-7 (see the README's accuracy tables).
+        #[serde(default = "default_solver_tolerance")]
+        #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+        pub solver_tolerance: f64,
+        /// The live loads (1 to 10000), multiplied together by the load factor.
+        #[schema(min_items = 1, max_items = 10000)]
+        pub loads: Vec<LoadDto>,
+    }
+}
+
+/// The default unit weight.
+pub(crate) fn unit() -> f64 {
+    1.0
+}
+
+fn default_solver_tolerance() -> f64 {
+    1e-10
+}

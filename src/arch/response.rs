@@ -1,0 +1,373 @@
+//! The arch answers, built whole from the solver's results: serde enums for every coded string,
+//! blocks and interfaces numbered from 1, angles in degrees.
+
+use serde::Serialize;
+use thrustline_solver::arch::{
+    Bound, HingeSide, LimitSolution, LimitStatus, Mechanism, Resultant, SolverFailure, ThrustPoint,
+};
+use utoipa::ToSchema;
+
+use super::input::ArchInput;
+use super::request::FormulationDto;
+
+/// A resultant of an interface.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ResultantDto {
+    /// Normal force at the extrados end.
+    Q,
+    /// Normal force at the intrados end.
+    S,
+    /// Shear.
+    T,
+    /// μ(q + s) − t (friction).
+    U,
+    /// μ(q + s) + t (friction).
+    V,
+}
+
+impl From<Resultant> for ResultantDto {
+    fn from(resultant: Resultant) -> Self {
+        match resultant {
+            Resultant::Q => Self::Q,
+            Resultant::S => Self::S,
+            Resultant::T => Self::T,
+            Resultant::U => Self::U,
+            Resultant::V => Self::V,
+        }
+    }
+}
+
+/// Which limit of a resultant.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum BoundDto {
+    /// The lower limit (no tension, friction).
+    Lower,
+    /// The upper limit (crushing, shear capacity).
+    Upper,
+}
+
+/// Where a hinge forms.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum HingeSideDto {
+    /// At the intrados end of the joint.
+    Intrados,
+    /// At the extrados end of the joint.
+    Extrados,
+}
+
+impl From<HingeSide> for HingeSideDto {
+    fn from(side: HingeSide) -> Self {
+        match side {
+            HingeSide::Intrados => Self::Intrados,
+            HingeSide::Extrados => Self::Extrados,
+        }
+    }
+}
+
+/// An active limit of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ActiveConstraintDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// The resultant: q, s (normal forces at the extrados/intrados ends), t (shear), u, v
+    /// (friction: μ(q+s) ∓ t).
+    pub resultant: ResultantDto,
+    /// Which limit: lower or upper.
+    pub bound: BoundDto,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// Where the hinge forms, for q and s at their lower limits: q → intrados, s → extrados.
+    pub hinge: Option<HingeSideDto>,
+    /// The multiplier (plastic rate), with velocities normalised to a fastest corner speed of 1.
+    pub multiplier: f64,
+}
+
+/// A hinge of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct HingeDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// intrados or extrados.
+    pub location: HingeSideDto,
+    /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
+    pub rotation: f64,
+}
+
+/// Virtual velocity of one block in the mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct BlockVelocityDto {
+    /// Block number (1-based).
+    pub block: usize,
+    /// Velocity of the centroid in x.
+    pub u: f64,
+    /// Velocity of the centroid in y.
+    pub v: f64,
+    /// Rotation rate (counter-clockwise).
+    pub rotation: f64,
+}
+
+/// The collapse mechanism, normalised so that the fastest block corner moves at speed 1.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MechanismDto {
+    /// Velocity of every block.
+    pub blocks: Vec<BlockVelocityDto>,
+}
+
+/// The resultant at one interface.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct InterfaceThrustPointDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// x of the point of action of the normal force; null where it vanishes.
+    pub x: Option<f64>,
+    /// y of the point of action; null where it vanishes.
+    pub y: Option<f64>,
+    /// Normal force q + s (compression positive).
+    pub normal_force: f64,
+    /// Shear force t.
+    pub shear_force: f64,
+    /// Distance of the point of action from the middle of the joint, towards the extrados.
+    pub eccentricity: Option<f64>,
+}
+
+/// How an arch solve ended.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ArchStatusDto {
+    /// The load factor was found.
+    Solved,
+    /// No finite live load causes collapse.
+    Unbounded,
+    /// The dead load is not carried, so there is no live-load factor.
+    DeadLoadNotCarried,
+    /// The interior-point method reached only reduced accuracy: no factor reported.
+    ReducedAccuracy,
+    /// The interior-point method reached its iteration limit: no factor reported.
+    MaxIterations,
+    /// The interior-point method failed numerically: no factor reported.
+    NumericalError,
+    /// The interior-point method reported the programme infeasible (which the formulations
+    /// exclude): no factor reported.
+    Infeasible,
+}
+
+impl TryFrom<LimitStatus> for ArchStatusDto {
+    type Error = SolverFailure;
+
+    /// The status of a solution; the time limit is not one (the service answers it 422).
+    fn try_from(status: LimitStatus) -> Result<Self, SolverFailure> {
+        Ok(match status {
+            LimitStatus::Solved => Self::Solved,
+            LimitStatus::DeadLoadNotCarried => Self::DeadLoadNotCarried,
+            LimitStatus::Unbounded => Self::Unbounded,
+            LimitStatus::SolverFailed(failure) => match failure {
+                SolverFailure::ReducedAccuracy => Self::ReducedAccuracy,
+                SolverFailure::MaxIterations => Self::MaxIterations,
+                SolverFailure::Numerical => Self::NumericalError,
+                SolverFailure::Infeasible => Self::Infeasible,
+                SolverFailure::MaxTime => return Err(failure),
+            },
+        })
+    }
+}
+
+/// How the solve ended.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SolverDto {
+    /// solved; unbounded (no finite live load causes collapse); dead_load_not_carried;
+    /// reduced_accuracy, max_iterations, numerical_error, infeasible (the interior-point method
+    /// stopped without an answer it can vouch for: no factor reported).
+    pub status: ArchStatusDto,
+    /// Interior-point iterations over all linear programmes.
+    pub iterations: u32,
+    /// Linear programmes solved.
+    pub programmes: usize,
+    /// Wall time of the solve in milliseconds.
+    pub time_ms: f64,
+    /// The formulation used: chain or assembly.
+    pub formulation: FormulationDto,
+    /// The interior-point tolerance used.
+    pub tolerance: f64,
+}
+
+/// Everything common to the dead- and live-load answers.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ArchOutcomeDto {
+    /// Whether the structure carries its own weight (λ₀ = 1); null if that could not be decided.
+    pub stable: Option<bool>,
+    /// Dead-load margin at full dead load, as a fraction of the total weight: negative is a
+    /// reserve (every limit met with that much to spare), positive a shortfall.
+    pub dead_load_margin: Option<f64>,
+    /// The limits active in the collapse mechanism (empty when nothing collapses).
+    pub active_constraints: Vec<ActiveConstraintDto>,
+    /// The hinges of the mechanism.
+    pub hinges: Vec<HingeDto>,
+    /// Interfaces that slide in the mechanism.
+    pub sliding_interfaces: Vec<usize>,
+    /// Interfaces that crush in the mechanism.
+    pub crushing_interfaces: Vec<usize>,
+    /// The collapse mechanism; null when nothing collapses.
+    pub mechanism: Option<MechanismDto>,
+    /// True when the mechanism slides under Coulomb friction: the linear programme assumes an
+    /// associated flow rule, so the load factor may over-estimate the true one (Livesley
+    /// §2.7–2.9).
+    pub friction_may_overestimate: bool,
+    /// The line of thrust of the admissible state at the load factor (empty when there is none).
+    pub thrust_line: Vec<InterfaceThrustPointDto>,
+    /// How the solve ended.
+    pub solver: SolverDto,
+}
+
+/// Answer to the dead-load problem.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct DeadLoadResponse {
+    /// λ₀ ≤ 1, the largest fraction of the dead load that can be carried; null if the solver
+    /// failed.
+    #[schema(example = 1.0)]
+    pub dead_load_factor: Option<f64>,
+    /// Details.
+    #[serde(flatten)]
+    pub outcome: ArchOutcomeDto,
+}
+
+/// Answer to the live-load problem.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct LiveLoadResponse {
+    /// λ, the factor on the live loads at collapse; null when the dead load is not carried, no
+    /// finite factor causes collapse, or the solver failed.
+    pub load_factor: Option<f64>,
+    /// Details.
+    #[serde(flatten)]
+    pub outcome: ArchOutcomeDto,
+}
+
+/// A solved arch request: its input, the solution, its status and the line of thrust.
+pub struct SolvedArch {
+    /// The validated request.
+    pub input: ArchInput,
+    /// What the solver found.
+    pub solution: LimitSolution,
+    /// Its status, the time limit excluded.
+    pub status: ArchStatusDto,
+    /// The points of action at the interfaces.
+    pub thrust_line: Vec<ThrustPoint>,
+}
+
+impl DeadLoadResponse {
+    /// The answer to a solved dead-load request.
+    pub fn new(solved: &SolvedArch) -> Self {
+        Self {
+            dead_load_factor: solved.solution.load_factor,
+            outcome: ArchOutcomeDto::new(solved),
+        }
+    }
+}
+
+impl LiveLoadResponse {
+    /// The answer to a solved live-load request.
+    pub fn new(solved: &SolvedArch) -> Self {
+        Self {
+            load_factor: solved.solution.load_factor,
+            outcome: ArchOutcomeDto::new(solved),
+        }
+    }
+}
+
+impl ArchOutcomeDto {
+    fn new(solved: &SolvedArch) -> Self {
+        let solution = &solved.solution;
+        let mechanism = solution.mechanism.as_ref();
+        let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
+        Self {
+            stable: solution.dead_load_carried,
+            dead_load_margin: solution.dead_load_margin,
+            active_constraints: mechanism.map(active_constraints).unwrap_or_default(),
+            hinges: mechanism.map(hinges).unwrap_or_default(),
+            sliding_interfaces: mechanism.map(|m| one_based(&m.sliding)).unwrap_or_default(),
+            crushing_interfaces: mechanism
+                .map(|m| one_based(&m.crushing))
+                .unwrap_or_default(),
+            mechanism: mechanism.map(|m| MechanismDto {
+                blocks: m
+                    .velocities
+                    .iter()
+                    .enumerate()
+                    .map(|(b, v)| BlockVelocityDto {
+                        block: b + 1,
+                        u: v[0],
+                        v: v[1],
+                        rotation: v[2],
+                    })
+                    .collect(),
+            }),
+            friction_may_overestimate: mechanism.is_some_and(|m| m.involves_friction()),
+            thrust_line: solved
+                .thrust_line
+                .iter()
+                .map(|t| InterfaceThrustPointDto {
+                    interface: t.interface + 1,
+                    x: t.point.map(|p| p.0),
+                    y: t.point.map(|p| p.1),
+                    normal_force: t.normal_force,
+                    shear_force: t.shear_force,
+                    eccentricity: t.eccentricity,
+                })
+                .collect(),
+            solver: SolverDto {
+                status: solved.status,
+                iterations: solution.iterations,
+                programmes: solution.programmes,
+                time_ms: solution.solve_time_secs * 1e3,
+                formulation: solved.input.settings.formulation.into(),
+                tolerance: solved.input.settings.tolerance,
+            },
+        }
+    }
+}
+
+impl From<thrustline_solver::arch::Formulation> for FormulationDto {
+    fn from(formulation: thrustline_solver::arch::Formulation) -> Self {
+        match formulation {
+            thrustline_solver::arch::Formulation::Chain => Self::Chain,
+            thrustline_solver::arch::Formulation::Assembly => Self::Assembly,
+        }
+    }
+}
+
+/// The active limits of a mechanism, 1-based.
+pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
+    mechanism
+        .active
+        .iter()
+        .map(|a| ActiveConstraintDto {
+            interface: a.interface + 1,
+            resultant: a.resultant.into(),
+            bound: match a.bound {
+                Bound::Lower => BoundDto::Lower,
+                Bound::Upper => BoundDto::Upper,
+            },
+            angle_deg: a.angle_deg,
+            hinge: a.hinge.map(HingeSideDto::from),
+            multiplier: a.multiplier,
+        })
+        .collect()
+}
+
+/// The hinges of a mechanism, 1-based.
+pub fn hinges(mechanism: &Mechanism) -> Vec<HingeDto> {
+    mechanism
+        .hinges
+        .iter()
+        .map(|h| HingeDto {
+            interface: h.interface + 1,
+            angle_deg: h.angle_deg,
+            location: h.side.into(),
+            rotation: h.rotation,
+        })
+        .collect()
+}

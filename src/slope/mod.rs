@@ -1,0 +1,180 @@
+//! `POST /slope/spencer`: Spencer's method for one slip circle or the critical one (SPEC §2, §3).
+//!
+//! [`request`] holds the types clients send, [`input`] validates them once into the solver's
+//! inputs, the handlers here solve on the blocking pool, [`response`] builds the answer whole
+//! and [`drawing`] the picture, both from the solver's results. Slices are numbered from 1 at
+//! the lower end of the slip surface, as the thesis prints them.
+
+pub mod drawing;
+pub mod input;
+pub mod request;
+pub mod response;
+
+use std::time::{Duration, Instant};
+
+use axum::extract::State;
+use thrustline_solver::slope::{
+    factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
+    RefinementStatus, SearchSettings, SearchStatus, SlopeProblem, SolverFailure,
+};
+
+use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::limits::MAX_SLICES;
+use crate::svg::Svg;
+use crate::AppState;
+use input::{SpencerInput, Target};
+use request::SpencerRequest;
+use response::{Refinement, SolvedSlope, SpencerResponse};
+
+/// Spencer's method for one slip circle.
+#[utoipa::path(
+    post,
+    path = "/slope/spencer",
+    tag = "slope",
+    request_body = SpencerRequest,
+    responses(
+        (status = 200, description = "Solved, or an honest `converged: false`", body = SpencerResponse),
+        ProblemResponses,
+    )
+)]
+pub async fn spencer(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<SpencerRequest>,
+) -> Result<ApiJson<SpencerResponse>, ApiError> {
+    let solved = solve(&state, request.validate()?).await?;
+    Ok(ApiJson(SpencerResponse::new(&solved)))
+}
+
+/// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and
+/// for a search the map of F over the centres.
+#[utoipa::path(
+    post,
+    path = "/slope/spencer/svg",
+    tag = "slope",
+    request_body = SpencerRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn spencer_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<SpencerRequest>,
+) -> Result<Svg, ApiError> {
+    let solved = solve(&state, request.validate()?).await?;
+    let title = if solved.search.is_some() {
+        "Spencer's method: the critical slip circle"
+    } else {
+        "Spencer's method: one slip circle"
+    };
+    Ok(Svg(drawing::draw(&solved, title)))
+}
+
+async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, ApiError> {
+    let time_limit = state.solve_time_limit;
+    let (solved, elapsed) = state
+        .pool
+        .run(move || solve_blocking(input, time_limit))
+        .await?;
+    let mut solved = solved?;
+    solved.solve_time_ms = elapsed.as_secs_f64() * 1e3;
+    tracing::info!(
+        slices = solved.problem.geometry.slices.len(),
+        iterations = solved.solution.iterations,
+        evaluations = solved.search.as_ref().map(|s| s.evaluations),
+        solve_ms = solved.solve_time_ms,
+        factor_of_safety = solved.solution.factor_of_safety,
+        "spencer solved"
+    );
+    Ok(solved)
+}
+
+/// Runs on the blocking pool: the search if asked, then the full solution of the circle (refined
+/// if asked), then the curves if asked. A solver stopped by the time limit is the 422 of the
+/// README's outcome rule, naming the field that sets the work.
+fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlope, ApiError> {
+    let deadline = Instant::now() + time_limit;
+    let over_time = |field: &str, advice| ApiError::OverTimeLimit {
+        field: field.to_owned(),
+        seconds: time_limit.as_secs_f64(),
+        advice,
+    };
+    let (problem, search) = match input.target {
+        Target::Circle(problem) => (problem, None),
+        Target::Search(grid, search_problem) => {
+            let settings = SearchSettings {
+                time_limit: Some(time_limit),
+                ..SearchSettings::default()
+            };
+            let found = search_critical_circle(&search_problem, grid, &settings);
+            let circle =
+                match (found.status, found.circle) {
+                    (SearchStatus::Found, Some(circle)) => circle,
+                    (SearchStatus::SolverFailed(SolverFailure::MaxTime), _) => {
+                        return Err(over_time(
+                            "search",
+                            "use a smaller grid, fewer slices or no lower_end_factor_max",
+                        ))
+                    }
+                    (
+                        SearchStatus::Found
+                        | SearchStatus::NoValidCircle
+                        | SearchStatus::SolverFailed(_),
+                        _,
+                    ) => return Err(ApiError::invalid(
+                        "search",
+                        "no centre in the region searched gives a circle with a solution: widen \
+                         or move the bounds (or leave them out for automatic ones)",
+                    )),
+                };
+            let problem = SlopeProblem::new(
+                search_problem.embankment,
+                circle,
+                search_problem.slices,
+                search_problem.soil,
+                search_problem.seismic,
+                Vec::new(),
+            )?;
+            (problem, Some(found))
+        }
+    };
+    let (problem, solution, refinement) = match input.slice_tolerance {
+        None => {
+            let solution = solve_spencer(&problem, &Default::default());
+            (problem, solution, None)
+        }
+        Some(tolerance) => {
+            let settings = RefinementSettings {
+                max_slices: MAX_SLICES,
+                deadline: Some(deadline),
+                ..RefinementSettings::new(tolerance)
+            };
+            let refined = refine_slices(problem, &settings)?;
+            let is_settled = match refined.status {
+                RefinementStatus::Settled => true,
+                RefinementStatus::SliceLimit => false,
+                RefinementStatus::SolverFailed(_) => {
+                    return Err(over_time("slice_tolerance", "use a larger slice_tolerance"))
+                }
+            };
+            let refinement = Refinement {
+                tolerance,
+                steps: refined.steps,
+                is_settled,
+            };
+            (refined.problem, refined.solution, Some(refinement))
+        }
+    };
+    let curves = match (solution.theta_rad, input.curves) {
+        (Some(theta), true) => Some(factor_curves_around(&problem, theta)),
+        _ => None,
+    };
+    Ok(SolvedSlope {
+        problem,
+        solution,
+        search,
+        curves,
+        refinement,
+        solve_time_ms: 0.0,
+    })
+}

@@ -1,0 +1,380 @@
+//! The Spencer answer, built whole from the solver's results: slices numbered from 1 at the
+//! lower end of the slip surface, angles in degrees.
+
+use serde::Serialize;
+use thrustline_solver::slope::{
+    FactorCurves, RefinementStep, SearchSolution, SlopeProblem, SpencerSolution, SpencerStatus,
+};
+
+use crate::limits::MAX_SLICES;
+use utoipa::ToSchema;
+
+/// F over the grid of centres, for contour plots.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GridDto {
+    /// Centre X of the grid columns (from the lower end).
+    pub xs: Vec<f64>,
+    /// Centre Y of the grid rows.
+    pub ys: Vec<f64>,
+    /// `factor_of_safety[j][i]` at (xs[i], ys[j]); null where the centre gives no valid circle.
+    pub factor_of_safety: Vec<Vec<Option<f64>>>,
+}
+
+/// How the search went.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SearchOutDto {
+    /// Circles evaluated (grid and refinement).
+    pub evaluations: usize,
+    /// Times the grid moved because the minimum lay on its edge.
+    pub regrids: usize,
+    /// Whether the minimum still lies on the edge of the region searched.
+    pub on_edge: bool,
+}
+
+/// Spencer's figure: F from each equation alone against θ; they cross at the answer.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct CurvesDto {
+    /// Inclinations θ in degrees.
+    pub theta_deg: Vec<f64>,
+    /// F_f(θ), from force equilibrium; null where it has no root.
+    pub force_factor: Vec<Option<f64>>,
+    /// F_m(θ), from moment equilibrium; null where it has no root.
+    pub moment_factor: Vec<Option<f64>>,
+}
+
+/// A point in the plane of the section.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PointDto {
+    /// Horizontal coordinate (toe at 0, towards the crest positive).
+    pub x: f64,
+    /// Vertical coordinate (toe at 0, up positive).
+    pub y: f64,
+}
+
+/// Geometry and forces of one slice at the solution.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SliceDto {
+    /// Slice number, 1 at the lower end.
+    pub slice: usize,
+    /// x of the toe-side vertical.
+    pub x_left: f64,
+    /// x of the crest-side vertical.
+    pub x_right: f64,
+    /// Inclination α of the base chord in degrees, positive where it rises towards the crest.
+    pub base_inclination_deg: f64,
+    /// Length of the base chord.
+    pub base_length: f64,
+    /// Height of the slice at its middle.
+    pub height: f64,
+    /// Weight W.
+    pub weight: f64,
+    /// Pore pressure u = r_u·γ·h at the base.
+    pub pore_pressure: f64,
+    /// Total normal force on the base.
+    pub normal_force: f64,
+    /// Effective normal force on the base (total minus u·l).
+    pub effective_normal_force: f64,
+    /// Mobilised shear force on the base.
+    pub shear_force: f64,
+    /// Resultant Q of the two inter-slice forces, positive along (cos θ, sin θ).
+    pub interslice_resultant: f64,
+    /// Inter-slice force on the crest-side boundary (compression positive; 0 at the exit).
+    pub interslice_force: f64,
+    /// The denominator m_α = cos(α−θ) + sin(α−θ)·tan φ'/F.
+    pub m_alpha: f64,
+}
+
+/// A point of the line of thrust on an inter-slice boundary (Spencer 1973).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct BoundaryThrustPointDto {
+    /// Boundary number: boundary i lies between slices i and i+1.
+    pub boundary: usize,
+    /// x of the boundary.
+    pub x: f64,
+    /// Height of the point of action; null where the inter-slice force vanishes.
+    pub y: Option<f64>,
+    /// Inter-slice force (compression positive).
+    pub force: f64,
+    /// Whether the point lies between the slip surface and the ground surface.
+    pub inside_slice: bool,
+}
+
+/// The slip circle as placed on the embankment.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct CircleOutDto {
+    /// Centre X measured from the lower end (as given).
+    pub x: f64,
+    /// Centre Y measured from the lower end (as given).
+    pub y: f64,
+    /// Radius.
+    pub radius: f64,
+    /// The centre in embankment coordinates (toe at the origin).
+    pub centre: PointDto,
+    /// Lower end of the slip surface.
+    pub lower_end: PointDto,
+    /// Upper exit of the slip surface on the ground.
+    pub upper_exit: PointDto,
+}
+
+/// How the solution of Spencer's equations ended.
+#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum SpencerStatusDto {
+    /// Both equations are satisfied with every m_α positive.
+    Converged,
+    /// No (F, θ) with positive denominators satisfies both equations (F in 1e-6…1e6,
+    /// |θ| < 89°); no factor of safety is reported.
+    NoSolution,
+    /// φ' = 0: no parallel inter-slice forces meet force equilibrium, but moment equilibrium
+    /// alone fixes F exactly for a circle (the base shear c'·l/F does not depend on the normal
+    /// forces): F is reported, θ and the line of thrust are not; slice forces are Bishop's.
+    MomentOnly,
+}
+
+/// Spencer's factor of safety, the inter-slice inclination and everything behind them.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SpencerResponse {
+    /// Whether both equilibrium equations were solved (false with `status: moment_only`, which
+    /// still reports F).
+    pub converged: bool,
+    /// How the solution ended.
+    pub status: SpencerStatusDto,
+    /// Spencer's factor of safety F; null when not converged.
+    #[schema(example = 1.06958)]
+    pub factor_of_safety: Option<f64>,
+    /// Inclination θ of the parallel inter-slice forces in degrees; null when not converged.
+    #[schema(example = 22.432)]
+    pub theta_deg: Option<f64>,
+    /// Bishop's simplified factor of safety (θ = 0, moment equation); null when it has no root.
+    #[schema(example = 1.0397)]
+    pub bishop_factor_of_safety: Option<f64>,
+    /// Radius of the slip circle.
+    #[schema(example = 64.4875)]
+    pub radius: f64,
+    /// The slip circle on the embankment.
+    pub circle: CircleOutDto,
+    /// Number of slices used.
+    pub slice_count: usize,
+    /// Per-slice geometry and forces (empty when not converged).
+    pub slices: Vec<SliceDto>,
+    /// Line of thrust on the interior slice boundaries (empty when not converged).
+    pub thrust_line: Vec<BoundaryThrustPointDto>,
+    /// Newton iterations (plus fallback evaluations).
+    pub iterations: usize,
+    /// Largest scaled residual of the two equations (force/ΣW, moment/(ΣW·R)).
+    pub residual: Option<f64>,
+    /// Things the engineer should look at: small m_α, tension at the base, a thrust line
+    /// outside the mass, no solution.
+    pub warnings: Vec<String>,
+    /// Wall time of the solve in milliseconds.
+    pub solve_time_ms: f64,
+    /// With `search`: how the search went.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub search: Option<SearchOutDto>,
+    /// With `search`: F over the last grid of centres.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<GridDto>,
+    /// With `curves: true`: F_f(θ) and F_m(θ).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curves: Option<CurvesDto>,
+    /// With `slice_tolerance`: F at each number of slices tried, the last one answered.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slice_refinement: Option<Vec<SliceRefinementDto>>,
+}
+
+/// One step of the slice refinement.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SliceRefinementDto {
+    /// Number of slices.
+    pub slices: usize,
+    /// F with that many slices; null where the equations had no solution.
+    pub factor_of_safety: Option<f64>,
+}
+
+/// How a refinement went: the steps, and whether F settled within the tolerance.
+#[derive(Debug, Clone)]
+pub struct Refinement {
+    /// The relative tolerance asked for.
+    pub tolerance: f64,
+    /// F at each slice count.
+    pub steps: Vec<RefinementStep>,
+    /// Whether the last doubling changed F by less than the tolerance.
+    pub is_settled: bool,
+}
+
+/// A solved Spencer request: the circle analysed (or found), its solution and the extras asked
+/// for.
+#[derive(Debug, Clone)]
+pub struct SolvedSlope {
+    /// The circle analysed, at the slice count answered.
+    pub problem: SlopeProblem,
+    /// Its solution.
+    pub solution: SpencerSolution,
+    /// With `search`: how the search went.
+    pub search: Option<SearchSolution>,
+    /// With `curves`: F_f(θ) and F_m(θ).
+    pub curves: Option<FactorCurves>,
+    /// With `slice_tolerance`: the refinement.
+    pub refinement: Option<Refinement>,
+    /// Wall time of the solve in milliseconds.
+    pub solve_time_ms: f64,
+}
+
+impl SpencerResponse {
+    /// The answer to a solved request.
+    pub fn new(solved: &SolvedSlope) -> Self {
+        let (problem, solution) = (&solved.problem, &solved.solution);
+        let g = &problem.geometry;
+        let (converged, status, has_forces) = match solution.status {
+            SpencerStatus::Converged => (true, SpencerStatusDto::Converged, true),
+            SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
+            SpencerStatus::MomentOnly => (false, SpencerStatusDto::MomentOnly, true),
+        };
+        let mut warnings = Vec::new();
+        match solution.status {
+        SpencerStatus::Converged => {}
+        SpencerStatus::NoSolution => warnings.push(
+            "no (F, θ) with positive m_α satisfies both equilibrium equations for this circle; \
+             no factor of safety is reported"
+                .to_owned(),
+        ),
+        SpencerStatus::MomentOnly => warnings.push(
+            "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
+             moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
+             slice forces are Bishop's (θ = 0)"
+                .to_owned(),
+        ),
+    }
+        let one_based = |list: &[usize]| {
+            list.iter()
+                .map(|i| (i + 1).to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        if !solution.small_m_alpha_slices.is_empty() {
+            warnings.push(format!(
+                "m_alpha < {} at slices {}: base forces there are sensitive to F",
+                thrustline_solver::slope::spencer::SMALL_DENOMINATOR,
+                one_based(&solution.small_m_alpha_slices)
+            ));
+        }
+        if !solution.negative_effective_normal_slices.is_empty() {
+            warnings.push(format!(
+                "negative effective normal force (tension) at slices {}",
+                one_based(&solution.negative_effective_normal_slices)
+            ));
+        }
+        let outside: Vec<usize> = solution
+            .thrust_line
+            .iter()
+            .filter(|t| !t.is_inside_slice)
+            .map(|t| t.boundary)
+            .collect();
+        if !outside.is_empty() {
+            warnings.push(format!(
+                "the line of thrust leaves the sliding mass at boundaries {}",
+                outside
+                    .iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
+        }
+        if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
+            warnings.push(format!(
+                "slice_tolerance {} not reached before {MAX_SLICES} slices",
+                refinement.tolerance
+            ));
+        }
+        if solved.search.as_ref().is_some_and(|s| s.is_on_edge) {
+            warnings.push(
+                "the critical centre lies on the edge of the search region even after moving the \
+             grid: the true minimum may lie outside it"
+                    .to_owned(),
+            );
+        }
+        let slices = if has_forces {
+            g.slices
+                .iter()
+                .zip(&solution.slice_forces)
+                .enumerate()
+                .map(|(i, (s, f))| SliceDto {
+                    slice: i + 1,
+                    x_left: s.x_left,
+                    x_right: s.x_right,
+                    base_inclination_deg: s.base_inclination_rad.to_degrees(),
+                    base_length: s.base_length,
+                    height: s.height_middle,
+                    weight: f.weight,
+                    pore_pressure: f.pore_pressure,
+                    normal_force: f.normal_force,
+                    effective_normal_force: f.effective_normal_force,
+                    shear_force: f.shear_force,
+                    interslice_resultant: f.interslice_resultant,
+                    interslice_force: f.interslice_force_right,
+                    m_alpha: f.m_alpha,
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let point = |(x, y): (f64, f64)| PointDto { x, y };
+        SpencerResponse {
+            converged,
+            status,
+            factor_of_safety: solution.factor_of_safety,
+            theta_deg: solution.theta_rad.map(f64::to_degrees),
+            bishop_factor_of_safety: solution.bishop_factor_of_safety,
+            radius: g.radius,
+            circle: CircleOutDto {
+                x: g.centre.0 - g.lower_end.0,
+                y: g.centre.1 - g.lower_end.1,
+                radius: g.radius,
+                centre: point(g.centre),
+                lower_end: point(g.lower_end),
+                upper_exit: point(g.upper_exit),
+            },
+            slice_count: g.slices.len(),
+            slices,
+            thrust_line: solution
+                .thrust_line
+                .iter()
+                .map(|t| BoundaryThrustPointDto {
+                    boundary: t.boundary,
+                    x: t.x,
+                    y: t.y,
+                    force: t.force,
+                    inside_slice: t.is_inside_slice,
+                })
+                .collect(),
+            iterations: solution.iterations,
+            residual: solution.residual,
+            warnings,
+            solve_time_ms: solved.solve_time_ms,
+            search: solved.search.as_ref().map(|search| SearchOutDto {
+                evaluations: search.evaluations,
+                regrids: search.regrids,
+                on_edge: search.is_on_edge,
+            }),
+            grid: solved.search.as_ref().map(|search| GridDto {
+                xs: search.grid.xs.clone(),
+                ys: search.grid.ys.clone(),
+                factor_of_safety: search.grid.factors.clone(),
+            }),
+            curves: solved.curves.as_ref().map(|c| CurvesDto {
+                theta_deg: c.theta_deg.clone(),
+                force_factor: c.force_factor.clone(),
+                moment_factor: c.moment_factor.clone(),
+            }),
+            slice_refinement: solved.refinement.as_ref().map(|r| {
+                r.steps
+                    .iter()
+                    .map(|s| SliceRefinementDto {
+                        slices: s.slices,
+                        factor_of_safety: s.factor_of_safety,
+                    })
+                    .collect()
+            }),
+        }
+    }
+}
