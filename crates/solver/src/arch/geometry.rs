@@ -9,7 +9,7 @@
 
 use std::num::NonZeroUsize;
 
-use super::{ArchError, ArchParameter};
+use super::error::{ArchError, ArchParameter};
 use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance for "the same point" when checking that chain blocks share faces.

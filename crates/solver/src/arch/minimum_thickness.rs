@@ -12,9 +12,11 @@
 
 use std::time::Instant;
 
-use super::limit::{full_dead_load_margin, ArchProblem, InterfaceLimits, LimitSettings};
+use super::error::ArchError;
+use super::geometry::CircularArch;
+use super::limit::full_dead_load_margin;
+use super::limit::problem::{ArchProblem, InterfaceLimits, LimitSettings};
 use super::mechanism::{HingeSide, Mechanism};
-use super::{ArchError, CircularArch};
 use crate::numerics::brent;
 use crate::outcome::SolverFailure;
 

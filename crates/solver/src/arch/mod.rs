@@ -20,6 +20,7 @@
 
 pub mod chain;
 pub mod equilibrium;
+mod error;
 pub mod geometry;
 pub mod limit;
 pub mod mechanism;
@@ -28,6 +29,7 @@ pub mod thrust_line;
 
 pub use crate::outcome::SolverFailure;
 pub use equilibrium::LiveLoad;
+pub use error::{ArchError, ArchParameter};
 pub use geometry::{Assembly, Block, CircularArch, Interface, VoussoirShape};
 pub use limit::{
     solve_dead_load, solve_live_load, ArchProblem, Formulation, InterfaceLimits, LimitSettings,
@@ -39,117 +41,3 @@ pub use minimum_thickness::{
     MinimumThicknessSettings,
 };
 pub use thrust_line::{thrust_line, ThrustPoint};
-
-/// An input of the arch solver, named by what it is (the service maps it to its request field).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ArchParameter {
-    /// The middle radius of a circular arch.
-    Radius,
-    /// The voussoir thickness of a circular arch.
-    Thickness,
-    /// The left base angle of a circular arch.
-    LeftBaseAngle,
-    /// The right base angle of a circular arch.
-    RightBaseAngle,
-    /// The list of blocks of a chain.
-    Blocks,
-    /// The corners of block `block` (0-based) of a chain.
-    BlockCorners {
-        /// Index of the block.
-        block: usize,
-    },
-    /// Corner `corner` of block `block` (both 0-based).
-    BlockCorner {
-        /// Index of the block.
-        block: usize,
-        /// Index of the corner.
-        corner: usize,
-    },
-    /// The unit weight.
-    UnitWeight,
-    /// One limit of the interface resultants.
-    InterfaceLimit {
-        /// Of which resultant (q, s or t).
-        resultant: Resultant,
-        /// Which of its limits.
-        bound: Bound,
-    },
-    /// The friction coefficient.
-    FrictionCoefficient,
-    /// The live loads as a whole.
-    Loads,
-    /// Live load `index` (0-based).
-    Load {
-        /// Index of the load.
-        index: usize,
-    },
-    /// The block of live load `index` (0-based).
-    LoadBlock {
-        /// Index of the load.
-        index: usize,
-    },
-}
-
-impl std::fmt::Display for ArchParameter {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::Radius => write!(f, "radius"),
-            Self::Thickness => write!(f, "thickness"),
-            Self::LeftBaseAngle => write!(f, "left base angle"),
-            Self::RightBaseAngle => write!(f, "right base angle"),
-            Self::Blocks => write!(f, "blocks"),
-            Self::BlockCorners { block } => write!(f, "corners of block {}", block + 1),
-            Self::BlockCorner { block, corner } => {
-                write!(f, "corner {} of block {}", corner + 1, block + 1)
-            }
-            Self::UnitWeight => write!(f, "unit weight"),
-            Self::InterfaceLimit { resultant, bound } => {
-                write!(f, "{bound:?} limit of {resultant:?}")
-            }
-            Self::FrictionCoefficient => write!(f, "friction coefficient"),
-            Self::Loads => write!(f, "loads"),
-            Self::Load { index } => write!(f, "load {}", index + 1),
-            Self::LoadBlock { index } => write!(f, "block of load {}", index + 1),
-        }
-    }
-}
-
-/// Input the arch solver cannot accept; `parameter` names the offending input.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ArchError {
-    /// A number is outside its allowed range.
-    #[error("{parameter}: {value} is out of range: allowed is {allowed}")]
-    OutOfRange {
-        /// The input at fault.
-        parameter: ArchParameter,
-        /// The rejected value.
-        value: f64,
-        /// The allowed range in words.
-        allowed: String,
-    },
-    /// The blocks do not form a valid assembly.
-    #[error("{parameter}: {reason}")]
-    InvalidGeometry {
-        /// The input at fault.
-        parameter: ArchParameter,
-        /// What is wrong.
-        reason: String,
-    },
-}
-
-impl ArchError {
-    pub(crate) fn range(parameter: ArchParameter, value: f64, allowed: impl Into<String>) -> Self {
-        Self::OutOfRange {
-            parameter,
-            value,
-            allowed: allowed.into(),
-        }
-    }
-
-    pub(crate) fn geometry(parameter: ArchParameter, reason: impl Into<String>) -> Self {
-        Self::InvalidGeometry {
-            parameter,
-            reason: reason.into(),
-        }
-    }
-}

@@ -10,7 +10,7 @@
 //! inclination α is that of the chord, positive where the base rises towards the crest. This is
 //! the idealisation with which the thesis reproduces Spencer's (1967) numbers digit for digit.
 
-use super::{check_range, SlopeError, SlopeParameter};
+use super::error::{check_range, SlopeError, SlopeParameter};
 use crate::polygon::polygon_area_centroid;
 
 /// Relative tolerance on lengths used to tell a genuine exit point from the lower end itself.

@@ -11,12 +11,14 @@
 //! - [`refinement`]: F made independent of the slice count by doubling the slices.
 //! - [`search`]: the critical slip circle over a grid of centres, refined.
 
+mod error;
 pub mod geometry;
 pub mod refinement;
 pub mod search;
 pub mod spencer;
 
 pub use crate::outcome::SolverFailure;
+pub use error::{SlopeError, SlopeParameter};
 pub use geometry::{Embankment, Slice, SlipCircle, SlopeGeometry};
 pub use refinement::{
     refine_slices, RefinedSolution, RefinementSettings, RefinementStatus, RefinementStep,
@@ -30,115 +32,3 @@ pub use spencer::{
     FactorCurves, Seismic, SliceForces, SlopeProblem, Soil, SpencerFactor, SpencerSettings,
     SpencerSolution, SpencerStatus, ThrustPoint,
 };
-
-/// An input of the slope solver, named by what it is (the service maps it to its request field).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SlopeParameter {
-    /// Slope height H.
-    Height,
-    /// Slope length L.
-    Length,
-    /// Centre X of the circle (from the lower end).
-    CircleX,
-    /// Centre Y of the circle (above the lower end).
-    CircleY,
-    /// Lower-end position factor F_e.
-    LowerEndFactor,
-    /// Unit weight γ of the soil.
-    UnitWeight,
-    /// Effective cohesion c'.
-    Cohesion,
-    /// Effective friction angle φ'.
-    FrictionAngle,
-    /// Pore pressure ratio r_u.
-    PorePressureRatio,
-    /// Horizontal seismic coefficient.
-    SeismicKh,
-    /// Vertical seismic coefficient.
-    SeismicKv,
-    /// The external loads as a whole.
-    ExternalLoads,
-    /// The slice of external load `index` (0-based).
-    ExternalLoadSlice {
-        /// Index of the load.
-        index: usize,
-    },
-    /// The forces of external load `index` (0-based).
-    ExternalLoad {
-        /// Index of the load.
-        index: usize,
-    },
-}
-
-impl std::fmt::Display for SlopeParameter {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::Height => write!(f, "slope height"),
-            Self::Length => write!(f, "slope length"),
-            Self::CircleX => write!(f, "circle centre X"),
-            Self::CircleY => write!(f, "circle centre Y"),
-            Self::LowerEndFactor => write!(f, "lower-end factor"),
-            Self::UnitWeight => write!(f, "unit weight"),
-            Self::Cohesion => write!(f, "cohesion"),
-            Self::FrictionAngle => write!(f, "friction angle"),
-            Self::PorePressureRatio => write!(f, "pore pressure ratio"),
-            Self::SeismicKh => write!(f, "seismic kh"),
-            Self::SeismicKv => write!(f, "seismic kv"),
-            Self::ExternalLoads => write!(f, "external loads"),
-            Self::ExternalLoadSlice { index } => write!(f, "slice of external load {}", index + 1),
-            Self::ExternalLoad { index } => write!(f, "external load {}", index + 1),
-        }
-    }
-}
-
-/// Input the slope solver cannot accept; `parameter` names the offending input.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SlopeError {
-    /// A number is outside its allowed range.
-    #[error("{parameter}: {value} is out of range: allowed is {allowed}")]
-    OutOfRange {
-        /// The input at fault.
-        parameter: SlopeParameter,
-        /// The rejected value.
-        value: f64,
-        /// The allowed range in words.
-        allowed: &'static str,
-    },
-    /// The slip circle does not cut a sliding mass out of the embankment.
-    #[error("{parameter}: {reason}")]
-    NoSlipMass {
-        /// The input that has to change.
-        parameter: SlopeParameter,
-        /// What is wrong with the circle.
-        reason: String,
-    },
-    /// Two inputs cannot be used together.
-    #[error("{parameter}: {reason}")]
-    Conflict {
-        /// The input that has to change.
-        parameter: SlopeParameter,
-        /// Why.
-        reason: String,
-    },
-}
-
-/// Checks that `value` is finite and lies in `[min, max]` (`min_open` makes the lower end open).
-pub(crate) fn check_range(
-    parameter: SlopeParameter,
-    value: f64,
-    min: f64,
-    min_open: bool,
-    max: f64,
-    allowed: &'static str,
-) -> Result<f64, SlopeError> {
-    let above_min = if min_open { value > min } else { value >= min };
-    if value.is_finite() && above_min && value <= max {
-        Ok(value)
-    } else {
-        Err(SlopeError::OutOfRange {
-            parameter,
-            value,
-            allowed,
-        })
-    }
-}

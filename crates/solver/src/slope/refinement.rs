@@ -5,8 +5,8 @@
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
+use super::error::SlopeError;
 use super::spencer::{solve_spencer, SlopeProblem, SpencerSettings, SpencerSolution};
-use super::SlopeError;
 use crate::outcome::SolverFailure;
 
 /// Settings of a slice refinement.

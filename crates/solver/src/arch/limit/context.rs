@@ -4,16 +4,16 @@
 
 use std::time::Instant;
 
-use super::super::chain::ChainStatics;
-use super::super::equilibrium::{
-    assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
-};
-use super::super::mechanism::{read_mechanism, LimitTag, Mechanism};
+use super::problem::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
 use super::programme::{
     dot, failure, solve_chain_programme, solve_programme, Programme, ProgrammeSpec,
 };
 use super::rows::{limit_rows, Row};
-use super::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
+use crate::arch::chain::ChainStatics;
+use crate::arch::equilibrium::{
+    assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
+};
+use crate::arch::mechanism::{read_mechanism, LimitTag, Mechanism};
 use crate::outcome::SolverFailure;
 
 /// Live loads are scaled to a unit largest component; λ above this counts as no collapse.

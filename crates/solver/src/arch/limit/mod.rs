@@ -32,14 +32,14 @@
 //! positive work. See [`super::mechanism`].
 
 mod context;
-mod problem;
+pub(crate) mod problem;
 mod programme;
 mod rows;
 
 use std::time::Instant;
 
+use super::error::{ArchError, ArchParameter};
 use super::mechanism::Mechanism;
-use super::{ArchError, ArchParameter};
 use crate::outcome::SolverFailure;
 use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 

@@ -1,10 +1,10 @@
 //! The data of a limit analysis: the structure with its loads and yield limits, the settings of
 //! the interior-point solves, and the plain solution they return (Livesley 1978, §2.3).
 
-use super::super::equilibrium::LiveLoad;
-use super::super::geometry::Assembly;
-use super::super::mechanism::{Bound, Mechanism, Resultant};
-use super::super::{ArchError, ArchParameter};
+use crate::arch::equilibrium::LiveLoad;
+use crate::arch::error::{ArchError, ArchParameter};
+use crate::arch::geometry::Assembly;
+use crate::arch::mechanism::{Bound, Mechanism, Resultant};
 use crate::outcome::SolverFailure;
 
 /// Limits on the stress resultants of every interface (absolute forces; `None` = unbounded).

@@ -8,10 +8,10 @@ use clarabel::solver::{
     SupportedConeT, ZeroConeT,
 };
 
-use super::super::chain::ChainStatics;
-use super::super::equilibrium::Equilibrium;
+use super::problem::LimitSettings;
 use super::rows::Row;
-use super::LimitSettings;
+use crate::arch::chain::ChainStatics;
+use crate::arch::equilibrium::Equilibrium;
 use crate::outcome::SolverFailure;
 
 /// Outcome of one programme.

@@ -2,9 +2,9 @@
 //! an inequality a·x ≤ b, and Livesley's friction rows μ(q + s) ∓ t ≥ 0 (§2.7) where friction is
 //! finite. Forces are scaled by the total weight.
 
-use super::super::equilibrium::RESULTANTS_PER_INTERFACE;
-use super::super::mechanism::{Bound, LimitTag, Resultant};
-use super::ArchProblem;
+use super::problem::ArchProblem;
+use crate::arch::equilibrium::RESULTANTS_PER_INTERFACE;
+use crate::arch::mechanism::{Bound, LimitTag, Resultant};
 
 /// An inequality row a·x ≤ b.
 pub(super) struct Row {

@@ -2,10 +2,13 @@
 //! about each base middle, Spencer 1973) and the flags an engineer should look at.
 
 use super::equations::{Equations, SliceResultant};
-use super::{
-    EquationsSolution, SliceForces, SlopeProblem, SpencerSolution, SpencerStatus, ThrustPoint,
-    SMALL_DENOMINATOR,
-};
+use super::newton::EquationsSolution;
+use super::problem::SlopeProblem;
+use super::solution::{SliceForces, SpencerSolution, SpencerStatus, ThrustPoint};
+
+/// Denominators m_α below this are reported: the base normal force becomes unreliable there
+/// (a common guard in slope programs; Duncan & Wright recommend 0.2).
+pub const SMALL_DENOMINATOR: f64 = 0.2;
 
 /// Forces, line of thrust and flags at the converged (F, θ).
 pub(super) fn describe(

@@ -1,8 +1,11 @@
 //! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
 //! equation alone at a fixed θ (SPEC §2.2; the equations are written out in [`super`]).
 
-use super::{SlopeProblem, F_RANGE};
+use super::problem::SlopeProblem;
 use crate::numerics::brent;
+
+/// Range of admissible factors of safety searched by the bracketing steps.
+const F_RANGE: (f64, f64) = (1e-6, 1e6);
 
 /// Per-slice constants of the equations, computed once.
 #[derive(Debug, Clone, Copy)]

@@ -39,23 +39,11 @@ mod tests;
 
 use describe::describe;
 use equations::Equations;
-use newton::{fallback, newton};
+use newton::solve_equations;
 
+pub use describe::SMALL_DENOMINATOR;
 pub use problem::{ExternalLoad, Seismic, SlopeProblem, Soil};
 pub use solution::{SliceForces, SpencerSettings, SpencerSolution, SpencerStatus, ThrustPoint};
-
-/// Denominators m_α below this are reported: the base normal force becomes unreliable there
-/// (a common guard in slope programs; Duncan & Wright recommend 0.2).
-pub const SMALL_DENOMINATOR: f64 = 0.2;
-
-/// A scaled residual this small is rounding: the equations are solved.
-const ROUNDING_RESIDUAL: f64 = 1e3 * f64::EPSILON;
-
-/// The largest scaled residual (force / ΣW, moment / (ΣW·R)) accepted at convergence.
-const SOLVED_RESIDUAL: f64 = 1e-9;
-
-/// Range of admissible factors of safety searched by the bracketing steps.
-const F_RANGE: (f64, f64) = (1e-6, 1e6);
 
 /// Spencer's F for one slip surface without the per-slice forces: what a search needs.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,38 +74,6 @@ pub fn solve_spencer_factor(
             theta_rad: None,
         }),
         (None, _) => None,
-    }
-}
-
-/// What [`solve_equations`] found.
-struct EquationsSolution {
-    /// (F, θ) solving both equations.
-    root: Option<(f64, f64)>,
-    /// Bishop's F (θ = 0, moment equation), when it has a root.
-    bishop: Option<f64>,
-    /// Newton iterations plus fallback evaluations.
-    iterations: usize,
-    /// Whether the bracketing fallback was needed.
-    used_fallback: bool,
-}
-
-/// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
-fn solve_equations(equations: &Equations, settings: &SpencerSettings) -> EquationsSolution {
-    let mut evaluations = 0;
-    let bishop = equations.f_at_theta(0.0, true, &mut evaluations);
-    let start = (bishop.unwrap_or(1.0), 0.0);
-    let mut iterations = 0;
-    let mut used_fallback = false;
-    let mut root = newton(equations, start, settings, &mut iterations);
-    if root.is_none() {
-        used_fallback = true;
-        root = fallback(equations, settings, &mut iterations);
-    }
-    EquationsSolution {
-        root,
-        bishop,
-        iterations,
-        used_fallback,
     }
 }
 

@@ -2,11 +2,52 @@
 //! Spencer's own construction (F_f and F_m crossing, found by Brent's method) when Newton fails.
 
 use super::equations::{Equations, Residuals};
-use super::{SpencerSettings, ROUNDING_RESIDUAL, SOLVED_RESIDUAL};
+use super::solution::SpencerSettings;
 use crate::numerics::brent;
 
+/// A scaled residual this small is rounding: the equations are solved.
+const ROUNDING_RESIDUAL: f64 = 1e3 * f64::EPSILON;
+
+/// The largest scaled residual (force / ΣW, moment / (ΣW·R)) accepted at convergence.
+const SOLVED_RESIDUAL: f64 = 1e-9;
+
+/// What [`solve_equations`] found.
+pub(super) struct EquationsSolution {
+    /// (F, θ) solving both equations.
+    pub root: Option<(f64, f64)>,
+    /// Bishop's F (θ = 0, moment equation), when it has a root.
+    pub bishop: Option<f64>,
+    /// Newton iterations plus fallback evaluations.
+    pub iterations: usize,
+    /// Whether the bracketing fallback was needed.
+    pub used_fallback: bool,
+}
+
+/// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
+pub(super) fn solve_equations(
+    equations: &Equations,
+    settings: &SpencerSettings,
+) -> EquationsSolution {
+    let mut evaluations = 0;
+    let bishop = equations.f_at_theta(0.0, true, &mut evaluations);
+    let start = (bishop.unwrap_or(1.0), 0.0);
+    let mut iterations = 0;
+    let mut used_fallback = false;
+    let mut root = newton(equations, start, settings, &mut iterations);
+    if root.is_none() {
+        used_fallback = true;
+        root = fallback(equations, settings, &mut iterations);
+    }
+    EquationsSolution {
+        root,
+        bishop,
+        iterations,
+        used_fallback,
+    }
+}
+
 /// Damped Newton on (F, θ); `None` unless it converges with every m_α positive.
-pub(super) fn newton(
+fn newton(
     equations: &Equations,
     (mut f, mut theta): (f64, f64),
     settings: &SpencerSettings,
@@ -72,7 +113,7 @@ pub(super) fn newton(
 /// steps of 4° (roots nearest to horizontal inter-slice forces first). Each crossing is
 /// polished by Newton; a crossing that is a jump of the difference (a pole of one of the
 /// curves), not a root, fails to polish and the walk goes on.
-pub(super) fn fallback(
+fn fallback(
     equations: &Equations,
     settings: &SpencerSettings,
     iterations: &mut usize,

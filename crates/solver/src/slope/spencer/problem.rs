@@ -3,8 +3,8 @@
 
 use std::num::NonZeroUsize;
 
-use super::super::geometry::{Embankment, SlipCircle, SlopeGeometry};
-use super::super::{check_range, SlopeError, SlopeParameter};
+use crate::slope::error::{check_range, SlopeError, SlopeParameter};
+use crate::slope::geometry::{Embankment, SlipCircle, SlopeGeometry};
 
 /// Soil properties, common to all slices.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,0 +1,205 @@
+//! The layout rules of the code (issue #11): no two modules import each other, and every file is
+//! short enough to read in one sitting (the service's at most 450 lines, the solver's 600).
+//!
+//! A module's imports are the `use` paths that start with `crate::`, `super::` or `self::`,
+//! resolved to the longest module prefix that is a file of the crate (an item re-exported by a
+//! parent counts as an import of the parent: import it from where it is defined instead). Inline
+//! `#[cfg(test)] mod tests` blocks, whose `super` is their own file, are left out.
+#![allow(clippy::unwrap_used)]
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Module path → file, for every `.rs` file under `root` (`lib.rs` is the crate root).
+fn modules(root: &Path) -> BTreeMap<Vec<String>, PathBuf> {
+    let mut found = BTreeMap::new();
+    let mut stack = vec![root.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            if path.extension().is_none_or(|e| e != "rs") {
+                continue;
+            }
+            let relative = path.strip_prefix(root).unwrap().with_extension("");
+            let mut segments: Vec<String> = relative
+                .components()
+                .map(|c| c.as_os_str().to_string_lossy().into_owned())
+                .collect();
+            if matches!(
+                segments.last().map(String::as_str),
+                Some("mod" | "lib" | "main")
+            ) {
+                segments.pop();
+            }
+            if segments.is_empty() && path.file_name().is_some_and(|n| n == "main.rs") {
+                continue; // the binary is a crate of its own
+            }
+            found.insert(segments, path);
+        }
+    }
+    found
+}
+
+/// The `use` declarations of a source file, each flattened into full paths.
+fn use_paths(source: &str) -> Vec<String> {
+    let mut paths = Vec::new();
+    let mut rest = source;
+    while let Some(start) = rest.find("use ") {
+        let at_line_start = rest[..start]
+            .rsplit('\n')
+            .next()
+            .is_some_and(|line| matches!(line.trim(), "" | "pub" | "pub(crate)" | "pub(super)"));
+        rest = &rest[start + 4..];
+        if !at_line_start {
+            continue;
+        }
+        let Some(end) = rest.find(';') else { break };
+        let tree: String = rest[..end].chars().filter(|c| !c.is_whitespace()).collect();
+        expand("", &tree, &mut paths);
+        rest = &rest[end..];
+    }
+    paths
+}
+
+/// Expands `a::{b, c::{d, e}}` into `a::b`, `a::c::d`, `a::c::e`.
+fn expand(prefix: &str, tree: &str, out: &mut Vec<String>) {
+    let Some(open) = tree.find('{') else {
+        out.push(format!("{prefix}{tree}"));
+        return;
+    };
+    let head = format!("{prefix}{}", &tree[..open]);
+    let inner = &tree[open + 1..tree.len() - 1];
+    let (mut depth, mut from) = (0, 0);
+    for (i, c) in inner.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                expand(&head, &inner[from..i], out);
+                from = i + 1;
+            }
+            _ => {}
+        }
+    }
+    if from < inner.len() {
+        expand(&head, &inner[from..], out);
+    }
+}
+
+/// The module a path names, from `module`; `None` for other crates.
+fn resolve(
+    module: &[String],
+    path: &str,
+    known: &BTreeMap<Vec<String>, PathBuf>,
+) -> Option<Vec<String>> {
+    let mut segments = path.split("::").map(str::to_owned);
+    let first = segments.next()?;
+    let mut base: Vec<String> = match first.as_str() {
+        "crate" => Vec::new(),
+        "self" => module.to_vec(),
+        "super" => module[..module.len().saturating_sub(1)].to_vec(),
+        // A path from a child module (`use child::Item;`).
+        child if known.contains_key(&[module, &[child.to_owned()]].concat()) => {
+            [module, &[child.to_owned()]].concat()
+        }
+        _ => return None,
+    };
+    let mut segments = segments.peekable();
+    while segments.peek().is_some_and(|s| s == "super") {
+        segments.next();
+        base.pop();
+    }
+    for segment in segments {
+        base.push(segment.split(" as ").next().unwrap_or(&segment).to_owned());
+        if !known.contains_key(&base) {
+            base.pop();
+            break;
+        }
+    }
+    Some(base)
+}
+
+/// Module → the other modules of its crate it imports from.
+fn imports(root: &Path) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
+    let known = modules(root);
+    known
+        .iter()
+        .map(|(module, file)| {
+            let source = std::fs::read_to_string(file).unwrap();
+            // Inline test modules come last; their `super` is the file itself.
+            let source = source.split("#[cfg(test)]\nmod tests").next().unwrap_or_default();
+            let targets = use_paths(source)
+                .iter()
+                .filter_map(|path| resolve(module, path, &known))
+                .filter(|target| target != module)
+                .collect();
+            (module.clone(), targets)
+        })
+        .collect()
+}
+
+fn mutual_imports(root: &Path) -> Vec<String> {
+    let graph = imports(root);
+    let mut pairs = Vec::new();
+    for (a, targets) in &graph {
+        for b in targets {
+            if a < b && graph.get(b).is_some_and(|t| t.contains(a)) {
+                pairs.push(format!("{} <-> {}", a.join("::"), b.join("::")));
+            }
+        }
+    }
+    pairs
+}
+
+fn long_files(root: &Path, limit: usize) -> Vec<String> {
+    modules(root)
+        .values()
+        .filter_map(|file| {
+            let lines = std::fs::read_to_string(file).unwrap().lines().count();
+            (lines > limit).then(|| format!("{} ({lines} lines)", file.display()))
+        })
+        .collect()
+}
+
+fn crate_root(relative: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(relative)
+}
+
+#[test]
+fn no_two_modules_import_each_other() {
+    for root in ["src", "crates/solver/src"] {
+        let pairs = mutual_imports(&crate_root(root));
+        assert!(
+            pairs.is_empty(),
+            "{root}: modules importing each other: {pairs:?}"
+        );
+    }
+}
+
+#[test]
+fn files_are_short_enough_to_read_in_one_sitting() {
+    let long = long_files(&crate_root("src"), 450);
+    assert!(long.is_empty(), "service files over 450 lines: {long:?}");
+    let long = long_files(&crate_root("crates/solver/src"), 600);
+    assert!(long.is_empty(), "solver files over 600 lines: {long:?}");
+}
+
+#[test]
+fn the_check_sees_a_circle_and_a_grouped_import() {
+    // The checker itself: grouped imports expand, super:: resolves, a circle is found.
+    let mut paths = Vec::new();
+    expand("", "super::{a::B,c::{d::E,F}}", &mut paths);
+    assert_eq!(paths, ["super::a::B", "super::c::d::E", "super::c::F"]);
+    let dir = std::env::temp_dir().join(format!("thrustline-layout-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("a")).unwrap();
+    std::fs::write(dir.join("lib.rs"), "mod a;\n").unwrap();
+    std::fs::write(dir.join("a/mod.rs"), "mod b;\nuse b::X;\n").unwrap();
+    std::fs::write(dir.join("a/b.rs"), "use super::Z;\npub struct X;\n").unwrap();
+    let pairs = mutual_imports(&dir);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(pairs, ["a <-> a::b"]);
+}
