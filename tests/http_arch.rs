@@ -2,19 +2,8 @@
 
 mod common;
 
-use common::{assert_problem, with, Server};
+use common::{assert_problem, milankovitch, with, Server};
 use serde_json::{json, Value};
-
-fn milankovitch(thickness: f64) -> Value {
-    json!({
-        "geometry": {"kind": "circular", "radius": 10.0, "thickness": thickness, "voussoirs": 1800,
-                     "left_base_angle_deg": 0.0, "right_base_angle_deg": 0.0, "voussoir": "curved"},
-        "unit_weight": 1.0,
-        "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null,
-                             "t_min": null, "t_max": null},
-        "friction_coefficient": null
-    })
-}
 
 fn quarter_span_load() -> Value {
     json!({

@@ -5,10 +5,16 @@ mod common;
 use common::{spencer_example, Server};
 use serde_json::json;
 
+/// An arch solved with Livesley's general formulation (slower than the chain).
+fn assembly_arch(voussoirs: usize) -> serde_json::Value {
+    json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747,
+                        "voussoirs": voussoirs},
+           "formulation": "assembly"})
+}
+
 fn slow_arch() -> serde_json::Value {
     // Livesley's general formulation at N = 10000: a few hundred milliseconds per solve.
-    json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 10000},
-           "formulation": "assembly"})
+    assembly_arch(10_000)
 }
 
 #[tokio::test]
@@ -154,6 +160,42 @@ async fn a_search_over_its_time_limit_is_422() {
         "{body}"
     );
     assert!(body["detail"].as_str().unwrap().contains("did not finish"));
+}
+
+#[tokio::test]
+async fn every_solver_stopped_by_the_time_limit_is_the_same_422() {
+    // The README's outcome rule: a solver that stops itself at the solve time limit answers 422
+    // naming the field that sets the work, never a 200 without a number.
+    let server = Server::start_with(thrustline::Settings {
+        solve_timeout: std::time::Duration::from_millis(1),
+        ..Default::default()
+    })
+    .await;
+    let mut refine = spencer_example();
+    refine["slices"] = json!(10);
+    refine["slice_tolerance"] = json!(1e-9);
+    let minimum = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 10000},
+                         "tolerance": 1e-9});
+    for (path, body, field) in [
+        ("/arch/dead-load", assembly_arch(1000), "geometry"),
+        ("/arch/minimum-thickness", minimum, "tolerance"),
+        ("/slope/spencer", refine, "slice_tolerance"),
+    ] {
+        let (status, content_type, body) = server.post(path, &body).await;
+        assert_eq!(
+            (status, content_type.as_str()),
+            (422, "application/problem+json"),
+            "{path}: {body}"
+        );
+        assert_eq!(body["field"], field, "{path}: {body}");
+        assert!(
+            body["detail"]
+                .as_str()
+                .unwrap()
+                .contains("solve time limit"),
+            "{path}: {body}"
+        );
+    }
 }
 
 #[tokio::test]

@@ -131,7 +131,10 @@ fn imports(root: &Path) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
         .map(|(module, file)| {
             let source = std::fs::read_to_string(file).unwrap();
             // Inline test modules come last; their `super` is the file itself.
-            let source = source.split("#[cfg(test)]\nmod tests").next().unwrap_or_default();
+            let source = source
+                .split("#[cfg(test)]\nmod tests")
+                .next()
+                .unwrap_or_default();
             let targets = use_paths(source)
                 .iter()
                 .filter_map(|path| resolve(module, path, &known))

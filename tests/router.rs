@@ -3,6 +3,8 @@
 // Test scaffolding: a failed request should fail the test loudly.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use http_body_util::BodyExt;
@@ -39,12 +41,7 @@ async fn healthz_in_process() {
 #[tokio::test]
 async fn spencer_example_in_process() {
     // Thesis §5.6, N = 100: F = 1.06958 (half a unit in the last printed digit).
-    let body = serde_json::json!({
-        "slope": {"height": 30.48, "length": 60.96},
-        "circle": {"x": 9.63168, "y": 63.76416},
-        "slices": 100,
-        "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}
-    });
+    let body = common::spencer_example();
     let request = Request::post("/slope/spencer")
         .header("content-type", "application/json")
         .body(Body::from(body.to_string()))

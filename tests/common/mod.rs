@@ -83,14 +83,32 @@ impl Server {
     }
 }
 
-/// Spencer (1967) example, SPEC §3.
+/// Spencer (1967) example, SPEC §3, from the solver's reference problem.
 pub fn spencer_example() -> Value {
+    use thrustline_solver::reference::spencer_1967 as s;
     json!({
-        "slope": { "height": 30.48, "length": 60.96 },
-        "circle": { "x": 9.63168, "y": 63.76416, "lower_end_factor": 0.0 },
+        "slope": { "height": s::HEIGHT, "length": s::LENGTH },
+        "circle": { "x": s::CENTRE_X, "y": s::CENTRE_Y, "lower_end_factor": 0.0 },
         "slices": 100,
-        "soil": { "unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
-                  "pore_pressure_ratio": 0.5 }
+        "soil": { "unit_weight": s::UNIT_WEIGHT,
+                  "cohesion": s::COHESION_RATIO * s::UNIT_WEIGHT * s::HEIGHT,
+                  "friction_angle_deg": s::FRICTION_ANGLE_DEG,
+                  "pore_pressure_ratio": s::PORE_PRESSURE_RATIO }
+    })
+}
+
+/// Milankovitch's semicircle of SPEC §1.4 (N = 1800, R = 10) with the given thickness, every
+/// field spelled out as SPEC §3 prints the request.
+pub fn milankovitch(thickness: f64) -> Value {
+    use thrustline_solver::reference::milankovitch as m;
+    json!({
+        "geometry": {"kind": "circular", "radius": m::RADIUS, "thickness": thickness,
+                     "voussoirs": m::VOUSSOIRS, "left_base_angle_deg": 0.0,
+                     "right_base_angle_deg": 0.0, "voussoir": "curved"},
+        "unit_weight": 1.0,
+        "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null,
+                             "t_min": null, "t_max": null},
+        "friction_coefficient": null
     })
 }
 

@@ -7,6 +7,7 @@ use std::num::NonZeroUsize;
 use std::time::Instant;
 
 use thrustline_solver::arch::*;
+use thrustline_solver::reference::{semicircle, spencer_1967};
 use thrustline_solver::slope::*;
 
 /// Median wall time in milliseconds of `runs` calls, and the last value.
@@ -32,18 +33,6 @@ fn runs_for(n: usize) -> usize {
     }
 }
 
-fn semicircle(n: usize, thickness: f64) -> CircularArch {
-    CircularArch::new(
-        10.0,
-        thickness,
-        NonZeroUsize::new(n).unwrap(),
-        0.0,
-        0.0,
-        VoussoirShape::Curved,
-    )
-    .unwrap()
-}
-
 /// A unit downward load at polar angle 45° on the middle radius, on whichever block holds it.
 fn quarter_load(arch: &CircularArch) -> Vec<LiveLoad> {
     let n = arch.voussoirs();
@@ -60,7 +49,7 @@ fn quarter_load(arch: &CircularArch) -> Vec<LiveLoad> {
 
 fn minimum_thickness_ratio(n: usize) -> f64 {
     let r = solve_minimum_thickness(
-        &semicircle(n, 1.0),
+        &semicircle(n, 10.0, 1.0),
         1.0,
         InterfaceLimits::heyman(),
         None,
@@ -74,7 +63,7 @@ fn minimum_thickness_ratio(n: usize) -> f64 {
 }
 
 fn live_factor(n: usize, settings: &LimitSettings) -> f64 {
-    let arch = semicircle(n, 1.5);
+    let arch = semicircle(n, 10.0, 1.5);
     let p = ArchProblem::new(
         arch.assembly(),
         1.0,
@@ -87,30 +76,17 @@ fn live_factor(n: usize, settings: &LimitSettings) -> f64 {
 }
 
 fn spencer(n: usize) -> f64 {
-    let p = SlopeProblem::new(
-        Embankment::new(30.48, 60.96).unwrap(),
-        SlipCircle {
-            x: 9.63168,
-            y: 63.76416,
-            lower_end_factor: 0.0,
-        },
-        NonZeroUsize::new(n).unwrap(),
-        Soil::new(10.0, 6.096, 40.0, 0.5).unwrap(),
-        Seismic::default(),
-        Vec::new(),
-    )
-    .unwrap();
-    solve_spencer(&p, &SpencerSettings::default())
+    solve_spencer(&spencer_1967::problem(n), &SpencerSettings::default())
         .factor_of_safety
         .unwrap()
 }
 
 fn critical(grid_points: usize, refine: bool) -> f64 {
-    let e = Embankment::new(30.48, 60.96).unwrap();
+    let e = spencer_1967::embankment();
     let p = SearchProblem {
         embankment: e,
         slices: NonZeroUsize::new(50).unwrap(),
-        soil: Soil::new(10.0, 6.096, 40.0, 0.5).unwrap(),
+        soil: spencer_1967::soil(spencer_1967::UNIT_WEIGHT),
         seismic: Seismic::default(),
         lower_end_factor: 0.0,
         lower_end_factor_max: None,
@@ -171,7 +147,7 @@ fn main() {
     println!("|---|---|---|---|");
     for n in [10, 100, 1800, 10000] {
         let problem = ArchProblem::new(
-            semicircle(n, 1.0747).assembly(),
+            semicircle(n, 10.0, 1.0747).assembly(),
             1.0,
             InterfaceLimits::heyman(),
             None,

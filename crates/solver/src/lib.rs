@@ -14,4 +14,5 @@ pub mod arch;
 pub mod numerics;
 pub mod outcome;
 mod polygon;
+pub mod reference;
 pub mod slope;

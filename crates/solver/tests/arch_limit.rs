@@ -5,21 +5,8 @@
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
 
-use std::num::NonZeroUsize;
-
 use thrustline_solver::arch::*;
-
-fn circular(n: usize, radius: f64, thickness: f64, shape: VoussoirShape) -> CircularArch {
-    CircularArch::new(
-        radius,
-        thickness,
-        NonZeroUsize::new(n).unwrap(),
-        0.0,
-        0.0,
-        shape,
-    )
-    .unwrap()
-}
+use thrustline_solver::reference::{circular_arch, milankovitch, semicircle};
 
 fn heyman(assembly: Assembly, loads: Vec<LiveLoad>) -> ArchProblem {
     ArchProblem::new(assembly, 1.0, InterfaceLimits::heyman(), None, loads).unwrap()
@@ -123,7 +110,11 @@ mod dead_load {
     #[test]
     fn milankovitch_1800_voussoirs_thickness_1_0748_stands() {
         // SPEC §1.4: N = 1800 curved voussoirs, R = 10, D = 1.0748: λ₀ = 1, no active limits.
-        let arch = circular(1800, 10.0, 1.0748, VoussoirShape::Curved);
+        let arch = semicircle(
+            milankovitch::VOUSSOIRS,
+            milankovitch::RADIUS,
+            milankovitch::THICKNESS_STANDS,
+        );
         let p = heyman(arch.assembly(), vec![]);
         let s = dead(&p);
         assert_eq!(s.load_factor, Some(1.0));
@@ -144,7 +135,11 @@ mod dead_load {
         // SPEC §1.4: D = 1.0747: λ₀ = 0 and the active limits are interface 1 s (0.0°, hinge at
         // the extrados), 356 q (35.5°, intrados), 901 s (90.0°, extrados), 1446 q (144.5°,
         // intrados), 1801 s (180.0°, extrados). Interfaces are 0-based here.
-        let arch = circular(1800, 10.0, 1.0747, VoussoirShape::Curved);
+        let arch = semicircle(
+            milankovitch::VOUSSOIRS,
+            milankovitch::RADIUS,
+            milankovitch::THICKNESS_FALLS,
+        );
         let s = dead(&heyman(arch.assembly(), vec![]));
         assert_eq!(s.load_factor, Some(0.0));
         assert_eq!(s.dead_load_carried, Some(false));
@@ -209,14 +204,14 @@ mod dead_load {
         // SPEC §1.4: no mechanism can form under symmetric dead load with N ≤ 3.
         for n in 1..=3 {
             for d in [1e-3, 0.01, 0.1] {
-                let arch = circular(n, 1.0, d, VoussoirShape::Curved);
+                let arch = circular_arch(n, 1.0, d, 0.0, VoussoirShape::Curved);
                 let s = dead(&heyman(arch.assembly(), vec![]));
                 assert_eq!(s.load_factor, Some(1.0), "N = {n}, D = {d}");
             }
         }
         // …while four thin voussoirs do not.
         let s = dead(&heyman(
-            circular(4, 1.0, 0.01, VoussoirShape::Curved).assembly(),
+            circular_arch(4, 1.0, 0.01, 0.0, VoussoirShape::Curved).assembly(),
             vec![],
         ));
         assert_eq!(s.load_factor, Some(0.0));
@@ -251,7 +246,7 @@ mod dead_load {
     fn friction_too_low_makes_the_springings_slide() {
         // A thick semicircle stands without sliding limits, but its springing joints are
         // horizontal: with μ below the thrust ratio H/V there they slide.
-        let arch = circular(20, 10.0, 3.0, VoussoirShape::Curved);
+        let arch = circular_arch(20, 10.0, 3.0, 0.0, VoussoirShape::Curved);
         assert_eq!(
             dead(&heyman(arch.assembly(), vec![])).load_factor,
             Some(1.0)
@@ -281,7 +276,7 @@ mod live_load {
     use super::*;
 
     fn quarter_span(n: usize, thickness: f64) -> (ArchProblem, Vec<LiveLoad>) {
-        let a = circular(n, 10.0, thickness, VoussoirShape::Curved).assembly();
+        let a = circular_arch(n, 10.0, thickness, 0.0, VoussoirShape::Curved).assembly();
         let loads = point_load(&a, n / 4, -1.0);
         (heyman(a, loads.clone()), loads)
     }
@@ -362,7 +357,7 @@ mod live_load {
             );
         }
         // Lengths × 1000 (weight grows as area, so loads × 10⁶): the same factor.
-        let big = circular(60, 10_000.0, 1_500.0, VoussoirShape::Curved).assembly();
+        let big = circular_arch(60, 10_000.0, 1_500.0, 0.0, VoussoirShape::Curved).assembly();
         let lambda = live(&heyman(big.clone(), point_load(&big, 15, -1e6)))
             .load_factor
             .unwrap();
@@ -382,7 +377,7 @@ mod live_load {
 
     #[test]
     fn quadrilateral_chain_reproduces_the_generator() {
-        let arch = circular(30, 10.0, 1.5, VoussoirShape::Quadrilateral).assembly();
+        let arch = circular_arch(30, 10.0, 1.5, 0.0, VoussoirShape::Quadrilateral).assembly();
         let corners: Vec<_> = arch.blocks.iter().map(|b| b.corners).collect();
         let chain = Assembly::from_quadrilaterals(&corners).unwrap();
         let a = live(&heyman(arch.clone(), point_load(&arch, 7, -1.0)))
@@ -406,7 +401,7 @@ mod live_load {
     #[test]
     fn two_voussoirs_cannot_form_a_mechanism() {
         // Two blocks have three joints: at most three hinges, a structure, not a mechanism.
-        let a = circular(2, 10.0, 0.5, VoussoirShape::Curved).assembly();
+        let a = circular_arch(2, 10.0, 0.5, 0.0, VoussoirShape::Curved).assembly();
         let s = solve_live_load(
             &heyman(a.clone(), point_load(&a, 0, -1.0)),
             &LimitSettings::default(),
@@ -418,7 +413,7 @@ mod live_load {
 
     #[test]
     fn no_load_is_an_error() {
-        let a = circular(10, 10.0, 1.5, VoussoirShape::Curved).assembly();
+        let a = circular_arch(10, 10.0, 1.5, 0.0, VoussoirShape::Curved).assembly();
         assert!(solve_live_load(
             &heyman(a.clone(), point_load(&a, 0, 0.0)),
             &LimitSettings::default()
@@ -464,7 +459,7 @@ mod formulations {
             (40, 3.0, Some(0.1)),
             (7, 0.2, None),
         ] {
-            let a = circular(n, 10.0, d, VoussoirShape::Curved).assembly();
+            let a = circular_arch(n, 10.0, d, 0.0, VoussoirShape::Curved).assembly();
             let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), mu, vec![]).unwrap();
             let (c, s) = both(|settings| solve_dead_load(&p, settings));
             assert_eq!(c.load_factor, s.load_factor, "N = {n}, D = {d}");
@@ -491,7 +486,7 @@ mod formulations {
                 },
             ),
         ] {
-            let a = circular(n, 10.0, 1.5, VoussoirShape::Quadrilateral).assembly();
+            let a = circular_arch(n, 10.0, 1.5, 0.0, VoussoirShape::Quadrilateral).assembly();
             let loads = point_load(&a, n / 4, -1.0);
             let p = ArchProblem::new(a, 1.0, limits, mu, loads).unwrap();
             let (c, s) = both(|settings| solve_live_load(&p, settings).unwrap());
@@ -505,7 +500,7 @@ mod formulations {
     #[test]
     fn fractional_dead_load_factor_agrees() {
         // Finite crushing strength below what the weight needs: λ₀ < 1 by Newton on the margin.
-        let a = circular(24, 10.0, 1.5, VoussoirShape::Curved).assembly();
+        let a = circular_arch(24, 10.0, 1.5, 0.0, VoussoirShape::Curved).assembly();
         let limits = InterfaceLimits {
             q_max: Some(0.5),
             s_max: Some(0.5),

@@ -6,19 +6,8 @@
 use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::*;
+use thrustline_solver::reference::{semicircle, spencer_1967};
 use thrustline_solver::slope::*;
-
-fn semicircle(n: usize, radius: f64, thickness: f64) -> CircularArch {
-    CircularArch::new(
-        radius,
-        thickness,
-        NonZeroUsize::new(n).unwrap(),
-        0.0,
-        0.0,
-        VoussoirShape::Curved,
-    )
-    .unwrap()
-}
 
 fn dead_factor(arch: &CircularArch, unit_weight: f64, friction: Option<f64>) -> f64 {
     let p = ArchProblem::new(
@@ -126,13 +115,10 @@ fn friction_zero_and_a_thousand() {
 }
 
 fn spencer(n: usize, phi: f64, ru: f64) -> SpencerSolution {
+    // Spencer's (1967) circle with other φ' and r_u.
     let p = SlopeProblem::new(
-        Embankment::new(30.48, 60.96).unwrap(),
-        SlipCircle {
-            x: 9.63168,
-            y: 63.76416,
-            lower_end_factor: 0.0,
-        },
+        spencer_1967::embankment(),
+        spencer_1967::circle(),
         NonZeroUsize::new(n).unwrap(),
         Soil::new(10.0, 6.096, phi, ru).unwrap(),
         Seismic::default(),

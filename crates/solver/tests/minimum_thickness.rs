@@ -4,21 +4,9 @@
 #![allow(clippy::unwrap_used)]
 
 use std::f64::consts::PI;
-use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::*;
-
-fn arch(n: usize, base_angle_deg: f64) -> CircularArch {
-    CircularArch::new(
-        10.0,
-        1.0,
-        NonZeroUsize::new(n).unwrap(),
-        base_angle_deg,
-        base_angle_deg,
-        VoussoirShape::Curved,
-    )
-    .unwrap()
-}
+use thrustline_solver::reference::circular_arch;
 
 fn minimum(arch: &CircularArch, friction: Option<f64>) -> MinimumThickness {
     solve_minimum_thickness(
@@ -46,7 +34,7 @@ fn found(m: &MinimumThickness) -> (f64, f64, Mechanism) {
 fn milankovitch_minimum_thickness_1800_voussoirs() {
     // SPEC §1.4: the thesis brackets d/R between 0.10747 and 0.10748 at N = 1800 curved
     // voussoirs; the exact limit is 0.10748 (N → ∞: 0.1075) with rupture at 54.5° from the crown.
-    let a = arch(1800, 0.0);
+    let a = circular_arch(1800, 10.0, 1.0, 0.0, VoussoirShape::Curved);
     let m = minimum(&a, None);
     let (thickness, below, mechanism) = found(&m);
     let ratio = thickness / 10.0;
@@ -94,7 +82,10 @@ fn four_voussoir_limit_by_hand() -> f64 {
 #[test]
 fn four_voussoirs_match_the_hand_computed_mechanism() {
     let by_hand = four_voussoir_limit_by_hand(); // 1.0086149…
-    let (thickness, below, mechanism) = found(&minimum(&arch(4, 0.0), None));
+    let (thickness, below, mechanism) = found(&minimum(
+        &circular_arch(4, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+        None,
+    ));
     // The answer brackets the hand value within the tolerance 1e-6·R (1e-9 for rounding).
     assert!(
         below - 1e-9 <= by_hand && by_hand <= thickness + 1e-9,
@@ -109,7 +100,11 @@ fn three_or_fewer_voussoirs_have_no_finite_minimum() {
     // SPEC §1.4: N = 1, 2, 3 stand however thin under symmetric dead load.
     for n in 1..=3 {
         assert_eq!(
-            minimum(&arch(n, 0.0), None).outcome,
+            minimum(
+                &circular_arch(n, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+                None
+            )
+            .outcome,
             MinimumThicknessOutcome::StandsHoweverThin,
             "N = {n}"
         );
@@ -121,27 +116,46 @@ fn friction_too_low_for_any_thickness() {
     // Springing joints of a semicircle are horizontal: μ = 0.2 is below the thrust ratio there
     // whatever the thickness.
     assert_eq!(
-        minimum(&arch(50, 0.0), Some(0.2)).outcome,
+        minimum(
+            &circular_arch(50, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+            Some(0.2)
+        )
+        .outcome,
         MinimumThicknessOutcome::NeverStands
     );
     // A rough joint (μ = 0.5) does not change the hinging limit of 50 voussoirs.
-    let (rough, _, _) = found(&minimum(&arch(50, 0.0), Some(0.5)));
-    let (smooth, _, _) = found(&minimum(&arch(50, 0.0), None));
+    let (rough, _, _) = found(&minimum(
+        &circular_arch(50, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+        Some(0.5),
+    ));
+    let (smooth, _, _) = found(&minimum(
+        &circular_arch(50, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+        None,
+    ));
     assert!((rough - smooth).abs() <= 1e-5, "{rough} vs {smooth}");
 }
 
 #[test]
 fn flat_segmental_arch_needs_very_little_thickness() {
     // Issue 4: a segmental arch of half-embrace 30° (base angles 60°) needs about 0.0015·R.
-    let (thickness, _, _) = found(&minimum(&arch(200, 60.0), None));
+    let (thickness, _, _) = found(&minimum(
+        &circular_arch(200, 10.0, 1.0, 60.0, VoussoirShape::Curved),
+        None,
+    ));
     let ratio = thickness / 10.0;
     assert!((0.0014..0.0016).contains(&ratio), "d/R = {ratio}");
 }
 
 #[test]
 fn horseshoe_arch_needs_more_than_the_semicircle() {
-    let (horseshoe, _, mechanism) = found(&minimum(&arch(100, -30.0), None));
-    let (semicircle, _, _) = found(&minimum(&arch(100, 0.0), None));
+    let (horseshoe, _, mechanism) = found(&minimum(
+        &circular_arch(100, 10.0, 1.0, -30.0, VoussoirShape::Curved),
+        None,
+    ));
+    let (semicircle, _, _) = found(&minimum(
+        &circular_arch(100, 10.0, 1.0, 0.0, VoussoirShape::Curved),
+        None,
+    ));
     assert!(horseshoe > 2.0 * semicircle, "{horseshoe} vs {semicircle}");
     // Still a symmetric five-hinge mechanism with hinges at both springings.
     assert_eq!(mechanism.hinges.len(), 5);
@@ -156,7 +170,7 @@ fn a_search_past_its_time_limit_stops_and_says_so() {
         ..MinimumThicknessSettings::default()
     };
     let m = solve_minimum_thickness(
-        &arch(100, 0.0),
+        &circular_arch(100, 10.0, 1.0, 0.0, VoussoirShape::Curved),
         1.0,
         InterfaceLimits::heyman(),
         None,

@@ -5,6 +5,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::reference::spencer_1967;
 use thrustline_solver::slope::*;
 
 fn problem(height: f64, length: f64, soil: Soil, slices: usize) -> SearchProblem {
@@ -19,7 +20,7 @@ fn problem(height: f64, length: f64, soil: Soil, slices: usize) -> SearchProblem
 }
 
 fn spencer_soil() -> Soil {
-    Soil::new(10.0, 0.02 * 10.0 * 30.48, 40.0, 0.5).unwrap()
+    spencer_1967::soil(spencer_1967::UNIT_WEIGHT)
 }
 
 fn circle(x: f64, y: f64) -> SlipCircle {
@@ -34,7 +35,12 @@ fn circle(x: f64, y: f64) -> SlipCircle {
 fn spencer_example_circle_lies_in_the_valley_of_the_contour_map() {
     // SPEC §2.3: contours roughly elliptical, the critical centre near the perpendicular bisector
     // of the slope on its uphill side; Spencer's circle (X = 31.6 ft, Y = 209.2 ft) near it.
-    let p = problem(30.48, 60.96, spencer_soil(), 50);
+    let p = problem(
+        spencer_1967::HEIGHT,
+        spencer_1967::LENGTH,
+        spencer_soil(),
+        50,
+    );
     let grid = SearchGrid {
         x_min: -30.0,
         x_max: 40.0,
@@ -48,14 +54,14 @@ fn spencer_example_circle_lies_in_the_valley_of_the_contour_map() {
     let critical = s.circle.unwrap();
     assert!(!s.is_on_edge);
     let spencer =
-        factor_of_safety(&p, circle(9.63168, 63.76416), &SpencerSettings::default()).unwrap();
+        factor_of_safety(&p, spencer_1967::circle(), &SpencerSettings::default()).unwrap();
     // Spencer's circle is within 6 % of the minimum: in the valley, not on its flanks.
     assert!(
         spencer >= f_min && spencer - f_min < 0.06 * f_min,
         "{spencer} vs {f_min}"
     );
     // The critical centre lies within 15 % of the face length of the perpendicular bisector.
-    let (h, l) = (30.48f64, 60.96f64);
+    let (h, l) = (spencer_1967::HEIGHT, spencer_1967::LENGTH);
     let face = h.hypot(l);
     let d = (critical.x - l / 2.0, critical.y - h / 2.0);
     let distance = (d.0 * l / face + d.1 * h / face).abs();
@@ -132,8 +138,8 @@ fn cohesionless_shallow_circle_tends_to_the_infinite_slope() {
 
 fn spencer_example(seismic: Seismic, loads: Vec<ExternalLoad>) -> SlopeProblem {
     SlopeProblem::new(
-        Embankment::new(30.48, 60.96).unwrap(),
-        circle(9.63168, 63.76416),
+        spencer_1967::embankment(),
+        spencer_1967::circle(),
         NonZeroUsize::new(100).unwrap(),
         spencer_soil(),
         seismic,
@@ -231,7 +237,12 @@ fn searching_the_lower_end_too_never_does_worse() {
 
 #[test]
 fn a_search_past_its_time_limit_says_so() {
-    let p = problem(30.48, 60.96, spencer_soil(), 50);
+    let p = problem(
+        spencer_1967::HEIGHT,
+        spencer_1967::LENGTH,
+        spencer_soil(),
+        50,
+    );
     let settings = SearchSettings {
         time_limit: Some(std::time::Duration::ZERO),
         ..SearchSettings::default()

@@ -392,7 +392,7 @@ mod tests {
     use super::*;
 
     fn semicircle(n: usize, shape: VoussoirShape) -> CircularArch {
-        CircularArch::new(10.0, 1.0, NonZeroUsize::new(n).unwrap(), 0.0, 0.0, shape).unwrap()
+        crate::reference::circular_arch(n, 10.0, 1.0, 0.0, shape)
     }
 
     #[test]

@@ -313,13 +313,7 @@ mod tests {
     use std::num::NonZeroUsize;
 
     fn spencer_example(n: usize) -> SlopeGeometry {
-        let embankment = Embankment::new(30.48, 60.96).unwrap();
-        let circle = SlipCircle {
-            x: 9.63168,
-            y: 63.76416,
-            lower_end_factor: 0.0,
-        };
-        SlopeGeometry::new(embankment, circle, NonZeroUsize::new(n).unwrap()).unwrap()
+        crate::reference::spencer_1967::problem(n).geometry
     }
 
     #[test]

@@ -109,3 +109,68 @@ pub fn refine_slices(
         steps,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::spencer_1967;
+
+    #[test]
+    fn spencer_example_refined_from_ten_slices_reaches_the_converged_f() {
+        // Spencer (1967) example: converged F = 1.0695 (SPEC §2.3). From 10 slices (F = 1.07188
+        // in the thesis' table) the doublings settle to 1e-5; the answer is within 5e-5 of the
+        // published four digits (their rounding).
+        let settings = RefinementSettings::new(1e-5);
+        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+        assert_eq!(refined.status, RefinementStatus::Settled);
+        let f = refined.solution.factor_of_safety.unwrap();
+        assert!((f - spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-5, "F = {f}");
+        // Each step doubles the slices, and the last two agree to the tolerance.
+        let steps = &refined.steps;
+        assert!(steps.windows(2).all(|w| w[1].slices == 2 * w[0].slices));
+        let (a, b) = (
+            steps[steps.len() - 2].factor_of_safety.unwrap(),
+            steps[steps.len() - 1].factor_of_safety.unwrap(),
+        );
+        assert!((a - b).abs() <= 1e-5 * b);
+        assert_eq!(
+            refined.problem.geometry.slices.len(),
+            steps[steps.len() - 1].slices
+        );
+    }
+
+    #[test]
+    fn the_slice_limit_and_the_deadline_end_a_refinement_honestly() {
+        // A tolerance no doubling can meet stops at the slice limit, not in a loop.
+        let settings = RefinementSettings {
+            max_slices: 80,
+            ..RefinementSettings::new(1e-15)
+        };
+        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+        assert_eq!(refined.status, RefinementStatus::SliceLimit);
+        assert_eq!(refined.steps.len(), 4); // 10, 20, 40, 80
+                                            // A deadline in the past stops before the first doubling.
+        let settings = RefinementSettings {
+            deadline: Some(Instant::now()),
+            ..RefinementSettings::new(1e-15)
+        };
+        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+        assert_eq!(
+            refined.status,
+            RefinementStatus::SolverFailed(SolverFailure::MaxTime)
+        );
+        assert_eq!(refined.steps.len(), 1);
+    }
+
+    #[test]
+    fn a_problem_with_external_loads_is_not_re_cut() {
+        let mut problem = spencer_1967::problem(10);
+        problem.external_loads.push(crate::slope::ExternalLoad {
+            slice: 0,
+            fx: 0.0,
+            fy: -1.0,
+            moment: 0.0,
+        });
+        assert!(refine_slices(problem, &RefinementSettings::new(1e-4)).is_err());
+    }
+}

@@ -1,25 +1,20 @@
 use std::num::NonZeroUsize;
 
 use super::*;
-use crate::slope::{Embankment, SlipCircle, SlopeError, SlopeParameter};
+use crate::reference::spencer_1967;
+use crate::slope::{SlopeError, SlopeParameter};
 
-/// Spencer (1967) example in the thesis' SI units: H = 100 ft, 2:1, c'/(γH) = 0.02, φ' = 40°,
-/// r_u = 0.5, centre X = 31.6 ft, Y = 209.2 ft from the toe.
+/// Spencer (1967) example with the unit weight and the cohesion scaled.
 fn spencer_example(n: usize, unit_weight: f64, cohesion_scale: f64) -> SlopeProblem {
-    let height = 30.48;
     SlopeProblem::new(
-        Embankment::new(height, 60.96).unwrap(),
-        SlipCircle {
-            x: 9.63168,
-            y: 63.76416,
-            lower_end_factor: 0.0,
-        },
+        spencer_1967::embankment(),
+        spencer_1967::circle(),
         NonZeroUsize::new(n).unwrap(),
         Soil::new(
             unit_weight,
-            0.02 * unit_weight * height * cohesion_scale,
-            40.0,
-            0.5,
+            spencer_1967::COHESION_RATIO * unit_weight * spencer_1967::HEIGHT * cohesion_scale,
+            spencer_1967::FRICTION_ANGLE_DEG,
+            spencer_1967::PORE_PRESSURE_RATIO,
         )
         .unwrap(),
         Seismic::default(),
