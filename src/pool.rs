@@ -70,31 +70,59 @@ impl SolvePool {
                 .map_err(|_| ApiError::Overloaded {
                     queued: self.max_queued,
                 })?;
-        let running = self
-            .running
-            .clone()
-            .acquire_owned()
-            .await
-            .map_err(|_| ApiError::Internal("solve pool closed".to_owned()))?;
-        let span = tracing::Span::current();
-        let task = tokio::task::spawn_blocking(move || {
-            let _entered = span.enter();
-            let _running = running;
-            let start = Instant::now();
-            let value = solve();
-            (value, start.elapsed())
-        });
-        match tokio::time::timeout(self.deadline, task).await {
+        // The deadline covers the wait for a worker as well as the solve.
+        let work = async {
+            let running = self
+                .running
+                .clone()
+                .acquire_owned()
+                .await
+                .map_err(|_| ApiError::Internal("solve pool closed".to_owned()))?;
+            let span = tracing::Span::current();
+            let task = tokio::task::spawn_blocking(move || {
+                let _entered = span.enter();
+                let _running = running;
+                let start = Instant::now();
+                let value = solve();
+                (value, start.elapsed())
+            });
+            task.await.map_err(|join_error| {
+                ApiError::Internal(format!("solve task failed: {join_error}"))
+            })
+        };
+        match tokio::time::timeout(self.deadline, work).await {
             Ok(Ok(result)) => {
                 self.metrics.observe_solve(result.1);
                 Ok(result)
             }
-            Ok(Err(join_error)) => Err(ApiError::Internal(format!(
-                "solve task failed: {join_error}"
-            ))),
+            Ok(Err(error)) => Err(error),
             Err(_) => Err(ApiError::TimedOut {
                 seconds: self.deadline.as_secs_f64(),
             }),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn the_deadline_covers_the_wait_for_a_worker() {
+        // One worker, busy for 600 ms; the next solve waits for it and is answered 503 at the
+        // 150 ms deadline, not after the first one finishes (regression: the wait was outside).
+        let pool = SolvePool::new(1, 4, Duration::from_millis(150), Arc::default());
+        let busy = pool.clone();
+        let first = tokio::spawn(async move {
+            busy.run(|| std::thread::sleep(Duration::from_millis(600)))
+                .await
+        });
+        tokio::time::sleep(Duration::from_millis(50)).await;
+        let started = Instant::now();
+        let second = pool.run(|| ()).await;
+        assert!(matches!(second, Err(ApiError::TimedOut { .. })), "{second:?}");
+        assert!(started.elapsed() < Duration::from_millis(450));
+        // The first one, over its deadline too, is also a time-out.
+        assert!(matches!(first.await, Ok(Err(ApiError::TimedOut { .. }))));
     }
 }
