@@ -56,6 +56,17 @@ pub(crate) struct ChainStatics {
     pub live_scale: f64,
 }
 
+/// The resultant of one interface as an affine function of the redundants and load factors.
+#[derive(Debug, Clone, Copy)]
+pub struct InterfaceAffine<'a> {
+    /// The 3×3 map of the redundants x.
+    pub map: &'a Matrix3,
+    /// The part per unit dead-load factor.
+    pub dead: [f64; 3],
+    /// The part per unit live-load factor.
+    pub live: [f64; 3],
+}
+
 impl ChainStatics {
     /// The statics of `assembly` with dead weight γ·area and the given live loads, in the
     /// scaling of [`super::equilibrium::assemble_equilibrium`] (same W and L).
@@ -137,10 +148,13 @@ impl ChainStatics {
         self.decompose.len()
     }
 
-    /// The resultant (q, s, t) of interface k as `a·x + dead_factor·dead + live_factor·live`:
-    /// returns (the 3×3 map of x, the dead part, the live part).
-    pub fn affine(&self, k: usize) -> (&Matrix3, [f64; 3], [f64; 3]) {
-        (&self.decompose[k], self.dead[k], self.live[k])
+    /// The resultant (q, s, t) of interface k as `map·x + dead_factor·dead + live_factor·live`.
+    pub fn affine(&self, k: usize) -> InterfaceAffine<'_> {
+        InterfaceAffine {
+            map: &self.decompose[k],
+            dead: self.dead[k],
+            live: self.live[k],
+        }
     }
 
     /// All resultants (scaled) for redundants `x` and the load factors.

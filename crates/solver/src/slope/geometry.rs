@@ -251,13 +251,12 @@ fn upper_exit(
             let b = 2.0 * (m * d - xc);
             let c = xc * xc + d * d - radius * radius;
             let discriminant = b * b - 4.0 * a * c;
-            let roots = if discriminant < 0.0 {
-                [f64::NAN, f64::NAN]
-            } else {
+            // No crossing with this piece when the discriminant is negative.
+            let roots = (discriminant >= 0.0).then(|| {
                 let sq = discriminant.sqrt();
                 [(-b - sq) / (2.0 * a), (-b + sq) / (2.0 * a)]
-            };
-            roots.into_iter().filter(move |&x| {
+            });
+            roots.into_iter().flatten().filter(move |&x| {
                 x.is_finite()
                     && x >= x0 - tolerance
                     && x <= x1 + tolerance

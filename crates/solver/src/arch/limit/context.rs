@@ -142,7 +142,7 @@ impl<'a> Context<'a> {
             }
             Model::Chain(chain) => {
                 let scale = chain.live_scale;
-                let coefficient = |a: &[f64; 3], k: usize| dot(a, &chain.affine(k).2) / scale;
+                let coefficient = |a: &[f64; 3], k: usize| dot(a, &chain.affine(k).live) / scale;
                 let programme = solve_chain_programme(
                     chain,
                     &self.rows,
@@ -177,7 +177,7 @@ impl<'a> Context<'a> {
                 .zip(z)
                 .map(|(row, z)| {
                     let (k, a) = row.local();
-                    z * dot(&a, &chain.affine(k).1)
+                    z * dot(&a, &chain.affine(k).dead)
                 })
                 .sum(),
         }

@@ -121,10 +121,10 @@ impl ArchProblem {
                 ));
             }
             let values = [load.point.0, load.point.1, load.fx, load.fy, load.moment];
-            if values.iter().any(|v| !v.is_finite()) {
+            if let Some(&value) = values.iter().find(|v| !v.is_finite()) {
                 return Err(ArchError::range(
                     ArchParameter::Load { index: i },
-                    f64::NAN,
+                    value,
                     "finite numbers",
                 ));
             }

@@ -155,7 +155,8 @@ pub(super) fn solve_chain_programme(
         .iter()
         .map(|row| {
             let (k, a) = row.local();
-            let (d, dead, _) = chain.affine(k);
+            let affine = chain.affine(k);
+            let (d, dead) = (affine.map, affine.dead);
             let coefficients = [
                 a[0] * d[0][0] + a[1] * d[1][0] + a[2] * d[2][0],
                 a[0] * d[0][1] + a[1] * d[1][1] + a[2] * d[2][1],
