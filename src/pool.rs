@@ -120,7 +120,10 @@ mod tests {
         tokio::time::sleep(Duration::from_millis(50)).await;
         let started = Instant::now();
         let second = pool.run(|| ()).await;
-        assert!(matches!(second, Err(ApiError::TimedOut { .. })), "{second:?}");
+        assert!(
+            matches!(second, Err(ApiError::TimedOut { .. })),
+            "{second:?}"
+        );
         assert!(started.elapsed() < Duration::from_millis(450));
         // The first one, over its deadline too, is also a time-out.
         assert!(matches!(first.await, Ok(Err(ApiError::TimedOut { .. }))));

@@ -10,7 +10,8 @@ use thrustline_solver::arch::{
 };
 
 use super::request::{
-    DeadLoadRequest, GeometryDto, InterfaceLimitsDto, LiveLoadRequest, LoadDto, VoussoirDto,
+    DeadLoadRequest, GeometryDto, LimitFields, LiveLoadRequest, LoadDto, MaterialFields,
+    VoussoirDto,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -44,18 +45,7 @@ pub struct Material {
 impl DeadLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
-        let material = material(
-            self.unit_weight,
-            &self.interface_limits,
-            self.friction_coefficient,
-        )?;
-        input(
-            &self.geometry,
-            material,
-            &[],
-            self.formulation.solver(),
-            (self.solver_tolerance, time_limit_secs),
-        )
+        input(self.limit_fields(), &[], time_limit_secs)
     }
 }
 
@@ -63,29 +53,17 @@ impl LiveLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
         count("loads", self.loads.len(), 1, MAX_LOADS)?;
-        let material = material(
-            self.unit_weight,
-            &self.interface_limits,
-            self.friction_coefficient,
-        )?;
-        input(
-            &self.geometry,
-            material,
-            &self.loads,
-            self.formulation.solver(),
-            (self.solver_tolerance, time_limit_secs),
-        )
+        input(self.limit_fields(), &self.loads, time_limit_secs)
     }
 }
 
 fn input(
-    geometry: &GeometryDto,
-    material: Material,
+    fields: LimitFields,
     loads: &[LoadDto],
-    formulation: thrustline_solver::arch::Formulation,
-    (tolerance, time_limit_secs): (f64, f64),
+    time_limit_secs: f64,
 ) -> Result<ArchInput, ApiError> {
-    let assembly = assembly(geometry)?;
+    let material = material(fields.material)?;
+    let assembly = assembly(fields.geometry)?;
     let live_loads = live_loads(&assembly, loads)?;
     let problem = ArchProblem::new(
         assembly,
@@ -97,15 +75,15 @@ fn input(
     let (min, max) = SOLVER_TOLERANCE;
     let settings = LimitSettings {
         time_limit_secs,
-        formulation,
-        tolerance: number("solver_tolerance", tolerance, min, false, max)?,
+        formulation: fields.formulation.solver(),
+        tolerance: number("solver_tolerance", fields.solver_tolerance, min, false, max)?,
         ..LimitSettings::default()
     };
     Ok(ArchInput {
         problem,
         settings,
         is_curved: matches!(
-            geometry,
+            fields.geometry,
             GeometryDto::Circular {
                 voussoir: VoussoirDto::Curved,
                 ..
@@ -116,12 +94,9 @@ fn input(
 
 /// Validates the unit weight, `interface_limits` (missing fields take Heyman's values, `null`
 /// is unbounded) and `friction_coefficient` (null: no sliding).
-pub fn material(
-    unit_weight: f64,
-    limits: &InterfaceLimitsDto,
-    friction: Option<f64>,
-) -> Result<Material, ApiError> {
-    let unit_weight = number("unit_weight", unit_weight, 0.0, true, MAX_MAGNITUDE)?;
+pub fn material(fields: MaterialFields) -> Result<Material, ApiError> {
+    let unit_weight = number("unit_weight", fields.unit_weight, 0.0, true, MAX_MAGNITUDE)?;
+    let limits = fields.interface_limits;
     let heyman = InterfaceLimits::heyman();
     let limit = |field: &str, given: Option<Option<f64>>, default: Option<f64>, lower: bool| {
         let field = format!("interface_limits.{field}");
@@ -139,7 +114,8 @@ pub fn material(
         t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
         t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
     };
-    let friction = friction
+    let friction = fields
+        .friction_coefficient
         .map(|mu| {
             number(
                 "friction_coefficient",

@@ -11,7 +11,7 @@ use thrustline_solver::arch::{
 use utoipa::ToSchema;
 
 use super::input::{circular_arch, material, CircularFields};
-use super::request::{arch_request, unit, InterfaceLimitsDto, VoussoirDto};
+use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields, VoussoirDto};
 use super::response::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
@@ -151,11 +151,7 @@ pub async fn minimum_thickness(
         right_base_angle_deg: g.right_base_angle_deg,
         voussoir: g.voussoir,
     })?;
-    let material = material(
-        request.unit_weight,
-        &request.interface_limits,
-        request.friction_coefficient,
-    )?;
+    let material = material(request.material())?;
     let (min, max) = THICKNESS_TOLERANCE;
     let settings = MinimumThicknessSettings {
         tolerance: number("tolerance", request.tolerance, min, false, max)?,

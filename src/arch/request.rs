@@ -172,8 +172,32 @@ pub struct LoadDto {
     pub moment: f64,
 }
 
+/// The material every arch request shares, borrowed from it for validation.
+#[derive(Debug, Clone, Copy)]
+pub struct MaterialFields<'a> {
+    /// `unit_weight`.
+    pub unit_weight: f64,
+    /// `interface_limits`.
+    pub interface_limits: &'a InterfaceLimitsDto,
+    /// `friction_coefficient`.
+    pub friction_coefficient: Option<f64>,
+}
+
+/// What the dead- and live-load requests share, borrowed from them for validation.
+#[derive(Debug, Clone, Copy)]
+pub struct LimitFields<'a> {
+    /// `geometry`.
+    pub geometry: &'a GeometryDto,
+    /// `formulation`.
+    pub formulation: FormulationDto,
+    /// `solver_tolerance`.
+    pub solver_tolerance: f64,
+    /// The material.
+    pub material: MaterialFields<'a>,
+}
+
 /// Declares an arch request: the route's own fields, then the material every arch route shares
-/// (unit weight, interface limits, friction), documented once.
+/// (unit weight, interface limits, friction), documented once, with `material()` to borrow it.
 macro_rules! arch_request {
     ($(#[$attr:meta])* pub struct $name:ident { $($(#[$field_attr:meta])* pub $field:ident: $ty:ty,)* }) => {
         $(#[$attr])*
@@ -193,11 +217,61 @@ macro_rules! arch_request {
             #[schema(minimum = 0.0, maximum = 1000000.0)]
             pub friction_coefficient: Option<f64>,
         }
+
+        impl $name {
+            /// The material fields of the request.
+            pub fn material(&self) -> MaterialFields<'_> {
+                MaterialFields {
+                    unit_weight: self.unit_weight,
+                    interface_limits: &self.interface_limits,
+                    friction_coefficient: self.friction_coefficient,
+                }
+            }
+        }
     };
 }
 pub(crate) use arch_request;
 
-arch_request! {
+/// Declares a limit-analysis request (dead or live load): the structure and the solver controls,
+/// then the route's own fields, then the material ([`arch_request!`]), with `limit_fields()`.
+macro_rules! limit_request {
+    ($(#[$attr:meta])* pub struct $name:ident { $($(#[$field_attr:meta])* pub $field:ident: $ty:ty,)* }) => {
+        arch_request! {
+            $(#[$attr])*
+            pub struct $name {
+                /// The structure.
+                pub geometry: GeometryDto,
+                /// Which model the programmes are written on: `chain` (three redundant forces,
+                /// the default and fastest) or `assembly` (Livesley's general formulation, three
+                /// unknowns per interface). Both give the same answer; the choice is for
+                /// cross-checking.
+                #[serde(default)]
+                pub formulation: FormulationDto,
+                /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4.
+                /// Defaults to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and
+                /// still right to 1e-7 (see the README's accuracy tables).
+                #[serde(default = "default_solver_tolerance")]
+                #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+                pub solver_tolerance: f64,
+                $($(#[$field_attr])* pub $field: $ty,)*
+            }
+        }
+
+        impl $name {
+            /// The fields every limit-analysis request shares.
+            pub fn limit_fields(&self) -> LimitFields<'_> {
+                LimitFields {
+                    geometry: &self.geometry,
+                    formulation: self.formulation,
+                    solver_tolerance: self.solver_tolerance,
+                    material: self.material(),
+                }
+            }
+        }
+    };
+}
+
+limit_request! {
     /// Livesley's dead-load problem: does the structure carry its own weight?
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
@@ -208,24 +282,10 @@ arch_request! {
         "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null, "t_min": null, "t_max": null},
         "friction_coefficient": null
     }))]
-    pub struct DeadLoadRequest {
-        /// The structure.
-        pub geometry: GeometryDto,
-        /// Which model the programmes are written on: `chain` (three redundant forces, the
-        /// default and fastest) or `assembly` (Livesley's general formulation, three unknowns per
-        /// interface). Both give the same answer; the choice is for cross-checking.
-        #[serde(default)]
-        pub formulation: FormulationDto,
-        /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults
-        /// to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to
-        /// 1e-7 (see the README's accuracy tables).
-        #[serde(default = "default_solver_tolerance")]
-        #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
-        pub solver_tolerance: f64,
-    }
+    pub struct DeadLoadRequest {}
 }
 
-arch_request! {
+limit_request! {
     /// Livesley's live-load problem: the factor on the live loads at collapse.
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
@@ -235,19 +295,6 @@ arch_request! {
         "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
     }))]
     pub struct LiveLoadRequest {
-        /// The structure.
-        pub geometry: GeometryDto,
-        /// Which model the programmes are written on: `chain` (three redundant forces, the
-        /// default and fastest) or `assembly` (Livesley's general formulation, three unknowns per
-        /// interface). Both give the same answer; the choice is for cross-checking.
-        #[serde(default)]
-        pub formulation: FormulationDto,
-        /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4. Defaults
-        /// to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and still right to
-        /// 1e-7 (see the README's accuracy tables).
-        #[serde(default = "default_solver_tolerance")]
-        #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
-        pub solver_tolerance: f64,
         /// The live loads (1 to 10000), multiplied together by the load factor.
         #[schema(min_items = 1, max_items = 10000)]
         pub loads: Vec<LoadDto>,
