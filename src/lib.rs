@@ -5,6 +5,12 @@
 //! blocking pool → JSON response, and solver or request errors → problem+json. The numerics live
 //! in `thrustline-solver`.
 //!
+//! - [`arch`] and [`slope`]: one folder per problem, following the pipeline — `request` (what
+//!   clients send) → `input` (the one validation, into the solver's typed inputs) → the solve on
+//!   the [`pool`] → `response` (built whole) and `drawing`;
+//! - [`limits`] (every size and magnitude limit), [`fields`] (solver parameter → JSON field),
+//!   [`error`] (problem+json; the outcome rule of the README: a solver stopped at the time limit
+//!   is 422 naming the field that sets the work, capacity and the pool deadline are 503);
 //! - [`app`] builds the router (used by `main` and by the tests with `oneshot`);
 //! - [`serve`] runs it on a listener until the shutdown future completes.
 

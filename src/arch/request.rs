@@ -1,7 +1,7 @@
 //! The arch requests as clients send them (serde + OpenAPI types). [`super::input`] turns them
 //! into the solver's validated inputs; nothing else reads them.
 //!
-//! The three arch routes share the material and the solver controls: [`arch_request!`]
+//! The three arch routes share the material and the solver controls: `arch_request!`
 //! declares them once.
 
 use serde::{Deserialize, Deserializer, Serialize};

@@ -148,31 +148,17 @@ impl SlopeProblem {
                     allowed: "the number of an existing slice, 1 ≤ slice ≤ slices",
                 });
             }
-            let finite = "a finite number";
-            check_range(
-                SlopeParameter::ExternalLoad { index },
-                load.fx,
-                f64::MIN,
-                false,
-                f64::MAX,
-                finite,
-            )?;
-            check_range(
-                SlopeParameter::ExternalLoad { index },
-                load.fy,
-                f64::MIN,
-                false,
-                f64::MAX,
-                finite,
-            )?;
-            check_range(
-                SlopeParameter::ExternalLoad { index },
-                load.moment,
-                f64::MIN,
-                false,
-                f64::MAX,
-                finite,
-            )?;
+            for value in [load.fx, load.fy, load.moment] {
+                let parameter = SlopeParameter::ExternalLoad { index };
+                check_range(
+                    parameter,
+                    value,
+                    f64::MIN,
+                    false,
+                    f64::MAX,
+                    "a finite number",
+                )?;
+            }
         }
         let geometry = SlopeGeometry::new(embankment, circle, slices)?;
         Ok(Self {
