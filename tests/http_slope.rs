@@ -64,6 +64,29 @@ async fn out_of_range_numbers_are_422_naming_the_field() {
 }
 
 #[tokio::test]
+async fn seismic_out_of_range_is_422_with_a_circle_and_with_a_search() {
+    // The range is the solver's (Seismic::new); a search must not swallow it as "no valid
+    // circle".
+    let server = Server::start().await;
+    let mut circle = spencer_example();
+    circle["seismic"] = json!({"kh": 11.0});
+    let mut search = circle.clone();
+    search.as_object_mut().unwrap().remove("circle");
+    search["search"] = json!({});
+    let mut vertical = circle.clone();
+    vertical["seismic"] = json!({"kv": -1.0});
+    for (body, field) in [
+        (circle, "seismic.kh"),
+        (search, "seismic.kh"),
+        (vertical, "seismic.kv"),
+    ] {
+        let (status, content_type, body) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &body, 422, field);
+        assert_eq!(body["field"], field);
+    }
+}
+
+#[tokio::test]
 async fn soil_with_no_strength_is_422() {
     let server = Server::start().await;
     let body = with(spencer_example(), "soil.cohesion", json!(0.0));

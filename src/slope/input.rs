@@ -72,7 +72,7 @@ impl SpencerRequest {
         let target = match (&self.circle, &self.search) {
             (Some(circle), None) => Target::Circle(SlopeProblem::new(
                 parts.embankment,
-                circle_from(circle)?,
+                circle_from(circle),
                 parts.slices,
                 parts.soil,
                 parts.seismic,
@@ -132,10 +132,7 @@ impl SpencerRequest {
             soil.pore_pressure_ratio,
         )?;
         let seismic = match &self.seismic {
-            Some(s) => Seismic {
-                kh: number("seismic.kh", s.kh, -10.0, false, 10.0)?,
-                kv: number("seismic.kv", s.kv, -0.99, false, 10.0)?,
-            },
+            Some(s) => Seismic::new(s.kh, s.kv)?,
             None => Seismic::default(),
         };
         count(
@@ -173,18 +170,13 @@ impl SpencerRequest {
     }
 }
 
-fn circle_from(circle: &CircleDto) -> Result<SlipCircle, ApiError> {
-    Ok(SlipCircle {
-        x: finite("circle.x", circle.x)?,
-        y: number("circle.y", circle.y, 0.0, true, f64::MAX)?,
-        lower_end_factor: number(
-            "circle.lower_end_factor",
-            circle.lower_end_factor,
-            0.0,
-            false,
-            f64::MAX,
-        )?,
-    })
+/// The circle as given: its ranges (finite X, Y > 0, F_e ≥ 0) are `SlopeGeometry::new`'s checks.
+fn circle_from(circle: &CircleDto) -> SlipCircle {
+    SlipCircle {
+        x: circle.x,
+        y: circle.y,
+        lower_end_factor: circle.lower_end_factor,
+    }
 }
 
 fn search_from(search: &SearchDto, parts: &Parts) -> Result<Target, ApiError> {

@@ -87,6 +87,30 @@ pub struct Seismic {
     pub kv: f64,
 }
 
+impl Seismic {
+    /// Seismic coefficients −10 ≤ k_h ≤ 10 and −0.99 ≤ k_v ≤ 10 (k_v > −1 keeps gravity acting).
+    pub fn new(kh: f64, kv: f64) -> Result<Self, SlopeError> {
+        Ok(Self {
+            kh: check_range(
+                SlopeParameter::SeismicKh,
+                kh,
+                -10.0,
+                false,
+                10.0,
+                "-10 ≤ kh ≤ 10",
+            )?,
+            kv: check_range(
+                SlopeParameter::SeismicKv,
+                kv,
+                -0.99,
+                false,
+                10.0,
+                "-0.99 ≤ kv ≤ 10",
+            )?,
+        })
+    }
+}
+
 /// A known force on one slice, applied at the middle of its base (the thesis' F_x, F_y, M1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ExternalLoad {
@@ -124,22 +148,7 @@ impl SlopeProblem {
         seismic: Seismic,
         external_loads: Vec<ExternalLoad>,
     ) -> Result<Self, SlopeError> {
-        check_range(
-            SlopeParameter::SeismicKh,
-            seismic.kh,
-            -10.0,
-            false,
-            10.0,
-            "-10 ≤ kh ≤ 10",
-        )?;
-        check_range(
-            SlopeParameter::SeismicKv,
-            seismic.kv,
-            -0.99,
-            false,
-            10.0,
-            "-0.99 ≤ kv ≤ 10",
-        )?;
+        Seismic::new(seismic.kh, seismic.kv)?;
         for (index, load) in external_loads.iter().enumerate() {
             if load.slice >= slices.get() {
                 return Err(SlopeError::OutOfRange {
