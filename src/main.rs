@@ -1,5 +1,5 @@
 //! The `thrustline` binary: `thrustline serve [--addr HOST:PORT]` runs the service,
-//! `thrustline openapi` prints the OpenAPI document.
+//! `thrustline openapi` prints the OpenAPI document, `thrustline --version` its version.
 
 use std::net::SocketAddr;
 use std::process::ExitCode;
@@ -9,9 +9,17 @@ use thrustline::Settings;
 const USAGE: &str =
     "usage: thrustline serve [--addr HOST:PORT]   run the service (default 127.0.0.1:8080)
        thrustline openapi                    print the OpenAPI document
+       thrustline --version                  print the version
 
-Environment: THRUSTLINE_ADDR, THRUSTLINE_MAX_RUNNING, THRUSTLINE_MAX_QUEUED,
-THRUSTLINE_BODY_LIMIT, THRUSTLINE_SOLVE_TIMEOUT_SECS, RUST_LOG (default info).";
+Environment (read by `serve`):
+  THRUSTLINE_ADDR                 listen address (default 127.0.0.1:8080; --addr wins)
+  THRUSTLINE_MAX_RUNNING          solves running at once (default: the CPU count)
+  THRUSTLINE_MAX_QUEUED           solves waiting for a worker before 503 (default 64)
+  THRUSTLINE_BODY_LIMIT           largest request body in bytes (default 4194304)
+  THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a solve in seconds (default 30)
+  THRUSTLINE_TOKEN                bearer token required by every route but /healthz (default none)
+  THRUSTLINE_CORS_ORIGINS         comma-separated origins allowed by CORS, or * (default none)
+  RUST_LOG                        log filter (default info)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -29,6 +37,10 @@ fn main() -> ExitCode {
         },
         Some("-h" | "--help" | "help") => {
             println!("{USAGE}");
+            ExitCode::SUCCESS
+        }
+        Some("-V" | "--version" | "version") => {
+            println!("thrustline {}", env!("CARGO_PKG_VERSION"));
             ExitCode::SUCCESS
         }
         _ => {
@@ -55,7 +67,10 @@ fn parse_serve(args: &[String]) -> Result<Settings, String> {
 }
 
 fn run(settings: Settings) -> ExitCode {
+    use std::io::IsTerminal;
     tracing_subscriber::fmt()
+        // Colour codes only for a person at a terminal, not in log files and collectors.
+        .with_ansi(std::io::stdout().is_terminal())
         .with_env_filter(
             tracing_subscriber::EnvFilter::try_from_default_env()
                 .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info")),
