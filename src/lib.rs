@@ -22,6 +22,7 @@ pub mod fields;
 pub mod health;
 pub mod limits;
 pub mod metrics;
+pub mod nullable;
 pub mod openapi;
 pub mod page;
 pub mod pool;

@@ -68,3 +68,94 @@ async fn wrong_method_and_missing_route_in_process() {
     );
     assert!(body["detail"].as_str().unwrap().contains("GET"));
 }
+
+/// POSTs `body` in process and returns the status and the JSON answer without its timings.
+async fn post(path: &str, body: &serde_json::Value) -> (StatusCode, serde_json::Value) {
+    let request = Request::post(path)
+        .header("content-type", "application/json")
+        .body(Body::from(body.to_string()))
+        .unwrap();
+    let (status, _, mut answer) = call(request).await;
+    strip_timings(&mut answer);
+    (status, answer)
+}
+
+fn strip_timings(value: &mut serde_json::Value) {
+    match value {
+        serde_json::Value::Object(map) => {
+            map.retain(|k, _| k != "time_ms" && k != "solve_time_ms");
+            map.values_mut().for_each(strip_timings);
+        }
+        serde_json::Value::Array(items) => items.iter_mut().for_each(strip_timings),
+        _ => {}
+    }
+}
+
+#[tokio::test]
+async fn null_for_an_optional_field_means_its_default_on_every_route() {
+    // What pydantic's model_dump() sends for unset fields: every optional field null. The answer
+    // must be the one for the body without them (interface limits excepted: there null is
+    // "unbounded", SPEC §3).
+    use serde_json::json;
+    let arch = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+                                   "voussoirs": 40}});
+    let arch_nulls = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+                                         "voussoirs": 40, "left_base_angle_deg": null,
+                                         "right_base_angle_deg": null, "voussoir": null},
+                            "unit_weight": null, "interface_limits": null,
+                            "friction_coefficient": null, "formulation": null,
+                            "solver_tolerance": null});
+    let mut live = arch.clone();
+    live["loads"] = json!([{"block": 11, "fy": -1.0}]);
+    let mut live_nulls = arch_nulls.clone();
+    live_nulls["loads"] =
+        json!([{"block": 11, "x": null, "y": null, "fx": null, "fy": -1.0, "moment": null}]);
+    let mut minimum = arch.clone();
+    minimum["geometry"]["voussoirs"] = json!(12);
+    let mut minimum_nulls = arch_nulls.clone();
+    minimum_nulls["geometry"]["voussoirs"] = json!(12);
+    minimum_nulls["geometry"]["thickness"] = json!(null);
+    let minimum_nulls = json!({"geometry": minimum_nulls["geometry"], "unit_weight": null,
+                               "interface_limits": null, "friction_coefficient": null,
+                               "tolerance": null});
+    let mut slope = common::spencer_example();
+    slope["soil"]
+        .as_object_mut()
+        .unwrap()
+        .remove("pore_pressure_ratio");
+    let mut slope_nulls = slope.clone();
+    for field in [
+        "search",
+        "curves",
+        "slice_tolerance",
+        "seismic",
+        "external_loads",
+    ] {
+        slope_nulls[field] = json!(null);
+    }
+    slope_nulls["circle"]["lower_end_factor"] = json!(null);
+    slope_nulls["soil"]["pore_pressure_ratio"] = json!(null);
+    slope_nulls["slices"] = json!(null);
+    let mut search = common::spencer_example();
+    search.as_object_mut().unwrap().remove("circle");
+    search["search"] = json!({"nx": 5, "ny": 5});
+    search["slices"] = json!(20);
+    let mut search_nulls = search.clone();
+    search_nulls["search"] = json!({"x_min": null, "x_max": null, "y_min": null, "y_max": null,
+                                    "nx": 5, "ny": 5, "lower_end_factor": null,
+                                    "lower_end_factor_max": null});
+    search_nulls["circle"] = json!(null);
+    for (path, plain, nulls) in [
+        ("/arch/dead-load", &arch, &arch_nulls),
+        ("/arch/live-load", &live, &live_nulls),
+        ("/arch/minimum-thickness", &minimum, &minimum_nulls),
+        ("/slope/spencer", &slope, &slope_nulls),
+        ("/slope/spencer", &search, &search_nulls),
+    ] {
+        let (status, expected) = post(path, plain).await;
+        assert_eq!(status, StatusCode::OK, "{path}: {expected}");
+        let (status, answer) = post(path, nulls).await;
+        assert_eq!(status, StatusCode::OK, "{path}: {answer}");
+        assert!(answer == expected, "{path}: the answers differ");
+    }
+}

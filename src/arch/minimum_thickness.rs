@@ -42,15 +42,18 @@ pub struct CircularGeometryDto {
     #[schema(minimum = 1, maximum = 10000, example = 1800)]
     pub voussoirs: usize,
     /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
     pub left_base_angle_deg: f64,
     /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
     pub right_base_angle_deg: f64,
     /// Voussoir shape. Defaults to `curved`.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub voussoir: VoussoirDto,
 }
 
@@ -68,7 +71,8 @@ arch_request! {
         pub geometry: CircularGeometryDto,
         /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults
         /// to 1e-6.
-        #[serde(default = "default_tolerance")]
+        #[serde(default = "default_tolerance", deserialize_with = "crate::nullable::thickness_tolerance")]
+        #[schema(nullable)]
         #[schema(minimum = 1e-9, maximum = 0.01, default = 1e-6)]
         pub tolerance: f64,
     }

@@ -91,15 +91,18 @@ pub enum GeometryDto {
         voussoirs: usize,
         /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
         /// horseshoe). Defaults to 0.
-        #[serde(default)]
+        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[schema(nullable)]
         #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
         left_base_angle_deg: f64,
         /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
-        #[serde(default)]
+        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[schema(nullable)]
         #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
         right_base_angle_deg: f64,
         /// Voussoir shape. Defaults to `curved`.
-        #[serde(default)]
+        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[schema(nullable)]
         voussoir: VoussoirDto,
     },
     /// A chain of quadrilateral blocks; the first block's start face and the last block's end
@@ -161,14 +164,17 @@ pub struct LoadDto {
     #[serde(default)]
     pub y: Option<f64>,
     /// Horizontal force component. Defaults to 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub fx: f64,
     /// Vertical force component (up positive). Defaults to 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(example = -1.0)]
     pub fy: f64,
     /// Applied moment, counter-clockwise positive. Defaults to 0.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub moment: f64,
 }
 
@@ -204,12 +210,14 @@ macro_rules! arch_request {
         pub struct $name {
             $($(#[$field_attr])* pub $field: $ty,)*
             /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
-            #[serde(default = "unit")]
+            #[serde(default = "unit", deserialize_with = "crate::nullable::unit_weight")]
+            #[schema(nullable)]
             #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, example = 1.0)]
             pub unit_weight: f64,
             /// Limits on the interface resultants. Defaults to Heyman's (no tension, no
             /// crushing).
-            #[serde(default)]
+            #[serde(default, deserialize_with = "crate::nullable::or_default")]
+            #[schema(nullable)]
             pub interface_limits: InterfaceLimitsDto,
             /// Coulomb friction coefficient μ ≥ 0 at every interface; null = no sliding.
             /// Defaults to null.
@@ -245,12 +253,14 @@ macro_rules! limit_request {
                 /// the default and fastest) or `assembly` (Livesley's general formulation, three
                 /// unknowns per interface). Both give the same answer; the choice is for
                 /// cross-checking.
-                #[serde(default)]
+                #[serde(default, deserialize_with = "crate::nullable::or_default")]
+                #[schema(nullable)]
                 pub formulation: FormulationDto,
                 /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4.
                 /// Defaults to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and
                 /// still right to 1e-7 (see the README's accuracy tables).
-                #[serde(default = "default_solver_tolerance")]
+                #[serde(default = "default_solver_tolerance", deserialize_with = "crate::nullable::solver_tolerance")]
+                #[schema(nullable)]
                 #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
                 pub solver_tolerance: f64,
                 $($(#[$field_attr])* pub $field: $ty,)*

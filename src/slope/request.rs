@@ -27,7 +27,8 @@ pub struct CircleDto {
     #[schema(exclusive_minimum = 0.0, example = 63.76416)]
     pub y: f64,
     /// Lower-end position factor F_e ≥ 0: the lower end lies F_e·H in front of the toe.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(minimum = 0.0, example = 0.0)]
     pub lower_end_factor: f64,
 }
@@ -46,7 +47,8 @@ pub struct SoilDto {
     #[schema(minimum = 0.0, maximum = 89.9, example = 40.0)]
     pub friction_angle_deg: f64,
     /// Pore pressure ratio r_u = u/(γh), 0 ≤ r_u ≤ 1.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(minimum = 0.0, maximum = 1.0, example = 0.5)]
     pub pore_pressure_ratio: f64,
 }
@@ -56,11 +58,13 @@ pub struct SoilDto {
 #[serde(deny_unknown_fields)]
 pub struct SeismicDto {
     /// Horizontal coefficient: k_h·W acts towards the toe. −10 ≤ k_h ≤ 10.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(minimum = -10.0, maximum = 10.0, example = 0.1)]
     pub kh: f64,
     /// Vertical coefficient: k_v·W acts downwards. −0.99 ≤ k_v ≤ 10.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(minimum = -0.99, maximum = 10.0, example = 0.0)]
     pub kv: f64,
 }
@@ -73,13 +77,16 @@ pub struct ExternalLoadDto {
     #[schema(minimum = 1, maximum = 10000, example = 3)]
     pub slice: usize,
     /// Horizontal force, positive towards the crest (+x).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub fx: f64,
     /// Vertical force, positive upwards.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub fy: f64,
     /// Moment about the middle of the slice base, counter-clockwise positive.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub moment: f64,
 }
 
@@ -102,7 +109,8 @@ pub struct SpencerRequest {
     #[serde(default)]
     pub search: Option<SearchDto>,
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     pub curves: bool,
     /// Accuracy control: when given (1e-9 … 0.1), the slices are doubled from `slices` until F
     /// changes by less than this fraction (at most 10000 slices); `slice_refinement` lists the
@@ -111,7 +119,11 @@ pub struct SpencerRequest {
     #[schema(minimum = 1e-9, maximum = 0.1, example = 1e-4)]
     pub slice_tolerance: Option<f64>,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
-    #[serde(default = "default_slices")]
+    #[serde(
+        default = "default_slices",
+        deserialize_with = "crate::nullable::slices"
+    )]
+    #[schema(nullable)]
     #[schema(minimum = 1, maximum = 10000, default = 100, example = 100)]
     pub slices: usize,
     /// The soil.
@@ -120,7 +132,8 @@ pub struct SpencerRequest {
     #[serde(default)]
     pub seismic: Option<SeismicDto>,
     /// Optional known loads on slices.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(max_items = 10000)]
     pub external_loads: Vec<ExternalLoadDto>,
 }
@@ -143,15 +156,24 @@ pub struct SearchDto {
     /// Largest centre Y. Automatic when missing.
     pub y_max: Option<f64>,
     /// Grid points along X, 2 ≤ nx ≤ 101. Defaults to 21.
-    #[serde(default = "default_grid")]
+    #[serde(
+        default = "default_grid",
+        deserialize_with = "crate::nullable::grid_points"
+    )]
+    #[schema(nullable)]
     #[schema(minimum = 2, maximum = 101, default = 21)]
     pub nx: usize,
     /// Grid points along Y, 2 ≤ ny ≤ 101. Defaults to 21.
-    #[serde(default = "default_grid")]
+    #[serde(
+        default = "default_grid",
+        deserialize_with = "crate::nullable::grid_points"
+    )]
+    #[schema(nullable)]
     #[schema(minimum = 2, maximum = 101, default = 21)]
     pub ny: usize,
     /// Lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100. Defaults to 0 (toe).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
     #[schema(minimum = 0.0, maximum = 100.0)]
     pub lower_end_factor: f64,
     /// When given, F_e is searched too, within [0, this], in the refinement.
