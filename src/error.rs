@@ -191,9 +191,9 @@ impl From<JsonRejection> for ApiError {
             JsonRejection::MissingJsonContentType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
             other => other.status(),
         };
-        let detail = rejection.body_text();
+        let detail = in_plain_words(&rejection.body_text());
         let field = (status == StatusCode::UNPROCESSABLE_ENTITY)
-            .then(|| data_error_field(&detail).map(str::to_owned))
+            .then(|| data_error_field(&detail))
             .flatten();
         Self::BadRequest {
             status,
@@ -204,10 +204,49 @@ impl From<JsonRejection> for ApiError {
 }
 
 /// The field path serde reports in a data error ("…target type: slope.foo: unknown field…").
-fn data_error_field(detail: &str) -> Option<&str> {
+/// A missing field is named by its full path ("…target type: slope: missing field `height`…").
+fn data_error_field(detail: &str) -> Option<String> {
     let rest = detail.split_once("target type: ")?.1;
-    let (path, _) = rest.split_once(": ")?;
-    (!path.is_empty() && !path.contains(' ')).then_some(path)
+    let path = rest
+        .split_once(": ")
+        .map(|(path, _)| path)
+        .filter(|path| !path.is_empty() && !path.contains(' '));
+    let missing = rest
+        .split_once("missing field `")
+        .and_then(|(_, name)| name.split_once('`'))
+        .map(|(name, _)| name);
+    match (path, missing) {
+        (Some(path), Some(name)) => Some(format!("{path}.{name}")),
+        (None, Some(name)) => Some(name.to_owned()),
+        (Some(path), None) => Some(path.to_owned()),
+        (None, None) => None,
+    }
+}
+
+/// serde's words for the expected JSON, with Rust's type names replaced by JSON's.
+fn in_plain_words(detail: &str) -> String {
+    let mut text = detail
+        .replace("expected f64", "expected a number")
+        .replace("expected usize", "expected a non-negative integer")
+        .replace(
+            "expected variant identifier",
+            "expected an object with `kind`",
+        );
+    // "expected struct FooDto", "expected internally tagged enum FooDto": an object.
+    for kind in [
+        "expected internally tagged enum ",
+        "expected struct ",
+        "expected enum ",
+    ] {
+        while let Some(start) = text.find(kind) {
+            let name_start = start + kind.len();
+            let name_end = text[name_start..]
+                .find(|c: char| !c.is_alphanumeric() && c != '_')
+                .map_or(text.len(), |i| name_start + i);
+            text.replace_range(start..name_end, "expected an object");
+        }
+    }
+    text
 }
 
 /// `axum::Json` whose rejections are problem+json.

@@ -159,3 +159,50 @@ async fn null_for_an_optional_field_means_its_default_on_every_route() {
         assert!(answer == expected, "{path}: the answers differ");
     }
 }
+
+#[tokio::test]
+async fn what_generated_clients_send_is_read_as_they_mean_it() {
+    use serde_json::json;
+    // Whole numbers written as 100.0 are integers (JSON Schema's `integer` includes them).
+    let arch = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+                                   "voussoirs": 40}});
+    let mut as_float = arch.clone();
+    as_float["geometry"]["voussoirs"] = json!(40.0);
+    let (status, expected) = post("/arch/dead-load", &arch).await;
+    assert_eq!(status, StatusCode::OK);
+    let (status, answer) = post("/arch/dead-load", &as_float).await;
+    assert_eq!(status, StatusCode::OK, "{answer}");
+    assert!(answer == expected);
+    let mut slope = common::spencer_example();
+    slope["slices"] = json!(100.0);
+    let (status, answer) = post("/slope/spencer", &slope).await;
+    assert_eq!(status, StatusCode::OK, "{answer}");
+    assert_eq!(answer["slice_count"], 100);
+    // Wrong types are 422 in JSON's words, naming the full path; never Rust's type names.
+    let mut wrong = common::spencer_example();
+    wrong["slices"] = json!(100.5);
+    let mut formulation = arch.clone();
+    formulation["formulation"] = json!(5);
+    let mut limits = arch.clone();
+    limits["interface_limits"] = json!(5);
+    let mut unit_weight = arch.clone();
+    unit_weight["unit_weight"] = json!(true);
+    let mut missing = common::spencer_example();
+    missing["slope"] = json!({"length": 2.0});
+    for (path, body, field) in [
+        ("/slope/spencer", wrong, "slices"),
+        ("/arch/dead-load", formulation, "formulation"),
+        ("/arch/dead-load", limits, "interface_limits"),
+        ("/arch/dead-load", unit_weight, "unit_weight"),
+        ("/slope/spencer", missing, "slope.height"),
+        ("/arch/dead-load", json!({}), "geometry"),
+    ] {
+        let (status, answer) = post(path, &body).await;
+        assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{answer}");
+        assert_eq!(answer["field"], field, "{answer}");
+        let detail = answer["detail"].as_str().unwrap();
+        for rust in ["f64", "usize", "struct ", "Dto", "enum "] {
+            assert!(!detail.contains(rust), "{detail}");
+        }
+    }
+}

@@ -40,6 +40,7 @@ pub struct CircularGeometryDto {
     pub thickness: Option<f64>,
     /// Number of voussoirs N, 1 ≤ N ≤ 10000.
     #[schema(minimum = 1, maximum = 10000, example = 1800)]
+    #[serde(deserialize_with = "crate::nullable::integer")]
     pub voussoirs: usize,
     /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
@@ -52,7 +53,7 @@ pub struct CircularGeometryDto {
     #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
     pub right_base_angle_deg: f64,
     /// Voussoir shape. Defaults to `curved`.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
     #[schema(nullable)]
     pub voussoir: VoussoirDto,
 }

@@ -88,6 +88,7 @@ pub enum GeometryDto {
         thickness: f64,
         /// Number of voussoirs N, 1 ≤ N ≤ 10000.
         #[schema(minimum = 1, maximum = 10000, example = 1800)]
+        #[serde(deserialize_with = "crate::nullable::integer")]
         voussoirs: usize,
         /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
         /// horseshoe). Defaults to 0.
@@ -101,7 +102,7 @@ pub enum GeometryDto {
         #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
         right_base_angle_deg: f64,
         /// Voussoir shape. Defaults to `curved`.
-        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
         #[schema(nullable)]
         voussoir: VoussoirDto,
     },
@@ -156,6 +157,7 @@ fn present<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<Option<f
 pub struct LoadDto {
     /// Block number (1-based).
     #[schema(minimum = 1, maximum = 10000, example = 5)]
+    #[serde(deserialize_with = "crate::nullable::integer")]
     pub block: usize,
     /// x of the point of application. Defaults to the block centroid.
     #[serde(default)]
@@ -253,7 +255,7 @@ macro_rules! limit_request {
                 /// the default and fastest) or `assembly` (Livesley's general formulation, three
                 /// unknowns per interface). Both give the same answer; the choice is for
                 /// cross-checking.
-                #[serde(default, deserialize_with = "crate::nullable::or_default")]
+                #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
                 #[schema(nullable)]
                 pub formulation: FormulationDto,
                 /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4.

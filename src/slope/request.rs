@@ -75,6 +75,7 @@ pub struct SeismicDto {
 pub struct ExternalLoadDto {
     /// Slice number, 1 at the lower end of the slip surface.
     #[schema(minimum = 1, maximum = 10000, example = 3)]
+    #[serde(deserialize_with = "crate::nullable::integer")]
     pub slice: usize,
     /// Horizontal force, positive towards the crest (+x).
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
