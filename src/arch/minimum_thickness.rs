@@ -107,14 +107,18 @@ pub struct MinimumThicknessResponse {
     /// The thinnest thickness found to carry the dead load (within `tolerance`·R of the limit,
     /// on the safe side); null unless found.
     #[schema(example = 1.0747802)]
+    #[schema(required = true)]
     pub thickness: Option<f64>,
     /// thickness / radius.
     #[schema(example = 0.10747802)]
+    #[schema(required = true)]
     pub thickness_to_radius: Option<f64>,
     /// The thickest thickness found not to carry it (the other end of the final bracket).
+    #[schema(required = true)]
     pub thickness_below: Option<f64>,
     /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees.
     #[schema(example = 54.5)]
+    #[schema(required = true)]
     pub rupture_angle_deg: Option<f64>,
     /// Hinges of the mechanism at the limit.
     pub hinges: Vec<HingeDto>,

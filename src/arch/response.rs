@@ -80,6 +80,7 @@ pub struct ActiveConstraintDto {
     /// Polar angle of the interface in degrees.
     pub angle_deg: f64,
     /// Where the hinge forms, for q and s at their lower limits: q → intrados, s → extrados.
+    #[schema(required = true)]
     pub hinge: Option<HingeSideDto>,
     /// The multiplier (plastic rate), with velocities normalised to a fastest corner speed of 1.
     pub multiplier: f64,
@@ -124,14 +125,17 @@ pub struct InterfaceThrustPointDto {
     /// Interface number (1-based).
     pub interface: usize,
     /// x of the point of action of the normal force; null where it vanishes.
+    #[schema(required = true)]
     pub x: Option<f64>,
     /// y of the point of action; null where it vanishes.
+    #[schema(required = true)]
     pub y: Option<f64>,
     /// Normal force q + s (compression positive).
     pub normal_force: f64,
     /// Shear force t.
     pub shear_force: f64,
     /// Distance of the point of action from the middle of the joint, towards the extrados.
+    #[schema(required = true)]
     pub eccentricity: Option<f64>,
 }
 
@@ -199,9 +203,11 @@ pub struct SolverDto {
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct ArchOutcomeDto {
     /// Whether the structure carries its own weight (λ₀ = 1); null if that could not be decided.
+    #[schema(required = true)]
     pub stable: Option<bool>,
     /// Dead-load margin at full dead load, as a fraction of the total weight: negative is a
     /// reserve (every limit met with that much to spare), positive a shortfall.
+    #[schema(required = true)]
     pub dead_load_margin: Option<f64>,
     /// The limits active in the collapse mechanism (empty when nothing collapses).
     pub active_constraints: Vec<ActiveConstraintDto>,
@@ -212,6 +218,7 @@ pub struct ArchOutcomeDto {
     /// Interfaces that crush in the mechanism.
     pub crushing_interfaces: Vec<usize>,
     /// The collapse mechanism; null when nothing collapses.
+    #[schema(required = true)]
     pub mechanism: Option<MechanismDto>,
     /// True when the mechanism slides under Coulomb friction: the linear programme assumes an
     /// associated flow rule, so the load factor may over-estimate the true one (Livesley
@@ -229,6 +236,7 @@ pub struct DeadLoadResponse {
     /// λ₀ ≤ 1, the largest fraction of the dead load that can be carried; null if the solver
     /// failed.
     #[schema(example = 1.0)]
+    #[schema(required = true)]
     pub dead_load_factor: Option<f64>,
     /// Details.
     #[serde(flatten)]
@@ -240,6 +248,7 @@ pub struct DeadLoadResponse {
 pub struct LiveLoadResponse {
     /// λ, the factor on the live loads at collapse; null when the dead load is not carried, no
     /// finite factor causes collapse, or the solver failed.
+    #[schema(required = true)]
     pub load_factor: Option<f64>,
     /// Details.
     #[serde(flatten)]

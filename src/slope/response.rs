@@ -92,6 +92,7 @@ pub struct BoundaryThrustPointDto {
     /// x of the boundary.
     pub x: f64,
     /// Height of the point of action; null where the inter-slice force vanishes.
+    #[schema(required = true)]
     pub y: Option<f64>,
     /// Inter-slice force (compression positive).
     pub force: f64,
@@ -141,12 +142,15 @@ pub struct SpencerResponse {
     pub status: SpencerStatusDto,
     /// Spencer's factor of safety F; null when not converged.
     #[schema(example = 1.06958)]
+    #[schema(required = true)]
     pub factor_of_safety: Option<f64>,
     /// Inclination θ of the parallel inter-slice forces in degrees; null when not converged.
     #[schema(example = 22.432)]
+    #[schema(required = true)]
     pub theta_deg: Option<f64>,
     /// Bishop's simplified factor of safety (θ = 0, moment equation); null when it has no root.
     #[schema(example = 1.0397)]
+    #[schema(required = true)]
     pub bishop_factor_of_safety: Option<f64>,
     /// Radius of the slip circle.
     #[schema(example = 64.4875)]
@@ -162,6 +166,7 @@ pub struct SpencerResponse {
     /// Newton iterations (plus fallback evaluations).
     pub iterations: usize,
     /// Largest scaled residual of the two equations (force/ΣW, moment/(ΣW·R)).
+    #[schema(required = true)]
     pub residual: Option<f64>,
     /// Things the engineer should look at: small m_α, tension at the base, a thrust line
     /// outside the mass, no solution.
@@ -188,6 +193,7 @@ pub struct SliceRefinementDto {
     /// Number of slices.
     pub slices: usize,
     /// F with that many slices; null where the equations had no solution.
+    #[schema(required = true)]
     pub factor_of_safety: Option<f64>,
 }
 
