@@ -19,20 +19,20 @@ pub const PROBLEM_JSON: &str = "application/problem+json";
 #[derive(Debug, Serialize, ToSchema)]
 pub struct Problem {
     /// A URI reference that identifies the problem type (`about:blank` for the plain HTTP meaning).
-    #[schema(example = "about:blank")]
+    #[schema(examples("about:blank"))]
     pub r#type: String,
     /// Short summary of the problem type.
-    #[schema(example = "Unprocessable Content")]
+    #[schema(examples("Unprocessable Content"))]
     pub title: String,
     /// The HTTP status code.
-    #[schema(example = 422)]
+    #[schema(examples(422))]
     pub status: u16,
     /// What went wrong, naming the offending field and the allowed range.
-    #[schema(example = "slices = 0 is out of range: an integer 1 ≤ slices ≤ 10000")]
+    #[schema(examples("slices = 0 is out of range: an integer 1 ≤ slices ≤ 10000"))]
     pub detail: String,
     /// The offending field as a dotted path into the request body, when there is one.
     #[serde(skip_serializing_if = "Option::is_none")]
-    #[schema(example = "slices")]
+    #[schema(examples("slices"))]
     pub field: Option<String>,
 }
 

@@ -12,10 +12,10 @@ use crate::AppState;
 #[derive(Debug, Serialize, ToSchema)]
 pub struct Health {
     /// Always `"ok"` when the service answers.
-    #[schema(example = "ok")]
+    #[schema(examples("ok"))]
     pub status: &'static str,
     /// Version of the service.
-    #[schema(example = "0.1.0")]
+    #[schema(examples("0.1.0"))]
     pub version: &'static str,
     /// Solves running right now.
     pub running_solves: usize,
@@ -24,10 +24,13 @@ pub struct Health {
 }
 
 /// Liveness and readiness probe.
+///
+/// Answers 200 while the service can take solves; needs no token even when one is set.
 #[utoipa::path(
     get,
     path = "/healthz",
     tag = "service",
+    security(()),
     responses((status = 200, description = "The service can serve", body = Health))
 )]
 pub async fn healthz(State(state): State<AppState>) -> (StatusCode, Json<Health>) {

@@ -122,6 +122,9 @@ pub async fn count_requests(
 }
 
 /// Prometheus metrics of this instance.
+///
+/// Requests by route and status, the solve-time histogram, solves running and waiting, in the
+/// Prometheus text format.
 #[utoipa::path(
     get,
     path = "/metrics",

@@ -13,8 +13,10 @@ use utoipa::OpenApi;
                        of embankments by Spencer's method (1967/1973). JSON, snake_case, any \
                        consistent units, angles in degrees (`_deg`). Errors are \
                        application/problem+json (RFC 9457) naming the field at fault.",
-        license(name = "MIT OR Apache-2.0")
+        license(name = "MIT OR Apache-2.0", identifier = "MIT OR Apache-2.0")
     ),
+    servers((url = "/", description = "The service that serves this document")),
+    modifiers(&BearerToken),
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
@@ -34,6 +36,35 @@ use utoipa::OpenApi;
     )
 )]
 pub struct ApiDoc;
+
+/// The optional bearer token (`THRUSTLINE_TOKEN`): when the service is started with one, every
+/// route but `/healthz` needs `Authorization: Bearer <token>`; without one, none does.
+struct BearerToken;
+
+impl utoipa::Modify for BearerToken {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::security::{
+            HttpAuthScheme, HttpBuilder, SecurityRequirement, SecurityScheme,
+        };
+        let components = openapi.components.get_or_insert_with(Default::default);
+        components.add_security_scheme(
+            "bearer",
+            SecurityScheme::Http(
+                HttpBuilder::new()
+                    .scheme(HttpAuthScheme::Bearer)
+                    .description(Some(
+                        "Required only when the service runs with THRUSTLINE_TOKEN set.",
+                    ))
+                    .build(),
+            ),
+        );
+        // Either no credentials (a service without a token) or the bearer token.
+        openapi.security = Some(vec![
+            SecurityRequirement::default(),
+            SecurityRequirement::new("bearer", Vec::<String>::new()),
+        ]);
+    }
+}
 
 /// The document as pretty-printed JSON, exactly as committed in `openapi/openapi.json`.
 pub fn openapi_json() -> String {

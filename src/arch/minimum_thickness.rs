@@ -33,13 +33,13 @@ pub struct CircularGeometryDto {
     /// Always `circular`.
     pub kind: CircularKind,
     /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
-    #[schema(minimum = 1e-9, maximum = 1e9, example = 10.0)]
+    #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
     pub radius: f64,
     /// Ignored (accepted so that a dead-load request can be sent as it is).
     #[serde(default)]
     pub thickness: Option<f64>,
     /// Number of voussoirs N, 1 ≤ N ≤ 10000.
-    #[schema(minimum = 1, maximum = 10000, example = 1800)]
+    #[schema(minimum = 1, maximum = 10000, examples(1800))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub voussoirs: usize,
     /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
@@ -62,11 +62,11 @@ arch_request! {
     /// The minimum-thickness question for a circular arch.
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
-    #[schema(example = json!({
+    #[schema(examples(json!({
         "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 1800},
         "unit_weight": 1.0,
         "tolerance": 1e-6
-    }))]
+    })))]
     pub struct MinimumThicknessRequest {
         /// The circular arch; its `thickness`, if given, is ignored.
         pub geometry: CircularGeometryDto,
@@ -106,18 +106,18 @@ pub struct MinimumThicknessResponse {
     pub outcome: MinimumThicknessOutcomeDto,
     /// The thinnest thickness found to carry the dead load (within `tolerance`·R of the limit,
     /// on the safe side); null unless found.
-    #[schema(example = 1.0747802)]
+    #[schema(examples(1.0747802))]
     #[schema(required = true)]
     pub thickness: Option<f64>,
     /// thickness / radius.
-    #[schema(example = 0.10747802)]
+    #[schema(examples(0.10747802))]
     #[schema(required = true)]
     pub thickness_to_radius: Option<f64>,
     /// The thickest thickness found not to carry it (the other end of the final bracket).
     #[schema(required = true)]
     pub thickness_below: Option<f64>,
     /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees.
-    #[schema(example = 54.5)]
+    #[schema(examples(54.5))]
     #[schema(required = true)]
     pub rupture_angle_deg: Option<f64>,
     /// Hinges of the mechanism at the limit.
@@ -135,6 +135,11 @@ pub struct MinimumThicknessResponse {
 }
 
 /// Minimum thickness of a circular arch under its own weight.
+///
+/// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
+/// (Milankovitch 1904; SPEC §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
+/// The `thickness` of the geometry is ignored. A solve stopped at the time limit is 422 naming
+/// `tolerance`.
 #[utoipa::path(
     post,
     path = "/arch/minimum-thickness",

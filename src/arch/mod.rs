@@ -23,6 +23,11 @@ use request::{DeadLoadRequest, LiveLoadRequest};
 use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
 
 /// Dead-load limit analysis (Livesley's λ₀).
+///
+/// Whether the structure carries its own weight: λ₀ = 1 when it does, below 1 (0 under Heyman's
+/// limits) when it does not, with the collapse mechanism, its hinges and the line of thrust.
+/// Solver statuses other than `solved` carry no factor; a solve stopped at the time limit is
+/// 422 naming `geometry`.
 #[utoipa::path(
     post,
     path = "/arch/dead-load",
@@ -47,6 +52,8 @@ pub async fn dead_load(
 }
 
 /// Dead-load limit analysis drawn: voussoirs, thrust line, hinges, mechanism.
+///
+/// The same request and solve as `/arch/dead-load`, answered as an SVG picture.
 #[utoipa::path(
     post,
     path = "/arch/dead-load/svg",
@@ -82,6 +89,10 @@ pub async fn dead_load_svg(
 }
 
 /// Live-load limit analysis (Livesley's λ).
+///
+/// The factor on the live loads at collapse, given that the dead load is carried, with the
+/// mechanism and the line of thrust; `load_factor: null` with `solver.status`
+/// `dead_load_not_carried` or `unbounded` when there is none.
 #[utoipa::path(
     post,
     path = "/arch/live-load",
@@ -106,6 +117,8 @@ pub async fn live_load(
 }
 
 /// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.
+///
+/// The same request and solve as `/arch/live-load`, answered as an SVG picture.
 #[utoipa::path(
     post,
     path = "/arch/live-load/svg",

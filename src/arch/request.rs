@@ -81,25 +81,25 @@ pub enum GeometryDto {
     /// 180° − B (left springing), N voussoirs of equal angle.
     Circular {
         /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
-        #[schema(minimum = 1e-9, maximum = 1e9, example = 10.0)]
+        #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
         radius: f64,
         /// Voussoir thickness D, 0 < D < 2R.
-        #[schema(exclusive_minimum = 0.0, example = 1.0748)]
+        #[schema(exclusive_minimum = 0.0, examples(1.0748))]
         thickness: f64,
         /// Number of voussoirs N, 1 ≤ N ≤ 10000.
-        #[schema(minimum = 1, maximum = 10000, example = 1800)]
+        #[schema(minimum = 1, maximum = 10000, examples(1800))]
         #[serde(deserialize_with = "crate::nullable::integer")]
         voussoirs: usize,
         /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
         /// horseshoe). Defaults to 0.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, examples(0.0))]
         left_base_angle_deg: f64,
         /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, example = 0.0)]
+        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, examples(0.0))]
         right_base_angle_deg: f64,
         /// Voussoir shape. Defaults to `curved`.
         #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
@@ -122,7 +122,7 @@ pub enum GeometryDto {
 pub struct InterfaceLimitsDto {
     /// Lower limit of q, the normal force at the extrados end (≤ 0; 0 = no tension).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    #[schema(value_type = Option<f64>, maximum = 0.0, examples(0.0))]
     pub q_min: Option<Option<f64>>,
     /// Upper limit of q (≥ 0; crushing).
     #[serde(default, deserialize_with = "present")]
@@ -130,7 +130,7 @@ pub struct InterfaceLimitsDto {
     pub q_max: Option<Option<f64>>,
     /// Lower limit of s, the normal force at the intrados end (≤ 0; 0 = no tension).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, maximum = 0.0, example = 0.0)]
+    #[schema(value_type = Option<f64>, maximum = 0.0, examples(0.0))]
     pub s_min: Option<Option<f64>>,
     /// Upper limit of s (≥ 0; crushing).
     #[serde(default, deserialize_with = "present")]
@@ -156,7 +156,7 @@ fn present<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<Option<f
 #[serde(deny_unknown_fields)]
 pub struct LoadDto {
     /// Block number (1-based).
-    #[schema(minimum = 1, maximum = 10000, example = 5)]
+    #[schema(minimum = 1, maximum = 10000, examples(5))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub block: usize,
     /// x of the point of application. Defaults to the block centroid.
@@ -172,7 +172,7 @@ pub struct LoadDto {
     /// Vertical force component (up positive). Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(example = -1.0)]
+    #[schema(examples(-1.0))]
     pub fy: f64,
     /// Applied moment, counter-clockwise positive. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
@@ -214,7 +214,7 @@ macro_rules! arch_request {
             /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
             #[serde(default = "unit", deserialize_with = "crate::nullable::unit_weight")]
             #[schema(nullable)]
-            #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, example = 1.0)]
+            #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, examples(1.0))]
             pub unit_weight: f64,
             /// Limits on the interface resultants. Defaults to Heyman's (no tension, no
             /// crushing).
@@ -287,13 +287,13 @@ limit_request! {
     /// Livesley's dead-load problem: does the structure carry its own weight?
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
-    #[schema(example = json!({
+    #[schema(examples(json!({
         "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800,
                      "left_base_angle_deg": 0.0, "right_base_angle_deg": 0.0, "voussoir": "curved"},
         "unit_weight": 1.0,
         "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null, "t_min": null, "t_max": null},
         "friction_coefficient": null
-    }))]
+    })))]
     pub struct DeadLoadRequest {}
 }
 
@@ -301,11 +301,11 @@ limit_request! {
     /// Livesley's live-load problem: the factor on the live loads at collapse.
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
-    #[schema(example = json!({
+    #[schema(examples(json!({
         "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
         "unit_weight": 1.0,
         "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
-    }))]
+    })))]
     pub struct LiveLoadRequest {
         /// The live loads (1 to 10000), multiplied together by the load factor.
         #[schema(min_items = 1, max_items = 10000)]

@@ -235,7 +235,7 @@ pub struct ArchOutcomeDto {
 pub struct DeadLoadResponse {
     /// λ₀ ≤ 1, the largest fraction of the dead load that can be carried; null if the solver
     /// failed.
-    #[schema(example = 1.0)]
+    #[schema(examples(1.0))]
     #[schema(required = true)]
     pub dead_load_factor: Option<f64>,
     /// Details.

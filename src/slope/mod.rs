@@ -27,6 +27,11 @@ use request::SpencerRequest;
 use response::{Refinement, SolvedSlope, SpencerResponse};
 
 /// Spencer's method for one slip circle.
+///
+/// F and θ satisfying force and moment equilibrium (Spencer 1967/1973), Bishop's F, the slices
+/// and the line of thrust; give exactly one of `circle` (one circle) and `search` (the critical
+/// circle, with the F map). `converged: false` with a status when the equations have no
+/// solution; a search or refinement stopped at the time limit is 422 naming the field.
 #[utoipa::path(
     post,
     path = "/slope/spencer",
@@ -47,6 +52,8 @@ pub async fn spencer(
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and
 /// for a search the map of F over the centres.
+///
+/// The same request and solve as `/slope/spencer`, answered as an SVG picture.
 #[utoipa::path(
     post,
     path = "/slope/spencer/svg",

@@ -9,10 +9,10 @@ use utoipa::ToSchema;
 #[serde(deny_unknown_fields)]
 pub struct SlopeDto {
     /// Slope height H, 1e-9 ≤ H ≤ 1e9.
-    #[schema(minimum = 1e-9, maximum = 1e9, example = 30.48)]
+    #[schema(minimum = 1e-9, maximum = 1e9, examples(30.48))]
     pub height: f64,
     /// Horizontal length L of the slope face, 1e-9 ≤ L ≤ 1e9; the slope is H:L.
-    #[schema(minimum = 1e-9, maximum = 1e9, example = 60.96)]
+    #[schema(minimum = 1e-9, maximum = 1e9, examples(60.96))]
     pub length: f64,
 }
 
@@ -21,15 +21,15 @@ pub struct SlopeDto {
 #[serde(deny_unknown_fields)]
 pub struct CircleDto {
     /// Horizontal distance X from the lower end to the centre (towards the crest positive).
-    #[schema(example = 9.63168)]
+    #[schema(examples(9.63168))]
     pub x: f64,
     /// Height Y of the centre above the lower end (> 0).
-    #[schema(exclusive_minimum = 0.0, example = 63.76416)]
+    #[schema(exclusive_minimum = 0.0, examples(63.76416))]
     pub y: f64,
     /// Lower-end position factor F_e ≥ 0: the lower end lies F_e·H in front of the toe.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0, example = 0.0)]
+    #[schema(minimum = 0.0, examples(0.0))]
     pub lower_end_factor: f64,
 }
 
@@ -38,18 +38,18 @@ pub struct CircleDto {
 #[serde(deny_unknown_fields)]
 pub struct SoilDto {
     /// Unit weight γ, 0 < γ ≤ 1e12.
-    #[schema(exclusive_minimum = 0.0, maximum = 1e12, example = 10.0)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e12, examples(10.0))]
     pub unit_weight: f64,
     /// Effective cohesion c', 0 ≤ c' ≤ 1e12 (> 0 when the friction angle is 0).
-    #[schema(minimum = 0.0, maximum = 1e12, example = 6.096)]
+    #[schema(minimum = 0.0, maximum = 1e12, examples(6.096))]
     pub cohesion: f64,
     /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9.
-    #[schema(minimum = 0.0, maximum = 89.9, example = 40.0)]
+    #[schema(minimum = 0.0, maximum = 89.9, examples(40.0))]
     pub friction_angle_deg: f64,
     /// Pore pressure ratio r_u = u/(γh), 0 ≤ r_u ≤ 1.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0, maximum = 1.0, example = 0.5)]
+    #[schema(minimum = 0.0, maximum = 1.0, examples(0.5))]
     pub pore_pressure_ratio: f64,
 }
 
@@ -60,12 +60,12 @@ pub struct SeismicDto {
     /// Horizontal coefficient: k_h·W acts towards the toe. −10 ≤ k_h ≤ 10.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = -10.0, maximum = 10.0, example = 0.1)]
+    #[schema(minimum = -10.0, maximum = 10.0, examples(0.1))]
     pub kh: f64,
     /// Vertical coefficient: k_v·W acts downwards. −0.99 ≤ k_v ≤ 10.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = -0.99, maximum = 10.0, example = 0.0)]
+    #[schema(minimum = -0.99, maximum = 10.0, examples(0.0))]
     pub kv: f64,
 }
 
@@ -74,7 +74,7 @@ pub struct SeismicDto {
 #[serde(deny_unknown_fields)]
 pub struct ExternalLoadDto {
     /// Slice number, 1 at the lower end of the slip surface.
-    #[schema(minimum = 1, maximum = 10000, example = 3)]
+    #[schema(minimum = 1, maximum = 10000, examples(3))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub slice: usize,
     /// Horizontal force, positive towards the crest (+x).
@@ -94,12 +94,12 @@ pub struct ExternalLoadDto {
 /// A Spencer analysis of one slip circle.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-#[schema(example = json!({
+#[schema(examples(json!({
     "slope": {"height": 30.48, "length": 60.96},
     "circle": {"x": 9.63168, "y": 63.76416, "lower_end_factor": 0.0},
     "slices": 100,
     "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}
-}))]
+})))]
 pub struct SpencerRequest {
     /// The embankment.
     pub slope: SlopeDto,
@@ -117,7 +117,7 @@ pub struct SpencerRequest {
     /// changes by less than this fraction (at most 10000 slices); `slice_refinement` lists the
     /// steps. Defaults to none: exactly `slices` slices. 1e-4 suits ordinary slopes.
     #[serde(default)]
-    #[schema(minimum = 1e-9, maximum = 0.1, example = 1e-4)]
+    #[schema(minimum = 1e-9, maximum = 0.1, examples(1e-4))]
     pub slice_tolerance: Option<f64>,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
     #[serde(
@@ -125,7 +125,7 @@ pub struct SpencerRequest {
         deserialize_with = "crate::nullable::slices"
     )]
     #[schema(nullable)]
-    #[schema(minimum = 1, maximum = 10000, default = 100, example = 100)]
+    #[schema(minimum = 1, maximum = 10000, default = 100, examples(100))]
     pub slices: usize,
     /// The soil.
     pub soil: SoilDto,

@@ -141,19 +141,19 @@ pub struct SpencerResponse {
     /// How the solution ended.
     pub status: SpencerStatusDto,
     /// Spencer's factor of safety F; null when not converged.
-    #[schema(example = 1.06958)]
+    #[schema(examples(1.06958))]
     #[schema(required = true)]
     pub factor_of_safety: Option<f64>,
     /// Inclination θ of the parallel inter-slice forces in degrees; null when not converged.
-    #[schema(example = 22.432)]
+    #[schema(examples(22.432))]
     #[schema(required = true)]
     pub theta_deg: Option<f64>,
     /// Bishop's simplified factor of safety (θ = 0, moment equation); null when it has no root.
-    #[schema(example = 1.0397)]
+    #[schema(examples(1.0397))]
     #[schema(required = true)]
     pub bishop_factor_of_safety: Option<f64>,
     /// Radius of the slip circle.
-    #[schema(example = 64.4875)]
+    #[schema(examples(64.4875))]
     pub radius: f64,
     /// The slip circle on the embankment.
     pub circle: CircleOutDto,
