@@ -45,12 +45,12 @@ pub struct CircularGeometryDto {
     /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
+    #[schema(exclusive_minimum = -90.0, maximum = 89.999999)]
     pub left_base_angle_deg: f64,
     /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0)]
+    #[schema(exclusive_minimum = -90.0, maximum = 89.999999)]
     pub right_base_angle_deg: f64,
     /// Voussoir shape. Defaults to `curved`.
     #[serde(default, deserialize_with = "crate::nullable::name_or_default")]

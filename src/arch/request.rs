@@ -54,7 +54,12 @@ pub struct BlockCornersDto {
 fn corners_schema() -> utoipa::openapi::schema::Array {
     use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Type};
     let point = ArrayBuilder::new()
-        .items(ObjectBuilder::new().schema_type(Type::Number))
+        .items(
+            ObjectBuilder::new()
+                .schema_type(Type::Number)
+                .minimum(Some(-crate::limits::MAX_LENGTH))
+                .maximum(Some(crate::limits::MAX_LENGTH)),
+        )
         .min_items(Some(2))
         .max_items(Some(2));
     ArrayBuilder::new()
@@ -79,6 +84,7 @@ fn corners_schema() -> utoipa::openapi::schema::Array {
 pub enum GeometryDto {
     /// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
     /// 180° − B (left springing), N voussoirs of equal angle.
+    #[schema(title = "CircularGeometry")]
     Circular {
         /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
         #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
@@ -94,12 +100,12 @@ pub enum GeometryDto {
         /// horseshoe). Defaults to 0.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, examples(0.0))]
+        #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
         left_base_angle_deg: f64,
         /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, exclusive_maximum = 90.0, examples(0.0))]
+        #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
         right_base_angle_deg: f64,
         /// Voussoir shape. Defaults to `curved`.
         #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
@@ -108,6 +114,7 @@ pub enum GeometryDto {
     },
     /// A chain of quadrilateral blocks; the first block's start face and the last block's end
     /// face rest on supports.
+    #[schema(title = "BlocksGeometry")]
     Blocks {
         /// The blocks, 1 to 10000 of them, in order.
         #[schema(min_items = 1, max_items = 10000)]
