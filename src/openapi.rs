@@ -16,7 +16,7 @@ use utoipa::OpenApi;
         license(name = "MIT OR Apache-2.0", identifier = "MIT OR Apache-2.0")
     ),
     servers((url = "/", description = "The service that serves this document")),
-    modifiers(&BearerToken),
+    modifiers(&BearerToken, &DescriptionsOnProperties),
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
@@ -63,6 +63,38 @@ impl utoipa::Modify for BearerToken {
             SecurityRequirement::default(),
             SecurityRequirement::new("bearer", Vec::<String>::new()),
         ]);
+    }
+}
+
+/// Moves the description of a nullable reference (`oneOf: [null, {$ref, description}]`, as
+/// utoipa writes `Option<SomeDto>`) up to the property, where generated clients read it.
+struct DescriptionsOnProperties;
+
+impl utoipa::Modify for DescriptionsOnProperties {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::schema::Schema;
+        use utoipa::openapi::RefOr;
+        fn hoist(schema: &mut RefOr<Schema>) {
+            let RefOr::T(schema) = schema else { return };
+            match schema {
+                Schema::Object(object) => object.properties.values_mut().for_each(hoist),
+                Schema::AllOf(all) => all.items.iter_mut().for_each(hoist),
+                Schema::OneOf(one) => {
+                    for item in &mut one.items {
+                        if let RefOr::Ref(reference) = item {
+                            if one.description.is_none() && !reference.description.is_empty() {
+                                one.description = Some(std::mem::take(&mut reference.description));
+                            }
+                        }
+                        hoist(item);
+                    }
+                }
+                _ => {}
+            }
+        }
+        if let Some(components) = openapi.components.as_mut() {
+            components.schemas.values_mut().for_each(hoist);
+        }
     }
 }
 
