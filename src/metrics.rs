@@ -129,7 +129,10 @@ pub async fn count_requests(
     get,
     path = "/metrics",
     tag = "service",
-    responses((status = 200, description = "Prometheus text exposition format 0.0.4", body = String, content_type = "text/plain"))
+    responses(
+        (status = 200, description = "Prometheus text exposition format 0.0.4", body = String, content_type = "text/plain"),
+        (status = 401, description = "THRUSTLINE_TOKEN is set and the request has no `Authorization: Bearer` with it", body = crate::error::Problem, content_type = "application/problem+json"),
+    )
 )]
 pub async fn metrics(State(state): State<AppState>) -> Response {
     let text = state

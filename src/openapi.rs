@@ -13,7 +13,8 @@ use utoipa::OpenApi;
                        of embankments by Spencer's method (1967/1973). JSON, snake_case, any \
                        consistent units, angles in degrees (`_deg`). Errors are \
                        application/problem+json (RFC 9457) naming the field at fault.",
-        license(name = "MIT OR Apache-2.0", identifier = "MIT OR Apache-2.0")
+        license(name = "MIT OR Apache-2.0", identifier = "MIT OR Apache-2.0"),
+        contact(name = "thrustline maintainers")
     ),
     servers((url = "/", description = "The service that serves this document")),
     modifiers(&BearerToken, &DescriptionsOnProperties),
