@@ -336,3 +336,63 @@ async fn drawings_and_the_page() {
         assert!(page.contains(id), "{id}");
     }
 }
+
+#[tokio::test]
+async fn hinges_are_placed_and_reactions_carry_the_weight() {
+    let server = Server::start().await;
+    // Milankovitch 1.0747 (SPEC §1.4): each hinge lies on the intrados (radius R − D/2) or the
+    // extrados (R + D/2) at the polar angle of its joint.
+    let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0747)).await;
+    assert_eq!(status, 200, "{body}");
+    let hinges = body["hinges"].as_array().unwrap();
+    assert_eq!(hinges.len(), 5);
+    for h in hinges {
+        let radius = match h["location"].as_str().unwrap() {
+            "intrados" => 10.0 - 0.5 * 1.0747,
+            _ => 10.0 + 0.5 * 1.0747,
+        };
+        let angle = h["angle_deg"].as_f64().unwrap().to_radians();
+        let (x, y) = (h["x"].as_f64().unwrap(), h["y"].as_f64().unwrap());
+        // 1e-9: the corner coordinates are computed the same way up to rounding.
+        assert!((x - radius * angle.cos()).abs() < 1e-9 && (y - radius * angle.sin()).abs() < 1e-9);
+    }
+    // A thick semicircle (R = 10, D = 2, γ = 1.5) stands: its area is π·R·D, so the vertical
+    // reactions carry 1.5·π·10·2 and the horizontal ones cancel; every joint's thrust lies
+    // inside it (margin > 0).
+    let body = serde_json::json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 2.0, "voussoirs": 90},
+        "unit_weight": 1.5});
+    let (status, _, body) = server.post("/arch/dead-load", &body).await;
+    assert_eq!(status, 200, "{body}");
+    let reactions = body["reactions"].as_array().unwrap();
+    assert_eq!(reactions.len(), 2);
+    assert_eq!(
+        (
+            reactions[0]["interface"].as_u64(),
+            reactions[1]["interface"].as_u64()
+        ),
+        (Some(1), Some(91))
+    );
+    let weight = 1.5 * std::f64::consts::PI * 10.0 * 2.0;
+    let sum = |key: &str| {
+        reactions
+            .iter()
+            .map(|r| r[key].as_f64().unwrap())
+            .sum::<f64>()
+    };
+    assert!(
+        (sum("vertical") - weight).abs() < 1e-8 * weight,
+        "{reactions:?}"
+    );
+    assert!(sum("horizontal").abs() < 1e-8 * weight);
+    let margin = body["thrust_margin"].as_f64().unwrap();
+    assert!(margin > 0.0 && margin <= 0.5, "{margin}");
+    for point in body["thrust_line"].as_array().unwrap() {
+        let ratio = point["eccentricity_ratio"].as_f64().unwrap();
+        assert!(ratio.abs() <= 0.5 - margin + 1e-12);
+        assert_eq!(
+            point["in_middle_third"].as_bool().unwrap(),
+            ratio.abs() <= 1.0 / 6.0
+        );
+    }
+}

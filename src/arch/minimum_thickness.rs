@@ -233,7 +233,11 @@ fn response(arch: &CircularArch, result: &MinimumThickness) -> MinimumThicknessR
             thickness_to_radius: Some(thickness / radius),
             thickness_below: Some(*thickness_below),
             rupture_angle_deg: mechanism.as_ref().and_then(|m| rupture_angle_deg(arch, m)),
-            hinges: mechanism.as_ref().map(hinges).unwrap_or_default(),
+            // The mechanism is the collapse of the arch just too thin.
+            hinges: match (mechanism, arch.with_thickness(*thickness_below)) {
+                (Some(m), Ok(collapsing)) => hinges(&collapsing.assembly(), m),
+                _ => Vec::new(),
+            },
             active_constraints: mechanism
                 .as_ref()
                 .map(active_constraints)

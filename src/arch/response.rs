@@ -3,7 +3,8 @@
 
 use serde::Serialize;
 use thrustline_solver::arch::{
-    Bound, HingeSide, LimitSolution, LimitStatus, Mechanism, Resultant, SolverFailure, ThrustPoint,
+    support_reactions, Assembly, Bound, HingeSide, LimitSolution, LimitStatus, Mechanism,
+    Resultant, SolverFailure, ThrustPoint,
 };
 use utoipa::ToSchema;
 
@@ -95,6 +96,10 @@ pub struct HingeDto {
     pub angle_deg: f64,
     /// intrados or extrados.
     pub location: HingeSideDto,
+    /// x of the hinge (the intrados or extrados end of the joint).
+    pub x: f64,
+    /// y of the hinge.
+    pub y: f64,
     /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
     pub rotation: f64,
 }
@@ -137,6 +142,25 @@ pub struct InterfaceThrustPointDto {
     /// Distance of the point of action from the middle of the joint, towards the extrados.
     #[schema(required = true)]
     pub eccentricity: Option<f64>,
+    /// The eccentricity as a fraction of the joint's length, e/t in [−½, ½] (null where the
+    /// normal force vanishes).
+    #[schema(required = true)]
+    pub eccentricity_ratio: Option<f64>,
+    /// Whether the point of action lies in the middle third of the joint, |e/t| ≤ 1/6 (the
+    /// whole joint in compression under a linear stress distribution).
+    #[schema(required = true)]
+    pub in_middle_third: Option<bool>,
+}
+
+/// The force a support exerts on the structure.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ReactionDto {
+    /// The support's interface number (1-based): the first and the last interface.
+    pub interface: usize,
+    /// Horizontal component (+x).
+    pub horizontal: f64,
+    /// Vertical component (up positive).
+    pub vertical: f64,
 }
 
 /// How an arch solve ended.
@@ -226,6 +250,14 @@ pub struct ArchOutcomeDto {
     pub friction_may_overestimate: bool,
     /// The line of thrust of the admissible state at the load factor (empty when there is none).
     pub thrust_line: Vec<InterfaceThrustPointDto>,
+    /// The smallest distance from the line of thrust to the nearer face of its joint, as a
+    /// fraction of the joint's length (½ − |e/t|, minimised over the joints): 0 where it
+    /// touches a face (a hinge), ½ when it runs through every joint's middle; null without a
+    /// line of thrust.
+    #[schema(required = true)]
+    pub thrust_margin: Option<f64>,
+    /// The reactions of the two supports of the admissible state (empty when there is none).
+    pub reactions: Vec<ReactionDto>,
     /// How the solve ended.
     pub solver: SolverDto,
 }
@@ -296,7 +328,9 @@ impl ArchOutcomeDto {
             stable: solution.dead_load_carried,
             dead_load_margin: solution.dead_load_margin,
             active_constraints: mechanism.map(active_constraints).unwrap_or_default(),
-            hinges: mechanism.map(hinges).unwrap_or_default(),
+            hinges: mechanism
+                .map(|m| hinges(solved.input.problem.assembly(), m))
+                .unwrap_or_default(),
             sliding_interfaces: mechanism.map(|m| one_based(&m.sliding)).unwrap_or_default(),
             crushing_interfaces: mechanism
                 .map(|m| one_based(&m.crushing))
@@ -325,8 +359,27 @@ impl ArchOutcomeDto {
                     normal_force: t.normal_force,
                     shear_force: t.shear_force,
                     eccentricity: t.eccentricity,
+                    eccentricity_ratio: t.eccentricity_ratio,
+                    in_middle_third: t.is_in_middle_third(),
                 })
                 .collect(),
+            thrust_margin: solved
+                .thrust_line
+                .iter()
+                .filter_map(|t| t.eccentricity_ratio)
+                .map(|r| 0.5 - r.abs())
+                .reduce(f64::min),
+            reactions: support_reactions(solved.input.problem.assembly(), &solution.resultants)
+                .map(|pair| {
+                    pair.iter()
+                        .map(|r| ReactionDto {
+                            interface: r.interface + 1,
+                            horizontal: r.horizontal,
+                            vertical: r.vertical,
+                        })
+                        .collect()
+                })
+                .unwrap_or_default(),
             solver: SolverDto {
                 status: solved.status,
                 iterations: solution.iterations,
@@ -367,16 +420,25 @@ pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
         .collect()
 }
 
-/// The hinges of a mechanism, 1-based.
-pub fn hinges(mechanism: &Mechanism) -> Vec<HingeDto> {
+/// The hinges of a mechanism, 1-based, placed on the joints of `assembly`.
+pub fn hinges(assembly: &Assembly, mechanism: &Mechanism) -> Vec<HingeDto> {
     mechanism
         .hinges
         .iter()
-        .map(|h| HingeDto {
-            interface: h.interface + 1,
-            angle_deg: h.angle_deg,
-            location: h.side.into(),
-            rotation: h.rotation,
+        .map(|h| {
+            let interface = &assembly.interfaces[h.interface];
+            let (x, y) = match h.side {
+                HingeSide::Intrados => interface.intrados,
+                HingeSide::Extrados => interface.extrados,
+            };
+            HingeDto {
+                interface: h.interface + 1,
+                angle_deg: h.angle_deg,
+                location: h.side.into(),
+                x,
+                y,
+                rotation: h.rotation,
+            }
         })
         .collect()
 }

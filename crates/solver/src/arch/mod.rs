@@ -40,4 +40,4 @@ pub use minimum_thickness::{
     rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,
     MinimumThicknessSettings,
 };
-pub use thrust_line::{thrust_line, ThrustPoint};
+pub use thrust_line::{support_reactions, thrust_line, SupportReaction, ThrustPoint};

@@ -1,5 +1,6 @@
 //! The line of thrust: at every interface, the point of action of the resultant of q and s,
-//! (q·P_q + s·P_s)/(q + s) (SPEC §1.1), with the normal and shear forces and the eccentricity.
+//! (q·P_q + s·P_s)/(q + s) (SPEC §1.1), with the normal and shear forces and the eccentricity;
+//! and the reactions of the two supports, the forces the first and last interfaces carry.
 
 use super::geometry::Assembly;
 
@@ -17,6 +18,49 @@ pub struct ThrustPoint {
     /// Distance of the point of action from the middle of the joint, positive towards the
     /// extrados; `None` when the normal force vanishes.
     pub eccentricity: Option<f64>,
+    /// The eccentricity as a fraction of the joint's length t: e/t in [−½, ½] for an admissible
+    /// state under Heyman's limits; |e/t| ≤ 1/6 is the middle third (the whole joint in
+    /// compression under a linear stress distribution).
+    pub eccentricity_ratio: Option<f64>,
+}
+
+impl ThrustPoint {
+    /// Whether the point of action lies in the middle third of the joint (|e/t| ≤ 1/6).
+    pub fn is_in_middle_third(&self) -> Option<bool> {
+        self.eccentricity_ratio.map(|r| r.abs() <= 1.0 / 6.0)
+    }
+}
+
+/// The force a support exerts on the structure, in the section's axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SupportReaction {
+    /// Interface index of the support (0 or n).
+    pub interface: usize,
+    /// Horizontal component (+x).
+    pub horizontal: f64,
+    /// Vertical component (+y, up).
+    pub vertical: f64,
+}
+
+/// The reactions of the two supports (the first and the last interface) for the resultants `r`;
+/// `None` when there are none. Interface k acts on the higher-numbered block with
+/// (q + s)·ν + t·τ, so the first support pushes the structure with that force and the last
+/// with its opposite.
+pub fn support_reactions(assembly: &Assembly, r: &[[f64; 3]]) -> Option<[SupportReaction; 2]> {
+    let last = assembly.interfaces.len().checked_sub(1)?;
+    if r.len() != assembly.interfaces.len() {
+        return None;
+    }
+    let force = |k: usize, sign: f64| {
+        let interface = &assembly.interfaces[k];
+        let [q, s, t] = r[k];
+        SupportReaction {
+            interface: k,
+            horizontal: sign * ((q + s) * interface.normal.0 + t * interface.tangent.0),
+            vertical: sign * ((q + s) * interface.normal.1 + t * interface.tangent.1),
+        }
+    };
+    Some([force(0, 1.0), force(last, -1.0)])
 }
 
 /// The thrust line of the resultants `r` (q, s, t per interface).
@@ -45,7 +89,58 @@ pub fn thrust_line(assembly: &Assembly, r: &[[f64; 3]]) -> Vec<ThrustPoint> {
                 normal_force: normal,
                 shear_force: t,
                 eccentricity: defined.then(|| 0.5 * interface.length() * (q - s) / normal),
+                eccentricity_ratio: defined.then(|| 0.5 * (q - s) / normal),
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arch::{solve_dead_load, ArchProblem, InterfaceLimits, LimitSettings};
+    use crate::reference::semicircle;
+
+    #[test]
+    fn reactions_carry_the_weight_of_the_semicircle() {
+        // A semicircle of middle radius R and thickness D has the area π·R·D exactly (half an
+        // annulus: (π/2)((R + D/2)² − (R − D/2)²)). Standing under its own weight (γ = 2), the two
+        // vertical reactions carry 2·π·R·D and the horizontal ones cancel; by symmetry both
+        // supports carry half the weight. 1e-8: the interior-point tolerance.
+        let arch = semicircle(60, 10.0, 1.5);
+        let problem = ArchProblem::new(
+            arch.assembly(),
+            2.0,
+            InterfaceLimits::heyman(),
+            None,
+            vec![],
+        )
+        .unwrap();
+        let solution = solve_dead_load(&problem, &LimitSettings::default());
+        assert_eq!(solution.load_factor, Some(1.0));
+        let [a, b] = support_reactions(problem.assembly(), &solution.resultants).unwrap();
+        let weight = 2.0 * std::f64::consts::PI * 10.0 * 1.5;
+        assert!(((a.vertical + b.vertical) - weight).abs() < 1e-8 * weight);
+        assert!((a.horizontal + b.horizontal).abs() < 1e-8 * weight);
+        assert!((a.vertical - b.vertical).abs() < 1e-6 * weight);
+        // The springing joints are horizontal: the vertical reaction is their normal force.
+        let line = thrust_line(problem.assembly(), &solution.resultants);
+        assert!((a.vertical - line[0].normal_force).abs() < 1e-9 * weight);
+    }
+
+    #[test]
+    fn eccentricity_ratio_is_the_position_across_the_joint() {
+        // q at the extrados end alone: the point of action is the extrados end, e/t = +1/2;
+        // q = s: the middle, e/t = 0, in the middle third; q = 2s: e/t = 1/6, its edge.
+        let arch = semicircle(2, 10.0, 1.0);
+        let assembly = arch.assembly();
+        let r = vec![[1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 1.0, 0.0]];
+        let line = thrust_line(&assembly, &r);
+        assert_eq!(line[0].eccentricity_ratio, Some(0.5));
+        assert_eq!(line[0].point, Some(assembly.interfaces[0].extrados));
+        assert_eq!(line[1].eccentricity_ratio, Some(0.0));
+        assert_eq!(line[1].is_in_middle_third(), Some(true));
+        assert!((line[2].eccentricity_ratio.unwrap() - 1.0 / 6.0).abs() < 1e-15);
+        assert_eq!(line[0].is_in_middle_third(), Some(false));
+    }
 }
