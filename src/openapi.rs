@@ -17,7 +17,7 @@ use utoipa::OpenApi;
         contact(name = "thrustline maintainers")
     ),
     servers((url = "/", description = "The service that serves this document")),
-    modifiers(&BearerToken, &DescriptionsOnProperties),
+    modifiers(&BearerToken, &DescriptionsOnProperties, &RequestIdHeader),
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
@@ -95,6 +95,35 @@ impl utoipa::Modify for DescriptionsOnProperties {
         }
         if let Some(components) = openapi.components.as_mut() {
             components.schemas.values_mut().for_each(hoist);
+        }
+    }
+}
+
+/// Every answer carries `x-request-id`: the client's own (up to the service's limits) or one the
+/// service made; logs carry it too.
+struct RequestIdHeader;
+
+impl utoipa::Modify for RequestIdHeader {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::schema::{ObjectBuilder, Type};
+        use utoipa::openapi::{HeaderBuilder, RefOr};
+        let header = HeaderBuilder::new()
+            .schema(ObjectBuilder::new().schema_type(Type::String))
+            .description(Some(
+                "The request's id: the one the client sent, or one the service made",
+            ))
+            .build();
+        for item in openapi.paths.paths.values_mut() {
+            let operations = [&mut item.get, &mut item.post];
+            for operation in operations.into_iter().flatten() {
+                for response in operation.responses.responses.values_mut() {
+                    if let RefOr::T(response) = response {
+                        response
+                            .headers
+                            .insert("x-request-id".to_owned(), header.clone());
+                    }
+                }
+            }
         }
     }
 }

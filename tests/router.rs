@@ -206,3 +206,28 @@ async fn what_generated_clients_send_is_read_as_they_mean_it() {
         }
     }
 }
+
+#[tokio::test]
+async fn every_named_request_example_of_the_spec_is_answered() {
+    // The examples clients see in /docs and generated code must work as they are.
+    let doc: serde_json::Value =
+        serde_json::from_str(&thrustline::openapi::openapi_json()).unwrap();
+    let mut tried = 0;
+    for (path, item) in doc["paths"].as_object().unwrap() {
+        let Some(examples) =
+            item["post"]["requestBody"]["content"]["application/json"]["examples"].as_object()
+        else {
+            continue;
+        };
+        for (name, example) in examples {
+            let request = Request::post(path.as_str())
+                .header("content-type", "application/json")
+                .body(Body::from(example["value"].to_string()))
+                .unwrap();
+            let response = router().oneshot(request).await.unwrap();
+            assert_eq!(response.status(), StatusCode::OK, "{path} {name}");
+            tried += 1;
+        }
+    }
+    assert!(tried >= 11, "{tried}");
+}

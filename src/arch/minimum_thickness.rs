@@ -144,7 +144,10 @@ pub struct MinimumThicknessResponse {
     post,
     path = "/arch/minimum-thickness",
     tag = "arch",
-    request_body = MinimumThicknessRequest,
+    request_body(content = MinimumThicknessRequest, examples(
+        ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748 (SPEC §1.4)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
+    )),
     responses(
         (status = 200, description = "The minimum thickness, or the reason there is none", body = MinimumThicknessResponse),
         ProblemResponses,

@@ -32,7 +32,12 @@ use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
     post,
     path = "/arch/dead-load",
     tag = "arch",
-    request_body = DeadLoadRequest,
+    request_body(content = DeadLoadRequest, examples(
+        ("milankovitch_stands" = (summary = "Milankovitch's semicircle, N = 1800, D = 1.0748: stands (SPEC §1.4)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800}}))),
+        ("milankovitch_falls" = (summary = "The same, D = 1.0747: five hinges (SPEC §1.4)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
+    )),
     responses(
         (status = 200, description = "The dead-load factor, mechanism and thrust line", body = DeadLoadResponse),
         ProblemResponses,
@@ -58,7 +63,12 @@ pub async fn dead_load(
     post,
     path = "/arch/dead-load/svg",
     tag = "arch",
-    request_body = DeadLoadRequest,
+    request_body(content = DeadLoadRequest, examples(
+        ("milankovitch_stands" = (summary = "Milankovitch's semicircle, N = 1800, D = 1.0748: stands (SPEC §1.4)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800}}))),
+        ("milankovitch_falls" = (summary = "The same, D = 1.0747: five hinges (SPEC §1.4)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
+    )),
     responses(
         (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
         ProblemResponses,
@@ -97,7 +107,11 @@ pub async fn dead_load_svg(
     post,
     path = "/arch/live-load",
     tag = "arch",
-    request_body = LiveLoadRequest,
+    request_body(content = LiveLoadRequest, examples(
+        ("quarter_span_load" = (summary = "A unit load near the quarter span of a semicircle (λ = 22.9969)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+                           "loads": [{"block": 26, "fy": -1.0}]})))
+    )),
     responses(
         (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
         ProblemResponses,
@@ -123,7 +137,11 @@ pub async fn live_load(
     post,
     path = "/arch/live-load/svg",
     tag = "arch",
-    request_body = LiveLoadRequest,
+    request_body(content = LiveLoadRequest, examples(
+        ("quarter_span_load" = (summary = "A unit load near the quarter span of a semicircle (λ = 22.9969)",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+                           "loads": [{"block": 26, "fy": -1.0}]})))
+    )),
     responses(
         (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
         ProblemResponses,
