@@ -17,7 +17,7 @@ use utoipa::OpenApi;
         contact(name = "thrustline maintainers")
     ),
     servers((url = "/", description = "The service that serves this document")),
-    modifiers(&BearerToken, &DescriptionsOnProperties, &RequestIdHeader),
+    modifiers(&BearerToken, &DescriptionsOnProperties, &RequestIdHeader, &DrawingExamples),
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
@@ -123,6 +123,47 @@ impl utoipa::Modify for RequestIdHeader {
                             .insert("x-request-id".to_owned(), header.clone());
                     }
                 }
+            }
+        }
+    }
+}
+
+/// A `/svg` route takes the request of its JSON twin: it gets the twin's named examples (written
+/// once, on the JSON route).
+struct DrawingExamples;
+
+impl utoipa::Modify for DrawingExamples {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        let examples = |path: &str| {
+            let body = openapi
+                .paths
+                .paths
+                .get(path)?
+                .post
+                .as_ref()?
+                .request_body
+                .as_ref()?;
+            Some(body.content.get("application/json")?.examples.clone())
+        };
+        let twins: Vec<(String, _)> = openapi
+            .paths
+            .paths
+            .keys()
+            .filter_map(|path| {
+                let twin = path.strip_suffix("/svg")?;
+                Some((path.clone(), examples(twin)?))
+            })
+            .collect();
+        for (path, examples) in twins {
+            let content = openapi
+                .paths
+                .paths
+                .get_mut(&path)
+                .and_then(|item| item.post.as_mut())
+                .and_then(|operation| operation.request_body.as_mut())
+                .and_then(|body| body.content.get_mut("application/json"));
+            if let Some(content) = content {
+                content.examples = examples;
             }
         }
     }

@@ -63,12 +63,7 @@ pub async fn dead_load(
     post,
     path = "/arch/dead-load/svg",
     tag = "arch",
-    request_body(content = DeadLoadRequest, examples(
-        ("milankovitch_stands" = (summary = "Milankovitch's semicircle, N = 1800, D = 1.0748: stands (SPEC §1.4)",
-            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800}}))),
-        ("milankovitch_falls" = (summary = "The same, D = 1.0747: five hinges (SPEC §1.4)",
-            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
-    )),
+    request_body = DeadLoadRequest,
     responses(
         (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
         ProblemResponses,
@@ -137,11 +132,7 @@ pub async fn live_load(
     post,
     path = "/arch/live-load/svg",
     tag = "arch",
-    request_body(content = LiveLoadRequest, examples(
-        ("quarter_span_load" = (summary = "A unit load near the quarter span of a semicircle (λ = 22.9969)",
-            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
-                           "loads": [{"block": 26, "fy": -1.0}]})))
-    )),
+    request_body = LiveLoadRequest,
     responses(
         (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
         ProblemResponses,

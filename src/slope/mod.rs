@@ -68,17 +68,7 @@ pub async fn spencer(
     post,
     path = "/slope/spencer/svg",
     tag = "slope",
-    request_body(content = SpencerRequest, examples(
-        ("spencer_1967" = (summary = "Spencer's (1967) example circle: F = 1.0696, θ = 22.43° (SPEC §2.3)",
-            value = json!({"slope": {"height": 30.48, "length": 60.96},
-                           "circle": {"x": 9.63168, "y": 63.76416}, "slices": 100,
-                           "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
-                                    "pore_pressure_ratio": 0.5}}))),
-        ("critical_circle" = (summary = "The critical circle of the same embankment (automatic search bounds)",
-            value = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
-                           "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
-                                    "pore_pressure_ratio": 0.5}})))
-    )),
+    request_body = SpencerRequest,
     responses(
         (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
         ProblemResponses,
