@@ -57,6 +57,20 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::ExternalLoads => "external_loads".to_owned(),
         SlopeParameter::ExternalLoadSlice { index } => format!("external_loads[{index}].slice"),
         SlopeParameter::ExternalLoad { index } => format!("external_loads[{index}]"),
+        SlopeParameter::Ground => "section.ground".to_owned(),
+        SlopeParameter::Layer { index } => format!("section.layers[{index}]"),
+        SlopeParameter::LayerTop { index } => format!("section.layers[{index}].top"),
+        SlopeParameter::Bedrock => "section.bedrock".to_owned(),
+        SlopeParameter::PiezometricLine => "section.piezometric_line".to_owned(),
+        SlopeParameter::WaterUnitWeight => "section.water_unit_weight".to_owned(),
+        SlopeParameter::Surcharge { index } => format!("section.surcharges[{index}]"),
+        SlopeParameter::LineLoad { index } => format!("section.line_loads[{index}]"),
+        SlopeParameter::TensionCrackDepth => "section.tension_crack.depth".to_owned(),
+        SlopeParameter::TensionCrackWater => "section.tension_crack.water_depth".to_owned(),
+        SlopeParameter::CircleCentre => "circle.centre".to_owned(),
+        SlopeParameter::CircleRadius => "circle.radius".to_owned(),
+        SlopeParameter::Surface => "surface".to_owned(),
+        SlopeParameter::MomentCentre => "moment_centre".to_owned(),
     }
 }
 

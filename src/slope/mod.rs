@@ -157,7 +157,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
     };
     let (problem, solution, refinement) = match input.slice_tolerance {
         None => {
-            let solution = solve_spencer(&problem, &Default::default());
+            let solution = solve_spencer(&problem.model(), &Default::default());
             (problem, solution, None)
         }
         Some(tolerance) => {
@@ -183,7 +183,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         }
     };
     let curves = match (solution.theta_rad, input.curves) {
-        (Some(theta), true) => Some(factor_curves_around(&problem, theta)),
+        (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
         _ => None,
     };
     Ok(SolvedSlope {

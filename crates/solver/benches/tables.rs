@@ -76,9 +76,12 @@ fn live_factor(n: usize, settings: &LimitSettings) -> f64 {
 }
 
 fn spencer(n: usize) -> f64 {
-    solve_spencer(&spencer_1967::problem(n), &SpencerSettings::default())
-        .factor_of_safety
-        .unwrap()
+    solve_spencer(
+        &spencer_1967::problem(n).model(),
+        &SpencerSettings::default(),
+    )
+    .factor_of_safety
+    .unwrap()
 }
 
 fn critical(grid_points: usize, refine: bool) -> f64 {

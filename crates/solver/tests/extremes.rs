@@ -125,7 +125,7 @@ fn spencer(n: usize, phi: f64, ru: f64) -> SpencerSolution {
         Vec::new(),
     )
     .unwrap();
-    solve_spencer(&p, &SpencerSettings::default())
+    solve_spencer(&p.model(), &SpencerSettings::default())
 }
 
 #[test]

@@ -32,7 +32,7 @@ fn spencer_f(
         Vec::new(),
     )
     .ok()?;
-    solve_spencer(&p, &SpencerSettings::default()).factor_of_safety
+    solve_spencer(&p.model(), &SpencerSettings::default()).factor_of_safety
 }
 
 proptest! {

@@ -149,7 +149,7 @@ fn spencer_example(seismic: Seismic, loads: Vec<ExternalLoad>) -> SlopeProblem {
 }
 
 fn f_of(p: &SlopeProblem) -> f64 {
-    solve_spencer(p, &SpencerSettings::default())
+    solve_spencer(&p.model(), &SpencerSettings::default())
         .factor_of_safety
         .unwrap()
 }
@@ -211,9 +211,9 @@ fn self_equilibrated_loads_change_nothing_and_a_surcharge_lowers_f() {
 fn force_and_moment_curves_cross_at_the_answer() {
     // Spencer (1967), Fig. 3: F_f(θ) and F_m(θ) meet at (θ*, F*); 1e-9: root-finding tolerance.
     let p = spencer_example(Seismic::default(), vec![]);
-    let s = solve_spencer(&p, &SpencerSettings::default());
+    let s = solve_spencer(&p.model(), &SpencerSettings::default());
     let (f, theta) = (s.factor_of_safety.unwrap(), s.theta_rad.unwrap());
-    let curves = factor_curves(&p, vec![theta.to_degrees(), 0.0]);
+    let curves = factor_curves(&p.model(), vec![theta.to_degrees(), 0.0]);
     let (ff, fm) = (curves.force_factor[0], curves.moment_factor[0]);
     assert!((ff.unwrap() - f).abs() < 1e-9 && (fm.unwrap() - f).abs() < 1e-9);
     // At θ = 0 the moment curve is Bishop's simplified F.
@@ -275,7 +275,7 @@ fn undrained_circle_without_parallel_forces_reports_the_moment_f() {
         Vec::new(),
     )
     .unwrap();
-    let s = solve_spencer(&p, &SpencerSettings::default());
+    let s = solve_spencer(&p.model(), &SpencerSettings::default());
     assert_eq!(s.status, SpencerStatus::MomentOnly);
     assert!(s.theta_rad.is_none() && s.thrust_line.is_empty());
     let g = &p.geometry;

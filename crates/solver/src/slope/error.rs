@@ -38,6 +38,46 @@ pub enum SlopeParameter {
         /// Index of the load.
         index: usize,
     },
+    /// The ground line of a section.
+    Ground,
+    /// Layer `index` of a section as a whole (0-based).
+    Layer {
+        /// Index of the layer.
+        index: usize,
+    },
+    /// The top line of layer `index` (0-based).
+    LayerTop {
+        /// Index of the layer.
+        index: usize,
+    },
+    /// The bedrock line.
+    Bedrock,
+    /// The piezometric line.
+    PiezometricLine,
+    /// The unit weight of water.
+    WaterUnitWeight,
+    /// Surcharge `index` (0-based).
+    Surcharge {
+        /// Index of the surcharge.
+        index: usize,
+    },
+    /// Line load `index` (0-based).
+    LineLoad {
+        /// Index of the line load.
+        index: usize,
+    },
+    /// The tension crack's depth.
+    TensionCrackDepth,
+    /// The tension crack's water depth.
+    TensionCrackWater,
+    /// The centre of an absolute circle.
+    CircleCentre,
+    /// The radius of an absolute circle.
+    CircleRadius,
+    /// A polyline slip surface.
+    Surface,
+    /// The centre about which moment-only methods take moments.
+    MomentCentre,
 }
 
 impl std::fmt::Display for SlopeParameter {
@@ -57,6 +97,20 @@ impl std::fmt::Display for SlopeParameter {
             Self::ExternalLoads => write!(f, "external loads"),
             Self::ExternalLoadSlice { index } => write!(f, "slice of external load {}", index + 1),
             Self::ExternalLoad { index } => write!(f, "external load {}", index + 1),
+            Self::Ground => write!(f, "ground"),
+            Self::Layer { index } => write!(f, "layer {}", index + 1),
+            Self::LayerTop { index } => write!(f, "top of layer {}", index + 1),
+            Self::Bedrock => write!(f, "bedrock"),
+            Self::PiezometricLine => write!(f, "piezometric line"),
+            Self::WaterUnitWeight => write!(f, "water unit weight"),
+            Self::Surcharge { index } => write!(f, "surcharge {}", index + 1),
+            Self::LineLoad { index } => write!(f, "line load {}", index + 1),
+            Self::TensionCrackDepth => write!(f, "tension crack depth"),
+            Self::TensionCrackWater => write!(f, "tension crack water depth"),
+            Self::CircleCentre => write!(f, "circle centre"),
+            Self::CircleRadius => write!(f, "circle radius"),
+            Self::Surface => write!(f, "slip surface"),
+            Self::MomentCentre => write!(f, "moment centre"),
         }
     }
 }

@@ -15,6 +15,8 @@ mod error;
 pub mod geometry;
 pub mod refinement;
 pub mod search;
+pub mod section;
+pub mod slices;
 pub mod spencer;
 
 pub use crate::outcome::SolverFailure;
@@ -27,6 +29,7 @@ pub use search::{
     factor_of_safety, search_critical_circle, FactorGrid, SearchGrid, SearchProblem,
     SearchSettings, SearchSolution, SearchStatus,
 };
+pub use slices::{BaseSlice, SliceModel, Sliced};
 pub use spencer::{
     factor_curves, factor_curves_around, solve_spencer, solve_spencer_factor, ExternalLoad,
     FactorCurves, Seismic, SliceForces, SlopeProblem, Soil, SpencerFactor, SpencerSettings,

@@ -6,7 +6,8 @@ use std::num::NonZeroUsize;
 use std::time::Instant;
 
 use super::error::SlopeError;
-use super::spencer::{solve_spencer, SlopeProblem, SpencerSettings, SpencerSolution};
+use super::slices::Sliced;
+use super::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
 use crate::outcome::SolverFailure;
 
 /// Settings of a slice refinement.
@@ -56,11 +57,11 @@ pub enum RefinementStatus {
 
 /// The finest problem solved, its solution and the steps that led there.
 #[derive(Debug, Clone, PartialEq)]
-pub struct RefinedSolution {
+pub struct RefinedSolution<P> {
     /// How it ended.
     pub status: RefinementStatus,
     /// The problem at the last slice count.
-    pub problem: SlopeProblem,
+    pub problem: P,
     /// Its solution.
     pub solution: SpencerSolution,
     /// F at each slice count tried, the last one answered.
@@ -68,19 +69,19 @@ pub struct RefinedSolution {
 }
 
 /// Solves `problem`, then doubles its slices until F settles within the tolerance.
-pub fn refine_slices(
-    problem: SlopeProblem,
+pub fn refine_slices<P: Sliced>(
+    problem: P,
     settings: &RefinementSettings,
-) -> Result<RefinedSolution, SlopeError> {
-    let mut solution = solve_spencer(&problem, &settings.spencer);
+) -> Result<RefinedSolution<P>, SlopeError> {
+    let mut solution = solve_spencer(&problem.model(), &settings.spencer);
     let mut problem = problem;
     let mut steps = vec![RefinementStep {
-        slices: problem.geometry.slices.len(),
+        slices: problem.slice_count(),
         factor_of_safety: solution.factor_of_safety,
     }];
     let status = loop {
-        let doubled = NonZeroUsize::new(2 * problem.geometry.slices.len())
-            .filter(|n| n.get() <= settings.max_slices);
+        let doubled =
+            NonZeroUsize::new(2 * problem.slice_count()).filter(|n| n.get() <= settings.max_slices);
         let Some(doubled) = doubled else {
             break RefinementStatus::SliceLimit;
         };
@@ -88,7 +89,8 @@ pub fn refine_slices(
             break RefinementStatus::SolverFailed(SolverFailure::MaxTime);
         }
         let finer = problem.with_slices(doubled)?;
-        let finer_solution = solve_spencer(&finer, &settings.spencer);
+        let finer_solution = solve_spencer(&finer.model(), &settings.spencer);
+        let doubled = NonZeroUsize::new(finer.slice_count()).unwrap_or(doubled);
         steps.push(RefinementStep {
             slices: doubled.get(),
             factor_of_safety: finer_solution.factor_of_safety,

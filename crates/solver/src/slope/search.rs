@@ -178,7 +178,7 @@ pub fn factor_of_safety(
         Vec::new(),
     )
     .ok()?;
-    solve_spencer_factor(&slope, settings).map(|s| s.factor_of_safety)
+    solve_spencer_factor(&slope.model(), settings).map(|s| s.factor_of_safety)
 }
 
 /// An optional instant after which no more circles are evaluated.

@@ -3,8 +3,8 @@
 
 use super::equations::{Equations, SliceResultant};
 use super::newton::EquationsSolution;
-use super::problem::SlopeProblem;
 use super::solution::{SliceForces, SpencerSolution, SpencerStatus, ThrustPoint};
+use crate::slope::slices::SliceModel;
 
 /// Denominators m_α below this are reported: the base normal force becomes unreliable there
 /// (a common guard in slope programs; Duncan & Wright recommend 0.2).
@@ -12,33 +12,32 @@ pub const SMALL_DENOMINATOR: f64 = 0.2;
 
 /// Forces, line of thrust and flags at the converged (F, θ).
 pub(super) fn describe(
-    problem: &SlopeProblem,
+    model: &SliceModel,
     equations: &Equations,
     f: f64,
     theta: f64,
     solved: &EquationsSolution,
 ) -> SpencerSolution {
-    let g = &problem.geometry;
-    let soil = &problem.soil;
+    let slices = &model.slices;
     let residuals = equations.evaluate(f, theta);
     let (sin_t, cos_t) = theta.sin_cos();
-    let mut slice_forces = Vec::with_capacity(g.slices.len());
-    let mut thrust_line = Vec::with_capacity(g.slices.len().saturating_sub(1));
+    let mut slice_forces = Vec::with_capacity(slices.len());
+    let mut thrust_line = Vec::with_capacity(slices.len().saturating_sub(1));
     let mut small_m_alpha_slices = Vec::new();
     let mut negative_effective_normal_slices = Vec::new();
     // Inter-slice force and the height of its point of action on the left boundary of the
     // current slice; the lower end carries none.
-    let (mut z_left, mut y_left) = (0.0, g.lower_end.1);
-    let n = g.slices.len();
-    for (i, (slice, t)) in g.slices.iter().zip(&equations.terms).enumerate() {
+    let (mut z_left, mut y_left) = (0.0, model.lower_end().1);
+    let n = slices.len();
+    for (i, (slice, t)) in slices.iter().zip(&equations.terms).enumerate() {
         let SliceResultant { q, m_alpha, .. } = Equations::q(t, f, (sin_t, cos_t));
-        let weight = soil.unit_weight * slice.area;
-        let pore_pressure = soil.pore_pressure_ratio * soil.unit_weight * slice.height_middle;
+        let weight = slice.weight;
+        let pore_pressure = slice.pore_pressure;
         // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
         let normal_force = t.a_n + q * (t.alpha - theta).sin();
         let effective_normal_force = normal_force - t.pore_force;
         let shear_force =
-            (soil.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
+            (slice.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
         // Z_{i+1} = Z_i − Q_i: Q is the net push of the two neighbours along (cos θ, sin θ).
         let z_right = z_left - q;
         if m_alpha < SMALL_DENOMINATOR {
@@ -69,7 +68,7 @@ pub(super) fn describe(
                         / (z_right * cos_t)
                 })
                 .filter(|y| y.is_finite());
-            let top = problem.geometry.embankment.ground(slice.x_right);
+            let top = slice.top_right_y;
             thrust_line.push(ThrustPoint {
                 boundary: i + 1,
                 x: slice.x_right,

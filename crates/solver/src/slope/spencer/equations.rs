@@ -1,8 +1,8 @@
 //! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
 //! equation alone at a fixed θ (SPEC §2.2; the equations are written out in [`super`]).
 
-use super::problem::SlopeProblem;
 use crate::numerics::brent;
+use crate::slope::slices::SliceModel;
 
 /// Range of admissible factors of safety searched by the bracketing steps.
 const F_RANGE: (f64, f64) = (1e-6, 1e6);
@@ -52,22 +52,19 @@ pub(super) struct Equations {
 }
 
 impl Equations {
-    pub fn new(problem: &SlopeProblem) -> Self {
-        let g = &problem.geometry;
-        let soil = &problem.soil;
-        let tan_phi = soil.friction_angle_rad.tan();
+    pub fn new(model: &SliceModel) -> Self {
         let mut total_weight = 0.0;
-        let mut terms: Vec<SliceTerms> = g
+        let mut terms: Vec<SliceTerms> = model
             .slices
             .iter()
             .map(|s| {
-                let weight = soil.unit_weight * s.area;
+                let weight = s.weight;
                 total_weight += weight;
+                let tan_phi = s.tan_phi;
                 let (sin_a, cos_a) = s.base_inclination_rad.sin_cos();
-                let fx = -problem.seismic.kh * weight;
-                let fy = -(1.0 + problem.seismic.kv) * weight;
-                let pore_force =
-                    soil.pore_pressure_ratio * soil.unit_weight * s.height_middle * s.base_length;
+                let fx = -model.seismic.kh * weight;
+                let fy = -(1.0 + model.seismic.kv) * weight;
+                let pore_force = s.pore_pressure * s.base_length;
                 let a_n = fx * sin_a - fy * cos_a;
                 SliceTerms {
                     alpha: s.base_inclination_rad,
@@ -76,21 +73,24 @@ impl Equations {
                     a_t: -fx * cos_a - fy * sin_a,
                     a_n,
                     pore_force,
-                    resistance: soil.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
+                    resistance: s.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
                     tan_phi,
-                    arm: (s.base_middle.0 - g.centre.0, s.base_middle.1 - g.centre.1),
+                    arm: (
+                        s.base_middle.0 - model.reference.0,
+                        s.base_middle.1 - model.reference.1,
+                    ),
                     // Horizontal seismic force at the centroid height: r × F = −dy·F_x.
-                    moment: -(s.centroid.1 - s.base_middle.1) * fx,
+                    moment: -(s.centroid_y - s.base_middle.1) * fx,
                 }
             })
             .collect();
-        for load in &problem.external_loads {
+        for load in &model.loads {
             let t = &mut terms[load.slice];
             let (sin_a, cos_a) = t.alpha.sin_cos();
             let a_n = load.fx * sin_a - load.fy * cos_a;
             t.a_t += -load.fx * cos_a - load.fy * sin_a;
             t.a_n += a_n;
-            t.resistance += a_n * tan_phi;
+            t.resistance += a_n * t.tan_phi;
             t.moment += load.moment;
         }
         let known_moment = terms.iter().map(|t| t.moment).sum();
@@ -98,7 +98,7 @@ impl Equations {
         Self {
             terms,
             force_scale,
-            moment_scale: force_scale * g.radius,
+            moment_scale: force_scale * model.length_scale,
             known_moment,
         }
     }

@@ -41,6 +41,8 @@ use describe::describe;
 use equations::Equations;
 use newton::solve_equations;
 
+use crate::slope::slices::SliceModel;
+
 pub use describe::SMALL_DENOMINATOR;
 pub use problem::{ExternalLoad, Seismic, SlopeProblem, Soil};
 pub use solution::{SliceForces, SpencerSettings, SpencerSolution, SpencerStatus, ThrustPoint};
@@ -58,11 +60,12 @@ pub struct SpencerFactor {
 /// Spencer's (F, θ) alone, without the per-slice forces: what a search over circles needs.
 /// `None` when the equations have no solution.
 pub fn solve_spencer_factor(
-    problem: &SlopeProblem,
+    model: &SliceModel,
     settings: &SpencerSettings,
 ) -> Option<SpencerFactor> {
-    let equations = Equations::new(problem);
-    let solved = solve_equations(&equations, settings);
+    let equations = Equations::new(model);
+    let mut solved = solve_equations(&equations, settings);
+    solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
     match (solved.root, solved.bishop) {
         (Some((f, theta)), _) => Some(SpencerFactor {
             factor_of_safety: f,
@@ -78,13 +81,15 @@ pub fn solve_spencer_factor(
 }
 
 /// Solves Spencer's two equations for the slip circle of `problem`.
-pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> SpencerSolution {
-    let equations = Equations::new(problem);
-    let solved = solve_equations(&equations, settings);
+pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
+    let equations = Equations::new(model);
+    let mut solved = solve_equations(&equations, settings);
+    // Bishop's F is a moment equation about a centre of rotation: without one it means nothing.
+    solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
     match (solved.root, solved.bishop) {
-        (Some((f, theta)), _) => describe(problem, &equations, f, theta, &solved),
+        (Some((f, theta)), _) => describe(model, &equations, f, theta, &solved),
         (None, Some(bishop)) if equations.is_frictionless() => {
-            let mut s = describe(problem, &equations, bishop, 0.0, &solved);
+            let mut s = describe(model, &equations, bishop, 0.0, &solved);
             s.status = SpencerStatus::MomentOnly;
             s.theta_rad = None;
             s.thrust_line.clear();
@@ -97,7 +102,7 @@ pub fn solve_spencer(problem: &SlopeProblem, settings: &SpencerSettings) -> Spen
             bishop_factor_of_safety: solved.bishop,
             iterations: solved.iterations,
             used_fallback: solved.used_fallback,
-            slice_forces: vec![SliceForces::default(); problem.geometry.slices.len()],
+            slice_forces: vec![SliceForces::default(); model.slices.len()],
             thrust_line: Vec::new(),
             small_m_alpha_slices: Vec::new(),
             negative_effective_normal_slices: Vec::new(),
@@ -122,18 +127,18 @@ pub struct FactorCurves {
 const CURVE_HALF_WIDTH_DEG: i32 = 30;
 
 /// F_f(θ) and F_m(θ) at whole degrees from θ* − 30° to θ* + 30° (θ* rounded), within |θ| < 89°.
-pub fn factor_curves_around(problem: &SlopeProblem, theta_rad: f64) -> FactorCurves {
+pub fn factor_curves_around(model: &SliceModel, theta_rad: f64) -> FactorCurves {
     let centre = theta_rad.to_degrees().round();
     let theta_deg: Vec<f64> = (-CURVE_HALF_WIDTH_DEG..=CURVE_HALF_WIDTH_DEG)
         .map(|i| centre + f64::from(i))
         .filter(|t| t.abs() < 89.0)
         .collect();
-    factor_curves(problem, theta_deg)
+    factor_curves(model, theta_deg)
 }
 
 /// F_f(θ) and F_m(θ) at the given θ in degrees.
-pub fn factor_curves(problem: &SlopeProblem, theta_deg: Vec<f64>) -> FactorCurves {
-    let equations = Equations::new(problem);
+pub fn factor_curves(model: &SliceModel, theta_deg: Vec<f64>) -> FactorCurves {
+    let equations = Equations::new(model);
     let mut evaluations = 0;
     let (force_factor, moment_factor) = theta_deg
         .iter()

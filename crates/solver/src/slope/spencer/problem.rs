@@ -4,14 +4,17 @@
 use std::num::NonZeroUsize;
 
 use crate::slope::error::{check_range, SlopeError, SlopeParameter};
+use std::borrow::Cow;
+
 use crate::slope::geometry::{Embankment, SlipCircle, SlopeGeometry};
+use crate::slope::slices::{BaseSlice, SliceModel, Sliced};
 
 /// Soil properties, common to all slices.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Soil {
-    pub(super) unit_weight: f64,
-    pub(super) cohesion: f64,
-    pub(super) friction_angle_rad: f64,
+    pub(crate) unit_weight: f64,
+    pub(crate) cohesion: f64,
+    pub(crate) friction_angle_rad: f64,
     pub(super) pore_pressure_ratio: f64,
 }
 
@@ -178,6 +181,43 @@ impl SlopeProblem {
         })
     }
 
+    /// The slices as the equations see them: W = γ·area, u = r_u·γ·h at the base middle, the
+    /// moments about the circle's centre.
+    pub fn model(&self) -> SliceModel {
+        let g = &self.geometry;
+        let soil = &self.soil;
+        let tan_phi = soil.friction_angle_rad.tan();
+        let slices = g
+            .slices
+            .iter()
+            .map(|s| BaseSlice {
+                x_left: s.x_left,
+                x_right: s.x_right,
+                base_left_y: s.base_left_y,
+                base_right_y: s.base_right_y,
+                top_right_y: g.embankment.ground(s.x_right),
+                base_inclination_rad: s.base_inclination_rad,
+                base_length: s.base_length,
+                base_middle: s.base_middle,
+                height_middle: s.height_middle,
+                weight: soil.unit_weight * s.area,
+                centroid_y: s.centroid.1,
+                cohesion: soil.cohesion,
+                tan_phi,
+                pore_pressure: soil.pore_pressure_ratio * soil.unit_weight * s.height_middle,
+                layer: 0,
+            })
+            .collect();
+        SliceModel {
+            slices,
+            seismic: self.seismic,
+            loads: self.external_loads.clone(),
+            reference: g.centre,
+            has_moment_centre: true,
+            length_scale: g.radius,
+        }
+    }
+
     /// The same problem cut into `slices` slices (external loads are given per slice, so a
     /// problem with them cannot be re-cut: it is refused).
     pub fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
@@ -195,5 +235,19 @@ impl SlopeProblem {
             self.seismic,
             Vec::new(),
         )
+    }
+}
+
+impl Sliced for SlopeProblem {
+    fn model(&self) -> Cow<'_, SliceModel> {
+        Cow::Owned(SlopeProblem::model(self))
+    }
+
+    fn slice_count(&self) -> usize {
+        self.geometry.slices.len()
+    }
+
+    fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
+        SlopeProblem::with_slices(self, slices)
     }
 }

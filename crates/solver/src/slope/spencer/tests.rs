@@ -24,7 +24,7 @@ fn spencer_example(n: usize, unit_weight: f64, cohesion_scale: f64) -> SlopeProb
 }
 
 fn solve(p: &SlopeProblem) -> (f64, f64, SpencerSolution) {
-    let s = solve_spencer(p, &SpencerSettings::default());
+    let s = solve_spencer(&p.model(), &SpencerSettings::default());
     assert_eq!(s.status, SpencerStatus::Converged);
     (
         s.factor_of_safety.unwrap(),
@@ -166,7 +166,10 @@ fn thrust_line_near_lower_third_point() {
 fn one_slice_is_solved_or_reported_honestly() {
     // N = 1: a single slice cannot satisfy both equations unless Q = 0; whatever the status,
     // a converged answer must satisfy the equations.
-    let s = solve_spencer(&spencer_example(1, 10.0, 1.0), &SpencerSettings::default());
+    let s = solve_spencer(
+        &spencer_example(1, 10.0, 1.0).model(),
+        &SpencerSettings::default(),
+    );
     match s.status {
         SpencerStatus::Converged => assert!(s.residual.unwrap() < 1e-9),
         SpencerStatus::NoSolution => assert!(s.factor_of_safety.is_none()),

@@ -1,0 +1,393 @@
+//! The sliding mass of a section cut into vertical slices, in the solver's frame (crest towards
+//! +x). Slices are cut at every ground vertex, layer boundary, water-line break, bedrock kink,
+//! surcharge edge and crossing of these lines with each other and with the slip surface, so
+//! that within a slice every line is straight; between those cuts the slices are of about equal
+//! width.
+
+use std::num::NonZeroUsize;
+
+use super::polyline::Polyline;
+use super::{Section, SlipShape};
+use crate::slope::error::{SlopeError, SlopeParameter};
+use crate::slope::slices::{BaseSlice, SliceModel};
+use crate::slope::spencer::{ExternalLoad, Seismic};
+
+/// Relative distance below which two cuts are one.
+const SAME_CUT: f64 = 1e-9;
+
+/// A cut sliding mass.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Cut {
+    pub model: SliceModel,
+    /// The slip surface as cut (the bases' end points), toe end first, solver frame.
+    pub surface: Vec<(f64, f64)>,
+    /// Toe end and crest end (top of the crack if there is one), solver frame.
+    pub ends: ((f64, f64), (f64, f64)),
+    /// The tension crack: x, bottom, top (solver frame).
+    pub crack: Option<(f64, f64, f64)>,
+    /// Whether the solver frame is the section mirrored.
+    pub mirrored: bool,
+}
+
+/// y of the slip surface (before bedrock) at x.
+fn shape_y(shape: &SlipShape, x: f64) -> f64 {
+    match shape {
+        SlipShape::Circle { centre, radius } => {
+            centre.1 - (radius * radius - (x - centre.0).powi(2)).max(0.0).sqrt()
+        }
+        SlipShape::Polyline(line) => line.y_at(x),
+    }
+}
+
+/// x where the slip surface meets `line` within (a, b).
+fn shape_crossings(shape: &SlipShape, line: &Polyline, a: f64, b: f64) -> Vec<f64> {
+    match shape {
+        SlipShape::Circle { centre, radius } => line
+            .circle_crossings(*centre, *radius, a, b)
+            .into_iter()
+            .filter(|c| c.1)
+            .map(|c| c.0)
+            .collect(),
+        SlipShape::Polyline(surface) => surface.crossings(line, a, b),
+    }
+}
+
+impl Cut {
+    pub fn new(
+        section: &Section,
+        shape: &SlipShape,
+        (entry, exit): (f64, f64),
+        slices: NonZeroUsize,
+        seismic: Seismic,
+        moment_centre: Option<(f64, f64)>,
+        mirrored: bool,
+    ) -> Result<Self, SlopeError> {
+        let ground = &section.ground;
+        let base = |x: f64| {
+            let y = shape_y(shape, x);
+            section.bedrock.as_ref().map_or(y, |b| y.max(b.y_at(x)))
+        };
+        let scale = (exit - entry).max(ground.y_at(entry).abs()).max(1e-9);
+        let tolerance = SAME_CUT * scale;
+        let (xa, mut xb) = (entry, exit);
+        let mut crack = None;
+        if let Some(c) = section.tension_crack {
+            let crack_line = Polyline::new(
+                ground
+                    .points()
+                    .iter()
+                    .map(|p| (p.0, p.1 - c.depth))
+                    .collect(),
+            )
+            .map_err(|_| SlopeError::Conflict {
+                parameter: SlopeParameter::TensionCrackDepth,
+                reason: "the crack line is not a valid line".to_owned(),
+            })?;
+            let mut candidates = shape_crossings(shape, &crack_line, xa, xb);
+            if let Some(b) = &section.bedrock {
+                candidates.extend(b.crossings(&crack_line, xa, xb));
+            }
+            let last = candidates
+                .into_iter()
+                .filter(|&x| {
+                    x > xa + tolerance
+                        && x < xb - tolerance
+                        && (base(x) - crack_line.y_at(x)).abs() <= 1e-7 * scale
+                })
+                .max_by(f64::total_cmp);
+            let Some(x) = last else {
+                return Err(SlopeError::NoSlipMass {
+                    parameter: SlopeParameter::TensionCrackDepth,
+                    reason: format!(
+                        "the slip surface never lies deeper than the crack ({} below the \
+                         ground): the whole mass would be inside the crack",
+                        c.depth
+                    ),
+                });
+            };
+            xb = x;
+            crack = Some((x, crack_line.y_at(x), ground.y_at(x)));
+        }
+        let cuts = cuts(section, shape, xa, xb, tolerance);
+        let boundaries = allocate(&cuts, slices.get());
+        let last = boundaries.len() - 1;
+        let base_at = |i: usize, x: f64| {
+            if i == 0 {
+                ground.y_at(x)
+            } else if i == last {
+                crack.map_or(ground.y_at(x), |c| c.1)
+            } else {
+                base(x).min(ground.y_at(x))
+            }
+        };
+        let base_ys: Vec<f64> = boundaries
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| base_at(i, x))
+            .collect();
+        let slices: Vec<BaseSlice> = (0..last)
+            .map(|i| {
+                slice(
+                    section,
+                    (boundaries[i], boundaries[i + 1]),
+                    (base_ys[i], base_ys[i + 1]),
+                    tolerance,
+                )
+            })
+            .collect();
+        let loads = loads(section, &slices, crack);
+        let surface: Vec<(f64, f64)> = boundaries
+            .iter()
+            .copied()
+            .zip(base_ys.iter().copied())
+            .chain(crack.map(|c| (c.0, c.2)))
+            .collect();
+        let (reference, has_moment_centre) = match (shape, moment_centre) {
+            (SlipShape::Circle { centre, .. }, _) => (*centre, true),
+            (SlipShape::Polyline(_), Some(centre)) => (centre, true),
+            (SlipShape::Polyline(_), None) => {
+                let top = ground.y_at(xa).max(ground.y_at(xb));
+                ((0.5 * (xa + xb), top + 0.5 * (xb - xa)), false)
+            }
+        };
+        let length_scale = surface
+            .iter()
+            .map(|p| (p.0 - reference.0).hypot(p.1 - reference.1))
+            .fold(0.0f64, f64::max)
+            .max(f64::MIN_POSITIVE);
+        Ok(Self {
+            model: SliceModel {
+                slices,
+                seismic,
+                loads,
+                reference,
+                has_moment_centre,
+                length_scale,
+            },
+            ends: (
+                (xa, ground.y_at(xa)),
+                (xb, crack.map_or(ground.y_at(xb), |c| c.2)),
+            ),
+            surface,
+            crack,
+            mirrored,
+        })
+    }
+}
+
+/// Every x in (a, b) where a slice side must fall, sorted, with a and b at the ends.
+fn cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+    let ground = &section.ground;
+    let tops: Vec<&Polyline> = section
+        .layers
+        .iter()
+        .filter_map(|l| l.top.as_ref())
+        .collect();
+    let lines: Vec<&Polyline> = std::iter::once(ground)
+        .chain(tops.iter().copied())
+        .chain(section.bedrock.as_ref())
+        .chain(section.piezometric_line.as_ref())
+        .collect();
+    let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
+    if let SlipShape::Polyline(line) = shape {
+        xs.extend(line.xs());
+    }
+    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    for (i, line) in lines.iter().enumerate() {
+        if i > 0 {
+            xs.extend(shape_crossings(shape, line, a, b));
+        }
+        for other in &lines[i + 1..] {
+            xs.extend(line.crossings(other, a, b));
+        }
+    }
+    let mut cuts: Vec<f64> = std::iter::once(a)
+        .chain(
+            xs.into_iter()
+                .filter(|&x| x > a + tolerance && x < b - tolerance),
+        )
+        .chain(std::iter::once(b))
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup_by(|next, kept| *next - *kept <= tolerance);
+    if let Some(end) = cuts.last_mut() {
+        *end = b;
+    }
+    cuts
+}
+
+/// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
+/// slice between two cuts, so there may be more than n.
+fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
+    let span = cuts[cuts.len() - 1] - cuts[0];
+    let width = span / n as f64;
+    let lengths: Vec<f64> = cuts.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut counts: Vec<usize> = lengths
+        .iter()
+        .map(|&l| ((l / width).floor() as usize).max(1))
+        .collect();
+    let mut total: usize = counts.iter().sum();
+    // Hand out what is left to the pieces whose slices are widest.
+    while total < n {
+        let widest = (0..counts.len()).max_by(|&i, &j| {
+            (lengths[i] / counts[i] as f64).total_cmp(&(lengths[j] / counts[j] as f64))
+        });
+        let Some(i) = widest else { break };
+        counts[i] += 1;
+        total += 1;
+    }
+    let mut sides = Vec::with_capacity(total + 1);
+    for (w, &count) in cuts.windows(2).zip(&counts) {
+        for k in 0..count {
+            sides.push(w[0] + (w[1] - w[0]) * k as f64 / count as f64);
+        }
+    }
+    sides.push(cuts[cuts.len() - 1]);
+    sides
+}
+
+/// The slice between x_l and x_r with its base from (x_l, b_l) to (x_r, b_r).
+fn slice(
+    section: &Section,
+    (xl, xr): (f64, f64),
+    (bl, br): (f64, f64),
+    tolerance: f64,
+) -> BaseSlice {
+    let ground = &section.ground;
+    let width = xr - xl;
+    let xm = 0.5 * (xl + xr);
+    let bm = 0.5 * (bl + br);
+    let layers = &section.layers;
+    // Thickness of each layer at x over the base b, and ∫y over it, by the soil rule: layer k
+    // holds the points at or below its top and above every later layer's top.
+    let columns = |x: f64, b: f64| -> Vec<(f64, f64)> {
+        let g = ground.y_at(x);
+        let tops: Vec<f64> = layers
+            .iter()
+            .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x)))
+            .collect();
+        let mut below = b;
+        let mut out = vec![(0.0, 0.0); layers.len()];
+        for k in (0..layers.len()).rev() {
+            let upper = g.min(tops[k]);
+            let lower = below;
+            if upper > lower {
+                out[k] = (upper - lower, 0.5 * (upper * upper - lower * lower));
+            }
+            below = below.max(tops[k]);
+        }
+        out
+    };
+    let (cl, cm, cr) = (columns(xl, bl), columns(xm, bm), columns(xr, br));
+    let (mut weight, mut moment) = (0.0, 0.0);
+    for (k, layer) in layers.iter().enumerate() {
+        // Simpson's rule: exact for the linear thickness and quadratic ∫y of a cut slice.
+        let area = width / 6.0 * (cl[k].0 + 4.0 * cm[k].0 + cr[k].0);
+        let first_moment = width / 6.0 * (cl[k].1 + 4.0 * cm[k].1 + cr[k].1);
+        weight += layer.soil.unit_weight * area;
+        moment += layer.soil.unit_weight * first_moment;
+    }
+    let probe = bm + tolerance;
+    let g_m = ground.y_at(xm);
+    let layer = (0..layers.len())
+        .rev()
+        .find(|&k| layers[k].top.as_ref().map_or(g_m, |t| t.y_at(xm)) >= probe)
+        .unwrap_or(0);
+    let soil = &layers[layer].soil;
+    let pore_pressure = match (layers[layer].pore_pressure_ratio, &section.piezometric_line) {
+        (Some(ratio), _) => ratio * weight / width,
+        (None, Some(line)) => section.water_unit_weight * (line.y_at(xm) - bm).max(0.0),
+        (None, None) => 0.0,
+    };
+    BaseSlice {
+        x_left: xl,
+        x_right: xr,
+        base_left_y: bl,
+        base_right_y: br,
+        top_right_y: ground.y_at(xr),
+        base_inclination_rad: (br - bl).atan2(width),
+        base_length: width.hypot(br - bl),
+        base_middle: (xm, bm),
+        height_middle: g_m - bm,
+        weight,
+        centroid_y: if weight > 0.0 { moment / weight } else { bm },
+        cohesion: soil.cohesion,
+        tan_phi: soil.friction_angle_rad.tan(),
+        pore_pressure,
+        layer,
+    }
+}
+
+/// The known forces on the slices: ponded water, surcharges, line loads and the water in the
+/// crack, one load per slice that carries any (moments about the base middle).
+fn loads(
+    section: &Section,
+    slices: &[BaseSlice],
+    crack: Option<(f64, f64, f64)>,
+) -> Vec<ExternalLoad> {
+    let ground = &section.ground;
+    let mut totals = vec![(0.0, 0.0, 0.0); slices.len()];
+    // A force (fx, fy) at (x, y) on slice i.
+    let mut add = |i: usize, (x, y): (f64, f64), (fx, fy): (f64, f64), s: &BaseSlice| {
+        let (xb, yb) = s.base_middle;
+        let t: &mut (f64, f64, f64) = &mut totals[i];
+        t.0 += fx;
+        t.1 += fy;
+        t.2 += (x - xb) * fy - (y - yb) * fx;
+    };
+    for (i, s) in slices.iter().enumerate() {
+        let (xl, xr) = (s.x_left, s.x_right);
+        let width = xr - xl;
+        if let Some(line) = &section.piezometric_line {
+            // Ponded water: pressure γ_w·d normal to the ground, d linear over the slice.
+            let (gl, gr) = (ground.y_at(xl), ground.y_at(xr));
+            let (dl, dr) = ((line.y_at(xl) - gl).max(0.0), (line.y_at(xr) - gr).max(0.0));
+            if dl + dr > 0.0 {
+                let p = section.water_unit_weight * width * 0.5 * (dl + dr);
+                let x = xl + width * (dl + 2.0 * dr) / (3.0 * (dl + dr));
+                let slope = (gr - gl) / width;
+                add(i, (x, ground.y_at(x)), (slope * p, -p), s);
+            }
+        }
+        for sc in &section.surcharges {
+            let (a, b) = (xl.max(sc.x_start), xr.min(sc.x_end));
+            if b <= a {
+                continue;
+            }
+            let q = |x: f64| {
+                sc.pressure
+                    + (sc.pressure_end - sc.pressure) * (x - sc.x_start) / (sc.x_end - sc.x_start)
+            };
+            let (qa, qb) = (q(a), q(b));
+            if qa + qb > 0.0 {
+                let p = (b - a) * 0.5 * (qa + qb);
+                let x = a + (b - a) * (qa + 2.0 * qb) / (3.0 * (qa + qb));
+                add(i, (x, ground.y_at(x)), (0.0, -p), s);
+            }
+        }
+        let is_last = i + 1 == slices.len();
+        for l in &section.line_loads {
+            if l.x >= xl && (l.x < xr || (is_last && l.x <= xr)) {
+                add(i, (l.x, ground.y_at(l.x)), (l.fx, l.fy), s);
+            }
+        }
+        if let (true, Some(c), Some((_, bottom, _))) = (is_last, section.tension_crack, crack) {
+            // ½·γ_w·z_w² towards the toe, z_w/3 above the crack bottom.
+            let p = 0.5 * section.water_unit_weight * c.water_depth * c.water_depth;
+            if p > 0.0 {
+                add(i, (xr, bottom + c.water_depth / 3.0), (-p, 0.0), s);
+            }
+        }
+    }
+    totals
+        .into_iter()
+        .enumerate()
+        .filter(|(_, t)| *t != (0.0, 0.0, 0.0))
+        .map(|(slice, (fx, fy, moment))| ExternalLoad {
+            slice,
+            fx,
+            fy,
+            moment,
+        })
+        .collect()
+}

@@ -1,0 +1,135 @@
+//! Where a slip surface enters and leaves the ground (SPEC §4.2).
+
+use super::polyline::Polyline;
+use super::SlipShape;
+use crate::slope::error::{SlopeError, SlopeParameter};
+
+/// Relative tolerance on heights for "at the ground".
+const ON_GROUND: f64 = 1e-9;
+
+/// The x of entry and exit (entry < exit) of `shape` on `ground`.
+pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<(f64, f64), SlopeError> {
+    match shape {
+        SlipShape::Circle { centre, radius } => circle_ends(ground, *centre, *radius),
+        SlipShape::Polyline(line) => polyline_ends(ground, line),
+    }
+}
+
+/// The arc's two crossings of the ground that bound its deepest part below the ground.
+fn circle_ends(
+    ground: &Polyline,
+    centre: (f64, f64),
+    radius: f64,
+) -> Result<(f64, f64), SlopeError> {
+    let (xc, yc) = centre;
+    let (left, right) = (xc - radius, xc + radius);
+    let arc = |x: f64| yc - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
+    let mut cuts: Vec<f64> = std::iter::once(left)
+        .chain(
+            ground
+                .circle_crossings(centre, radius, left, right)
+                .into_iter()
+                .filter(|c| c.1)
+                .map(|c| c.0),
+        )
+        .chain(std::iter::once(right))
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    // Of the pieces of the lower half that lie below the ground, the one reaching deepest.
+    let deepest = cuts
+        .windows(2)
+        .filter(|w| {
+            let m = 0.5 * (w[0] + w[1]);
+            w[1] > w[0] && ground.y_at(m) > arc(m)
+        })
+        .map(|w| (w[0], w[1], arc(xc.clamp(w[0], w[1]))))
+        .min_by(|a, b| a.2.total_cmp(&b.2));
+    let Some((entry, exit, _)) = deepest else {
+        return Err(SlopeError::NoSlipMass {
+            parameter: SlopeParameter::CircleCentre,
+            reason: format!(
+                "the circle (centre ({xc}, {yc}), radius {radius}) does not pass below the ground: \
+                 lower the centre or enlarge the radius"
+            ),
+        });
+    };
+    if entry == left || exit == right {
+        return Err(SlopeError::NoSlipMass {
+            parameter: SlopeParameter::CircleCentre,
+            reason: format!(
+                "the centre ({xc}, {yc}) lies below the ground at the height of the centre, so \
+                 the lower half of the circle does not come back to the surface on both sides: \
+                 raise the centre or shrink the radius"
+            ),
+        });
+    }
+    Ok((entry, exit))
+}
+
+/// The first and last crossings of the surface with the ground; the surface must start and end
+/// at or above the ground and stay below it in between.
+fn polyline_ends(ground: &Polyline, line: &Polyline) -> Result<(f64, f64), SlopeError> {
+    let points = line.points();
+    let (first, last) = (points[0], points[points.len() - 1]);
+    let scale = points
+        .iter()
+        .chain(ground.points())
+        .fold(1.0f64, |m, p| m.max(p.0.abs()).max(p.1.abs()));
+    let tolerance = ON_GROUND * scale;
+    let depth = |x: f64| ground.y_at(x) - line.y_at(x);
+    let fail = |reason: String| {
+        Err(SlopeError::NoSlipMass {
+            parameter: SlopeParameter::Surface,
+            reason,
+        })
+    };
+    if points.len() < 2 {
+        return fail("needs at least two points".to_owned());
+    }
+    for (name, p) in [("first", first), ("last", last)] {
+        if depth(p.0) > tolerance {
+            return fail(format!(
+                "its {name} point ({}, {}) lies below the ground (at {}): start and end the \
+                 surface at or above the ground",
+                p.0,
+                p.1,
+                ground.y_at(p.0)
+            ));
+        }
+    }
+    let mut crossings = line.crossings(ground, first.0, last.0);
+    for p in [first, last] {
+        if depth(p.0).abs() <= tolerance {
+            crossings.push(p.0);
+        }
+    }
+    // Vertices of either line lying on the other are crossings the sign test above misses.
+    for x in line.xs().chain(ground.xs()) {
+        if x > first.0 && x < last.0 && depth(x).abs() <= tolerance {
+            crossings.push(x);
+        }
+    }
+    crossings.sort_by(f64::total_cmp);
+    crossings.dedup();
+    let (Some(&entry), Some(&exit)) = (crossings.first(), crossings.last()) else {
+        return fail("it does not pass below the ground".to_owned());
+    };
+    if exit - entry <= tolerance {
+        return fail("it does not pass below the ground".to_owned());
+    }
+    // Between entry and exit it must stay at or below the ground.
+    let mut xs: Vec<f64> = line
+        .xs()
+        .chain(ground.xs())
+        .filter(|&x| x > entry && x < exit)
+        .collect();
+    xs.extend(crossings.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+    if let Some(x) = xs.into_iter().find(|&x| depth(x) < -tolerance) {
+        return fail(format!(
+            "it rises above the ground at x = {x} between its entry (x = {entry}) and exit \
+             (x = {exit}): one surface must bound one sliding mass"
+        ));
+    }
+    Ok((entry, exit))
+}

@@ -1,0 +1,499 @@
+//! Real cross-sections (SPEC §4.1–4.2): a ground line facing either way, layers listed from the
+//! top down, bedrock, a piezometric line (ponded water where it lies above the ground), per-soil
+//! r_u, surcharges, line loads and a tension crack; slip surfaces that are absolute circles or
+//! any polyline.
+//!
+//! [`SectionProblem::new`] validates the section, places the slip surface on it and cuts the
+//! sliding mass into [`SliceModel`] slices in the solver's frame (crest towards +x: a section
+//! whose crest lies to the left is mirrored, x → −x, and mirrored back for the answer).
+
+mod cut;
+mod ends;
+pub mod polyline;
+#[cfg(test)]
+mod tests;
+
+use std::borrow::Cow;
+use std::num::NonZeroUsize;
+
+use super::error::{check_range, SlopeError, SlopeParameter};
+use super::slices::{SliceModel, Sliced};
+use super::spencer::{Seismic, Soil};
+pub use polyline::{Polyline, PolylineError};
+
+/// Largest magnitude of a pressure, force or unit weight (as for the simple form).
+const MAX_MAGNITUDE: f64 = 1e12;
+
+/// One soil layer: its top line (`None` for the first: the ground) and its soil.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layer {
+    /// Top of the layer; `None` = the ground (the first layer only).
+    pub top: Option<Polyline>,
+    /// The soil (its own r_u is not used: see `pore_pressure_ratio`).
+    pub soil: Soil,
+    /// r_u of this soil; when given it sets the pore pressure at bases in this soil, in place
+    /// of the piezometric line.
+    pub pore_pressure_ratio: Option<f64>,
+}
+
+/// A vertical pressure on the ground over [x_start, x_end], varying linearly.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Surcharge {
+    /// Left end.
+    pub x_start: f64,
+    /// Right end (> x_start).
+    pub x_end: f64,
+    /// Pressure at x_start (downward, ≥ 0).
+    pub pressure: f64,
+    /// Pressure at x_end (downward, ≥ 0).
+    pub pressure_end: f64,
+}
+
+/// A force on the ground point above x.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineLoad {
+    /// Where it acts (on the ground above x).
+    pub x: f64,
+    /// Horizontal component, positive towards +x.
+    pub fx: f64,
+    /// Vertical component, positive upwards.
+    pub fy: f64,
+}
+
+/// A tension crack: the ground moved down by `depth`, with water `water_depth` deep in it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TensionCrack {
+    /// Depth of the crack below the ground (> 0).
+    pub depth: f64,
+    /// Depth of water in the crack, measured up from its bottom (0 ≤ z_w ≤ depth).
+    pub water_depth: f64,
+}
+
+/// A validated cross-section.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Section {
+    pub(crate) ground: Polyline,
+    pub(crate) layers: Vec<Layer>,
+    pub(crate) bedrock: Option<Polyline>,
+    pub(crate) piezometric_line: Option<Polyline>,
+    pub(crate) water_unit_weight: f64,
+    pub(crate) surcharges: Vec<Surcharge>,
+    pub(crate) line_loads: Vec<LineLoad>,
+    pub(crate) tension_crack: Option<TensionCrack>,
+}
+
+/// Everything a [`Section`] is built from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionParts {
+    /// Ground line.
+    pub ground: Polyline,
+    /// Layers from the top down (at least one; the first one's top is the ground).
+    pub layers: Vec<Layer>,
+    /// Bedrock line: no slip surface passes below it.
+    pub bedrock: Option<Polyline>,
+    /// Piezometric line.
+    pub piezometric_line: Option<Polyline>,
+    /// γ_w (> 0).
+    pub water_unit_weight: f64,
+    /// Surcharges.
+    pub surcharges: Vec<Surcharge>,
+    /// Line loads.
+    pub line_loads: Vec<LineLoad>,
+    /// Tension crack.
+    pub tension_crack: Option<TensionCrack>,
+}
+
+impl Section {
+    /// Validates the parts that depend on each other (polylines are valid by construction).
+    pub fn new(parts: SectionParts) -> Result<Self, SlopeError> {
+        if parts.layers.is_empty() {
+            return Err(SlopeError::Conflict {
+                parameter: SlopeParameter::Layer { index: 0 },
+                reason: "a section needs at least one layer".to_owned(),
+            });
+        }
+        for (index, layer) in parts.layers.iter().enumerate() {
+            match (index, &layer.top) {
+                (0, Some(_)) => {
+                    return Err(SlopeError::Conflict {
+                        parameter: SlopeParameter::LayerTop { index },
+                        reason: "the first layer's top is the ground: give null".to_owned(),
+                    })
+                }
+                (1.., None) => {
+                    return Err(SlopeError::Conflict {
+                        parameter: SlopeParameter::LayerTop { index },
+                        reason: "every layer after the first needs its top line".to_owned(),
+                    })
+                }
+                _ => {}
+            }
+            if let Some(ratio) = layer.pore_pressure_ratio {
+                check_range(
+                    SlopeParameter::Layer { index },
+                    ratio,
+                    0.0,
+                    false,
+                    1.0,
+                    "0 ≤ pore_pressure_ratio ≤ 1",
+                )?;
+            }
+        }
+        check_range(
+            SlopeParameter::WaterUnitWeight,
+            parts.water_unit_weight,
+            0.0,
+            true,
+            MAX_MAGNITUDE,
+            "a finite number > 0",
+        )?;
+        for (index, s) in parts.surcharges.iter().enumerate() {
+            let parameter = SlopeParameter::Surcharge { index };
+            let allowed = "pressures 0 ≤ p ≤ 1e12 and a finite x_start < x_end";
+            for p in [s.pressure, s.pressure_end] {
+                check_range(parameter, p, 0.0, false, MAX_MAGNITUDE, allowed)?;
+            }
+            if !(s.x_start.is_finite() && s.x_end.is_finite() && s.x_start < s.x_end) {
+                return Err(SlopeError::OutOfRange {
+                    parameter,
+                    value: s.x_end,
+                    allowed,
+                });
+            }
+        }
+        for (index, l) in parts.line_loads.iter().enumerate() {
+            for v in [l.x, l.fx, l.fy] {
+                check_range(
+                    SlopeParameter::LineLoad { index },
+                    v,
+                    -MAX_MAGNITUDE,
+                    false,
+                    MAX_MAGNITUDE,
+                    "finite x, fx, fy with |value| ≤ 1e12",
+                )?;
+            }
+        }
+        if let Some(crack) = parts.tension_crack {
+            let depth = check_range(
+                SlopeParameter::TensionCrackDepth,
+                crack.depth,
+                0.0,
+                true,
+                1e9,
+                "a finite depth > 0",
+            )?;
+            check_range(
+                SlopeParameter::TensionCrackWater,
+                crack.water_depth,
+                0.0,
+                false,
+                depth,
+                "0 ≤ water_depth ≤ depth",
+            )?;
+        }
+        if let Some(bedrock) = &parts.bedrock {
+            let above = bedrock
+                .points()
+                .iter()
+                .map(|p| (p.0, p.1 - parts.ground.y_at(p.0)))
+                .chain(
+                    parts
+                        .ground
+                        .points()
+                        .iter()
+                        .map(|p| (p.0, bedrock.y_at(p.0) - p.1)),
+                )
+                .find(|&(_, rise)| rise > 0.0);
+            if let Some((x, _)) = above {
+                return Err(SlopeError::Conflict {
+                    parameter: SlopeParameter::Bedrock,
+                    reason: format!("must not rise above the ground (it does at x = {x})"),
+                });
+            }
+        }
+        Ok(Self {
+            ground: parts.ground,
+            layers: parts.layers,
+            bedrock: parts.bedrock,
+            piezometric_line: parts.piezometric_line,
+            water_unit_weight: parts.water_unit_weight,
+            surcharges: parts.surcharges,
+            line_loads: parts.line_loads,
+            tension_crack: parts.tension_crack,
+        })
+    }
+
+    /// The ground line.
+    pub fn ground(&self) -> &Polyline {
+        &self.ground
+    }
+
+    /// The layers, top down.
+    pub fn layers(&self) -> &[Layer] {
+        &self.layers
+    }
+
+    /// The bedrock line.
+    pub fn bedrock(&self) -> Option<&Polyline> {
+        self.bedrock.as_ref()
+    }
+
+    /// The piezometric line.
+    pub fn piezometric_line(&self) -> Option<&Polyline> {
+        self.piezometric_line.as_ref()
+    }
+
+    /// The surcharges.
+    pub fn surcharges(&self) -> &[Surcharge] {
+        &self.surcharges
+    }
+
+    /// The line loads.
+    pub fn line_loads(&self) -> &[LineLoad] {
+        &self.line_loads
+    }
+
+    /// The tension crack.
+    pub fn tension_crack(&self) -> Option<TensionCrack> {
+        self.tension_crack
+    }
+
+    /// The section seen from behind (x → −x).
+    fn mirrored(&self) -> Self {
+        let line = |l: &Option<Polyline>| l.as_ref().map(Polyline::mirrored);
+        Self {
+            ground: self.ground.mirrored(),
+            layers: self
+                .layers
+                .iter()
+                .map(|l| Layer {
+                    top: line(&l.top),
+                    ..l.clone()
+                })
+                .collect(),
+            bedrock: line(&self.bedrock),
+            piezometric_line: line(&self.piezometric_line),
+            water_unit_weight: self.water_unit_weight,
+            surcharges: self
+                .surcharges
+                .iter()
+                .map(|s| Surcharge {
+                    x_start: -s.x_end,
+                    x_end: -s.x_start,
+                    pressure: s.pressure_end,
+                    pressure_end: s.pressure,
+                })
+                .collect(),
+            line_loads: self
+                .line_loads
+                .iter()
+                .map(|l| LineLoad {
+                    x: -l.x,
+                    fx: -l.fx,
+                    fy: l.fy,
+                })
+                .collect(),
+            tension_crack: self.tension_crack,
+        }
+    }
+}
+
+/// A slip surface in the section's coordinates.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SlipShape {
+    /// A circle; the sliding mass lies above the arc between the two crossings of the ground
+    /// that bound the deepest part of the arc.
+    Circle {
+        /// Centre.
+        centre: (f64, f64),
+        /// Radius (> 0).
+        radius: f64,
+    },
+    /// A polyline whose first and last points lie at or above the ground.
+    Polyline(Polyline),
+}
+
+impl SlipShape {
+    fn mirrored(&self) -> Self {
+        match self {
+            Self::Circle { centre, radius } => Self::Circle {
+                centre: (-centre.0, centre.1),
+                radius: *radius,
+            },
+            Self::Polyline(line) => Self::Polyline(line.mirrored()),
+        }
+    }
+}
+
+/// One slip surface on one section, cut into slices, ready to solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionProblem {
+    section: Section,
+    shape: SlipShape,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    moment_centre: Option<(f64, f64)>,
+    cut: cut::Cut,
+}
+
+impl SectionProblem {
+    /// Places `shape` on `section` and cuts the sliding mass into about `slices` slices (more
+    /// when the section has more pieces than that: each slice lies within one piece).
+    pub fn new(
+        section: Section,
+        shape: SlipShape,
+        slices: NonZeroUsize,
+        seismic: Seismic,
+        moment_centre: Option<(f64, f64)>,
+    ) -> Result<Self, SlopeError> {
+        Seismic::new(seismic.kh, seismic.kv)?;
+        if let SlipShape::Circle { centre, radius } = &shape {
+            for v in [centre.0, centre.1] {
+                check_range(
+                    SlopeParameter::CircleCentre,
+                    v,
+                    -1e9,
+                    false,
+                    1e9,
+                    "finite coordinates, |x|, |y| ≤ 1e9",
+                )?;
+            }
+            check_range(
+                SlopeParameter::CircleRadius,
+                *radius,
+                0.0,
+                true,
+                1e9,
+                "a finite radius, 0 < R ≤ 1e9",
+            )?;
+        }
+        if let Some(c) = moment_centre {
+            for v in [c.0, c.1] {
+                check_range(
+                    SlopeParameter::MomentCentre,
+                    v,
+                    -1e9,
+                    false,
+                    1e9,
+                    "finite coordinates, |x|, |y| ≤ 1e9",
+                )?;
+            }
+        }
+        let (entry, exit) = ends::ends(&section.ground, &shape)?;
+        let rises_left = section.ground.y_at(entry) > section.ground.y_at(exit)
+            || (section.ground.y_at(entry) == section.ground.y_at(exit) && {
+                let p = section.ground.points();
+                p[0].1 > p[p.len() - 1].1
+            });
+        let cut = if rises_left {
+            let (section, shape) = (section.mirrored(), shape.mirrored());
+            let centre = moment_centre.map(|c| (-c.0, c.1));
+            cut::Cut::new(
+                &section,
+                &shape,
+                (-exit, -entry),
+                slices,
+                seismic,
+                centre,
+                true,
+            )?
+        } else {
+            cut::Cut::new(
+                &section,
+                &shape,
+                (entry, exit),
+                slices,
+                seismic,
+                moment_centre,
+                false,
+            )?
+        };
+        Ok(Self {
+            section,
+            shape,
+            slices,
+            seismic,
+            moment_centre,
+            cut,
+        })
+    }
+
+    /// The section.
+    pub fn section(&self) -> &Section {
+        &self.section
+    }
+
+    /// The slip surface as given.
+    pub fn shape(&self) -> &SlipShape {
+        &self.shape
+    }
+
+    /// Whether the section's crest lies to the left: the solver's frame is then mirrored
+    /// (x → −x) and the slices run from right to left.
+    pub fn is_mirrored(&self) -> bool {
+        self.cut.mirrored
+    }
+
+    /// A solver-frame x in section coordinates.
+    pub fn to_section_x(&self, x: f64) -> f64 {
+        if self.cut.mirrored {
+            -x
+        } else {
+            x
+        }
+    }
+
+    /// The slip surface as cut, left to right in section coordinates (a tension crack adds its
+    /// vertical face at the upper end).
+    pub fn surface(&self) -> Vec<(f64, f64)> {
+        let mut points: Vec<(f64, f64)> = self
+            .cut
+            .surface
+            .iter()
+            .map(|&(x, y)| (self.to_section_x(x), y))
+            .collect();
+        if self.cut.mirrored {
+            points.reverse();
+        }
+        points
+    }
+
+    /// Entry and exit of the slip surface on the ground (toe end, crest end), in section
+    /// coordinates; with a tension crack the crest end is the top of the crack.
+    pub fn ends(&self) -> ((f64, f64), (f64, f64)) {
+        let (a, b) = self.cut.ends;
+        ((self.to_section_x(a.0), a.1), (self.to_section_x(b.0), b.1))
+    }
+
+    /// The tension crack as cut: x, bottom and top, in section coordinates.
+    pub fn crack(&self) -> Option<(f64, f64, f64)> {
+        self.cut
+            .crack
+            .map(|(x, bottom, top)| (self.to_section_x(x), bottom, top))
+    }
+
+    /// The slices and loads in the solver's frame.
+    pub fn model(&self) -> &SliceModel {
+        &self.cut.model
+    }
+}
+
+impl Sliced for SectionProblem {
+    fn model(&self) -> Cow<'_, SliceModel> {
+        Cow::Borrowed(&self.cut.model)
+    }
+
+    fn slice_count(&self) -> usize {
+        self.cut.model.slices.len()
+    }
+
+    fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
+        Self::new(
+            self.section.clone(),
+            self.shape.clone(),
+            slices,
+            self.seismic,
+            self.moment_centre,
+        )
+    }
+}

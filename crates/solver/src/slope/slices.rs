@@ -1,0 +1,90 @@
+//! What the equilibrium equations see of a slip surface: the slices with their weights,
+//! strengths, pore pressures and known loads, in the solver's frame (crest towards +x, the mass
+//! sliding towards −x). Both the simple embankment of [`super::geometry`] and the sections of
+//! [`super::section`] are cut into this one form, so every method works on both.
+
+use std::borrow::Cow;
+use std::num::NonZeroUsize;
+
+use super::error::SlopeError;
+use super::spencer::{ExternalLoad, Seismic};
+
+/// One vertical slice: its geometry, weight, base strength and pore pressure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BaseSlice {
+    /// x of the left (toe-side) vertical side.
+    pub x_left: f64,
+    /// x of the right (crest-side) vertical side.
+    pub x_right: f64,
+    /// y of the base at the left side.
+    pub base_left_y: f64,
+    /// y of the base at the right side.
+    pub base_right_y: f64,
+    /// Ground level at the right side.
+    pub top_right_y: f64,
+    /// Inclination α of the (straight) base, positive where it rises towards the crest.
+    pub base_inclination_rad: f64,
+    /// Length of the base.
+    pub base_length: f64,
+    /// Middle of the base, the point about which the 1973 moment equation is written.
+    pub base_middle: (f64, f64),
+    /// Height of the slice at its middle, from the base to the ground.
+    pub height_middle: f64,
+    /// Weight W of the soil in the slice.
+    pub weight: f64,
+    /// Height of the centre of gravity of the soil (where a horizontal seismic force acts).
+    pub centroid_y: f64,
+    /// Effective cohesion c' at the base.
+    pub cohesion: f64,
+    /// tan φ' at the base.
+    pub tan_phi: f64,
+    /// Pore pressure u at the base middle.
+    pub pore_pressure: f64,
+    /// Index of the soil (layer) at the base; 0 for a single soil.
+    pub layer: usize,
+}
+
+impl BaseSlice {
+    /// Width b of the slice.
+    pub fn width(&self) -> f64 {
+        self.x_right - self.x_left
+    }
+}
+
+/// The slices of one slip surface and everything else the equations need.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SliceModel {
+    /// The slices, from the toe end (lower end) to the crest end.
+    pub slices: Vec<BaseSlice>,
+    /// Seismic coefficients (on the soil weight).
+    pub seismic: Seismic,
+    /// Known forces on slices (moments about their base middles).
+    pub loads: Vec<ExternalLoad>,
+    /// The point moments are taken about: the circle's centre, or the given moment centre.
+    pub reference: (f64, f64),
+    /// Whether `reference` is a centre of rotation of the surface (a circle's centre, or one
+    /// given): only then is a moment-only method (Bishop's) meaningful.
+    pub has_moment_centre: bool,
+    /// A length of the size of the mass (the radius of a circle), to scale moment residuals.
+    pub length_scale: f64,
+}
+
+impl SliceModel {
+    /// The start of the slip surface (toe end).
+    pub fn lower_end(&self) -> (f64, f64) {
+        self.slices
+            .first()
+            .map_or((0.0, 0.0), |s| (s.x_left, s.base_left_y))
+    }
+}
+
+/// A slip surface on a slope that the equations can be set up for, and re-cut into a
+/// different number of slices.
+pub trait Sliced: Sized {
+    /// The slices and loads.
+    fn model(&self) -> Cow<'_, SliceModel>;
+    /// The number of slices.
+    fn slice_count(&self) -> usize;
+    /// The same surface cut into (about) `slices` slices.
+    fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError>;
+}
