@@ -107,7 +107,7 @@ impl From<SlopeError> for ApiError {
             ),
             SlopeError::NoSlipMass { parameter, reason } => ApiError::invalid(
                 slope_field(parameter),
-                format!("the circle cuts no slip mass from the slope: {reason}"),
+                format!("the slip surface cuts no sliding mass from the ground: {reason}"),
             ),
             SlopeError::Conflict { parameter, reason } => {
                 ApiError::invalid(slope_field(parameter), reason)

@@ -33,3 +33,12 @@ pub const MAX_GRID: usize = 101;
 pub const MAX_GRID_SLICES: usize = 10_000_000;
 /// Range of the relative slice tolerance of the slice refinement.
 pub const SLICE_TOLERANCE: (f64, f64) = (1e-9, 0.1);
+
+/// Most points in one polyline of a section (ground, layer top, bedrock, water line, surface).
+pub const MAX_POLYLINE_POINTS: usize = 1000;
+/// Most layers in a section.
+pub const MAX_LAYERS: usize = 50;
+/// Most surcharges, and most line loads, in a section.
+pub const MAX_SECTION_LOADS: usize = 1000;
+/// The unit weight of water when none is given (kN/m³).
+pub const DEFAULT_WATER_UNIT_WEIGHT: f64 = 9.81;

@@ -1,25 +1,127 @@
 //! Drawing of a slope: the embankment, the slip circle and its centre, the slices, the line of
 //! thrust, and for a search the map of F over the grid of centres with the critical centre.
 
+use thrustline_solver::slope::Sliced;
+
+use super::analysed::{Analysed, PlacedCircle};
 use super::response::SolvedSlope;
 use crate::svg::{escape, heat, Canvas};
 
-/// The drawing of a solved request (the analysed or critical circle) and its answer.
+/// What is drawn of the ground, in the request's coordinates.
+struct Scene {
+    /// The ground line (continued level to the edges of the picture).
+    ground: Vec<(f64, f64)>,
+    /// Layer tops, bedrock and the water line.
+    lines: Vec<Line>,
+    /// The slip surface.
+    surface: Vec<(f64, f64)>,
+    /// The slice sides, base to ground.
+    sides: Vec<[(f64, f64); 2]>,
+    /// The circle, if the surface is one.
+    circle: Option<PlacedCircle>,
+    /// Surcharges as (x_start, x_end) and line loads' x.
+    loads: Vec<(f64, f64)>,
+}
+
+/// A line of the section: points, colour, label.
+type Line = (Vec<(f64, f64)>, &'static str, String);
+
+const LAYER_COLOURS: [&str; 6] = [
+    "#6d4c41", "#1565c0", "#2e7d32", "#6a1b9a", "#ef6c00", "#00838f",
+];
+
+fn scene(problem: &Analysed) -> Scene {
+    let model = problem.model();
+    let sides: Vec<[(f64, f64); 2]> = model
+        .slices
+        .iter()
+        .skip(1)
+        .map(|s| {
+            let x = problem.request_x(s.x_left);
+            [(x, s.base_left_y), (x, problem.ground_y(s.x_left))]
+        })
+        .collect();
+    match problem {
+        Analysed::Simple(p) => {
+            let e = &p.geometry.embankment;
+            Scene {
+                ground: vec![(0.0, 0.0), (e.length(), e.height())],
+                lines: Vec::new(),
+                surface: problem.surface(),
+                sides,
+                circle: problem.circle(),
+                loads: Vec::new(),
+            }
+        }
+        Analysed::Section(p) => {
+            let section = p.section();
+            let mut lines = Vec::new();
+            for (i, layer) in section.layers().iter().enumerate().skip(1) {
+                if let Some(top) = &layer.top {
+                    lines.push((
+                        top.points().to_vec(),
+                        LAYER_COLOURS[i % LAYER_COLOURS.len()],
+                        format!("top of layer {}", i + 1),
+                    ));
+                }
+            }
+            if let Some(b) = section.bedrock() {
+                lines.push((b.points().to_vec(), "#424242", "bedrock".to_owned()));
+            }
+            if let Some(w) = section.piezometric_line() {
+                lines.push((
+                    w.points().to_vec(),
+                    "#0277bd",
+                    "piezometric line".to_owned(),
+                ));
+            }
+            let loads = section
+                .surcharges()
+                .iter()
+                .map(|s| (s.x_start, s.x_end))
+                .chain(section.line_loads().iter().map(|l| (l.x, l.x)))
+                .collect();
+            Scene {
+                ground: section.ground().points().to_vec(),
+                lines,
+                surface: p.surface(),
+                sides,
+                circle: problem.circle(),
+                loads,
+            }
+        }
+    }
+}
+
+/// The drawing of a solved request (the analysed or critical surface) and its answer.
 pub fn draw(solved: &SolvedSlope, title: &str) -> String {
-    let g = &solved.problem.geometry;
+    let scene = scene(&solved.problem);
     let solution = &solved.solution;
     let grid = solved.search.as_ref().map(|s| &s.grid);
-    let e = &g.embankment;
-    let (h, l) = (e.height(), e.length());
-    let left = g.lower_end.0.min(0.0) - 0.3 * (l + h);
-    let right = g.upper_exit.0.max(l) + 0.3 * (l + h);
-    let mut extent = vec![
-        (left, -0.2 * h),
-        (right, h * 1.2),
-        g.centre,
-        (g.centre.0, g.centre.1 - g.radius),
-    ];
-    let lower_end = g.lower_end;
+    let ys = || {
+        scene
+            .ground
+            .iter()
+            .chain(&scene.surface)
+            .chain(scene.lines.iter().flat_map(|l| &l.0))
+            .map(|p| p.1)
+    };
+    let (y_lo, y_hi) = ys().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+        (a.min(y), b.max(y))
+    });
+    let xs = || scene.ground.iter().chain(&scene.surface).map(|p| p.0);
+    let (x_lo, x_hi) = xs().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+        (a.min(x), b.max(x))
+    });
+    let size = (x_hi - x_lo).max(y_hi - y_lo).max(1e-9);
+    let (left, right) = (x_lo - 0.3 * size, x_hi + 0.3 * size);
+    let bottom = y_lo - 0.2 * size;
+    let mut extent = vec![(left, bottom), (right, y_hi + 0.2 * size)];
+    if let Some(c) = scene.circle {
+        extent.push(c.centre);
+        extent.push((c.centre.0, (c.centre.1 - c.radius).max(bottom)));
+    }
+    let lower_end = scene.surface.first().copied().unwrap_or((0.0, 0.0));
     let grid_centres: Vec<(f64, f64)> = grid
         .map(|grid| {
             grid.xs
@@ -74,62 +176,115 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             "<text x=\"60\" y=\"44\" font-size=\"11\" font-family=\"sans-serif\" fill=\"#b71c1c\">F over centres: red {lo:.3} … blue ≥ {cap:.3}; contours F_min × 1.02 … 1.7; blank: no valid circle</text>"
         ));
     }
-    // The embankment.
-    let ground = [
-        (left, 0.0),
-        (0.0, 0.0),
-        (l, h),
-        (right, h),
-        (right, -0.2 * h),
-        (left, -0.2 * h),
-    ];
-    canvas.polygon(
-        &ground,
-        "fill=\"#d7ccc8\" stroke=\"#5d4037\" stroke-width=\"1.2\"",
-    );
-    // The slices and the slip surface (their base chords).
-    for s in &g.slices {
+    // The ground, continued level to the edges.
+    let first = scene.ground[0];
+    let last = scene.ground[scene.ground.len() - 1];
+    let mut ground: Vec<(f64, f64)> = vec![(left.min(first.0), first.1)];
+    ground.extend(scene.ground.iter().copied());
+    ground.push((right.max(last.0), last.1));
+    let outline = ground.clone();
+    ground.push((right.max(last.0), bottom));
+    ground.push((left.min(first.0), bottom));
+    canvas.polygon(&ground, "fill=\"#d7ccc8\" stroke=\"none\"");
+    canvas.polyline(&outline, "stroke=\"#5d4037\" stroke-width=\"1.2\"");
+    let mut legend = Vec::new();
+    for (points, colour, label) in &scene.lines {
+        let mut line = vec![(left.min(points[0].0), points[0].1)];
+        line.extend(points.iter().copied());
+        let end = points[points.len() - 1];
+        line.push((right.max(end.0), end.1));
+        let dash = if label == "piezometric line" {
+            " stroke-dasharray=\"6 3\""
+        } else {
+            ""
+        };
         canvas.polyline(
-            &[(s.x_left, s.base_left_y), (s.x_left, e.ground(s.x_left))],
-            "stroke=\"#8d6e63\" stroke-width=\"0.4\"",
+            &line,
+            &format!("stroke=\"{colour}\" stroke-width=\"1.2\"{dash}"),
+        );
+        legend.push((colour, label.clone()));
+    }
+    for (a, b) in &scene.loads {
+        let y = |x: f64| {
+            let i = scene.ground.partition_point(|p| p.0 < x);
+            match (
+                i.checked_sub(1).map(|k| scene.ground[k]),
+                scene.ground.get(i),
+            ) {
+                (Some(p), Some(q)) => p.1 + (q.1 - p.1) * (x - p.0) / (q.0 - p.0),
+                (None, Some(q)) => q.1,
+                (Some(p), None) => p.1,
+                (None, None) => 0.0,
+            }
+        };
+        let h = 0.04 * size;
+        canvas.polyline(
+            &[
+                (*a, y(*a) + h),
+                (*a, y(*a)),
+                (*b, y(*b)),
+                (*b, y(*b) + h),
+                (*a, y(*a) + h),
+            ],
+            "stroke=\"#e65100\" stroke-width=\"1.2\"",
         );
     }
-    let base: Vec<(f64, f64)> = std::iter::once(g.lower_end)
-        .chain(g.slices.iter().map(|s| (s.x_right, s.base_right_y)))
-        .collect();
-    canvas.polyline(&base, "stroke=\"#212121\" stroke-width=\"1.8\"");
+    // The slices and the slip surface.
+    for side in &scene.sides {
+        canvas.polyline(side, "stroke=\"#8d6e63\" stroke-width=\"0.4\"");
+    }
+    canvas.polyline(&scene.surface, "stroke=\"#212121\" stroke-width=\"1.8\"");
     // The circle's centre and two radii to the ends of the slip surface.
-    canvas.polyline(
-        &[g.lower_end, g.centre, g.upper_exit],
-        "stroke=\"#9e9e9e\" stroke-width=\"0.6\" stroke-dasharray=\"4 3\"",
-    );
-    canvas.dot(g.centre, 4.0, "fill=\"#212121\"");
-    canvas.text(
-        g.centre,
-        (8.0, -6.0),
-        &format!("centre, R = {:.3}", g.radius),
-        "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
-    );
+    if let Some(PlacedCircle {
+        centre,
+        radius,
+        lower_end,
+        upper_exit,
+    }) = scene.circle
+    {
+        canvas.polyline(
+            &[lower_end, centre, upper_exit],
+            "stroke=\"#9e9e9e\" stroke-width=\"0.6\" stroke-dasharray=\"4 3\"",
+        );
+        canvas.dot(centre, 4.0, "fill=\"#212121\"");
+        canvas.text(
+            centre,
+            (8.0, -6.0),
+            &format!("centre, R = {radius:.3}"),
+            "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
+        );
+    }
     // The line of thrust on the slice boundaries.
     let thrust: Vec<(f64, f64)> = solution
         .thrust_line
         .iter()
-        .map(|t| (t.x, t.y.unwrap_or(f64::NAN)))
+        .map(|t| (solved.problem.request_x(t.x), t.y.unwrap_or(f64::NAN)))
         .collect();
     canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
     let caption = match (solution.factor_of_safety, solution.theta_rad) {
-        (Some(f), Some(theta)) => format!(
-            "F = {f:.4}, θ = {:.2}° (Spencer); Bishop {:.4}",
-            theta.to_degrees(),
-            solution.bishop_factor_of_safety.unwrap_or(f64::NAN)
-        ),
-        _ => "no solution for this circle".to_owned(),
+        (Some(f), Some(theta)) => {
+            let bishop = solution
+                .bishop_factor_of_safety
+                .map_or(String::new(), |b| format!("; Bishop {b:.4}"));
+            format!(
+                "F = {f:.4}, θ = {:.2}° (Spencer){bishop}",
+                theta.to_degrees()
+            )
+        }
+        _ => "no solution for this slip surface".to_owned(),
     };
+    let mut y = if grid.is_some() { 58 } else { 44 };
     canvas.raw(&format!(
-        "<text x=\"60\" y=\"{}\" font-size=\"12\" font-family=\"sans-serif\" fill=\"#c62828\">— line of thrust. {}</text>",
-        if grid.is_some() { 58 } else { 44 },
+        "<text x=\"60\" y=\"{y}\" font-size=\"12\" font-family=\"sans-serif\" fill=\"#c62828\">— line of thrust. {}</text>",
         escape(&caption)
     ));
+    for (colour, label) in legend {
+        y += 14;
+        canvas.raw(&format!(
+            "<text x=\"60\" y=\"{y}\" font-size=\"11\" font-family=\"sans-serif\" fill=\"{colour}\">— {}</text>",
+            escape(&label)
+        ));
+    }
     canvas.finish(title)
 }
 

@@ -5,22 +5,27 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::slope::section::{
+    Layer, Polyline, Section, SectionParts, SectionProblem, SlipShape,
+};
 use thrustline_solver::slope::{
     Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, SlopeProblem, Soil,
 };
 
+use super::analysed::Analysed;
 use super::request::{CircleDto, SearchDto, SpencerRequest};
+use super::section::{polyline, section_from, soil as soil_from};
 use crate::error::ApiError;
 use crate::limits::{
-    MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES, MAX_LENGTH, MAX_MAGNITUDE,
-    MAX_SLICES, MIN_LENGTH, SLICE_TOLERANCE,
+    DEFAULT_WATER_UNIT_WEIGHT, MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES,
+    MAX_LENGTH, MAX_SLICES, MIN_LENGTH, SLICE_TOLERANCE,
 };
 use crate::validation::{count, finite, number};
 
 /// A validated Spencer request, ready for the solver.
 #[derive(Debug, Clone)]
 pub struct SpencerInput {
-    /// One circle, or a search for the critical one.
+    /// One slip surface, or a search for the critical circle.
     pub target: Target,
     /// With a slice tolerance: refine the slices until F settles within it.
     pub slice_tolerance: Option<f64>,
@@ -28,20 +33,25 @@ pub struct SpencerInput {
     pub curves: bool,
 }
 
-/// One circle, or a search.
+/// One slip surface, or a search.
 #[derive(Debug, Clone)]
 pub enum Target {
-    /// The circle to analyse.
-    Circle(SlopeProblem),
+    /// The slip surface to analyse.
+    Surface(Analysed),
     /// The grid to search and everything but the circle.
     Search(SearchGrid, SearchProblem),
 }
 
-/// The validated parts of a request that do not depend on the circle.
+/// The ground and soil: a section, or the simple slope with its soil.
+enum Ground {
+    Simple(Embankment, Soil),
+    Section(Section),
+}
+
+/// The validated parts of a request that do not depend on the slip surface.
 struct Parts {
-    embankment: Embankment,
+    ground: Ground,
     slices: NonZeroUsize,
-    soil: Soil,
     seismic: Seismic,
     external_loads: Vec<ExternalLoad>,
 }
@@ -69,38 +79,65 @@ impl SpencerRequest {
                  changes the slices",
             ));
         }
-        let target = match (&self.circle, &self.search) {
-            (Some(circle), None) => Target::Circle(SlopeProblem::new(
-                parts.embankment,
-                circle_from(circle),
-                parts.slices,
-                parts.soil,
-                parts.seismic,
-                parts.external_loads,
-            )?),
-            (None, Some(search)) => {
-                if !parts.external_loads.is_empty() {
-                    return Err(ApiError::invalid(
-                        "external_loads",
-                        "cannot be combined with search: loads are given per slice, and the \
-                         slices change from circle to circle",
-                    ));
+        let given = [
+            self.circle.is_some(),
+            self.surface.is_some(),
+            self.search.is_some(),
+        ];
+        if given.iter().filter(|g| **g).count() > 1 {
+            return Err(ApiError::invalid(
+                if self.search.is_some() {
+                    "search"
+                } else {
+                    "surface"
+                },
+                "give one of circle, surface and search",
+            ));
+        }
+        if self.moment_centre.is_some() && self.surface.is_none() {
+            return Err(ApiError::invalid(
+                "moment_centre",
+                "is for a polyline surface only (a circle uses its centre)",
+            ));
+        }
+        let target = if let Some(circle) = &self.circle {
+            circle_target(circle, parts)?
+        } else if let Some(points) = &self.surface {
+            let line = polyline("surface", points)?;
+            let centre = self
+                .moment_centre
+                .map(|c| {
+                    finite("moment_centre", c[0])?;
+                    finite("moment_centre", c[1]).map(|_| (c[0], c[1]))
+                })
+                .transpose()?;
+            section_target(parts, SlipShape::Polyline(line), centre)?
+        } else if let Some(search) = &self.search {
+            match parts.ground {
+                Ground::Simple(embankment, soil) => {
+                    if !parts.external_loads.is_empty() {
+                        return Err(ApiError::invalid(
+                            "external_loads",
+                            "cannot be combined with search: loads are given per slice, and \
+                             the slices change from circle to circle",
+                        ));
+                    }
+                    search_from(search, embankment, soil, parts.slices, parts.seismic)?
                 }
-                search_from(search, &parts)?
+                Ground::Section(_) => {
+                    return Err(ApiError::invalid(
+                        "search",
+                        "a search over a section is not available yet: give a circle or a \
+                         surface (a search works on the simple slope)",
+                    ))
+                }
             }
-            (Some(_), Some(_)) => {
-                return Err(ApiError::invalid(
-                    "search",
-                    "give either circle or search, not both",
-                ))
-            }
-            (None, None) => {
-                return Err(ApiError::invalid(
-                    "circle",
-                    "give a circle to analyse, or search ({} for automatic bounds) for the \
-                     critical one",
-                ))
-            }
+        } else {
+            return Err(ApiError::invalid(
+                "circle",
+                "give a circle or a surface to analyse, or search ({} for automatic bounds) \
+                 for the critical circle",
+            ));
         };
         Ok(SpencerInput {
             target,
@@ -109,28 +146,39 @@ impl SpencerRequest {
         })
     }
 
-    /// Validates everything but the circle or search.
+    /// Validates everything but the slip surface.
     fn parts(&self) -> Result<Parts, ApiError> {
-        let length = |field: &str, value: f64| number(field, value, MIN_LENGTH, false, MAX_LENGTH);
-        let height = length("slope.height", self.slope.height)?;
-        let slope_length = length("slope.length", self.slope.length)?;
         let slices = count("slices", self.slices, 1, MAX_SLICES)?;
-        let soil = &self.soil;
-        number(
-            "soil.unit_weight",
-            soil.unit_weight,
-            0.0,
-            true,
-            MAX_MAGNITUDE,
-        )?;
-        number("soil.cohesion", soil.cohesion, 0.0, false, MAX_MAGNITUDE)?;
-        // The friction angle, the pore pressure ratio and the lower bounds are Soil::new's.
-        let soil = Soil::new(
-            soil.unit_weight,
-            soil.cohesion,
-            soil.friction_angle_deg,
-            soil.pore_pressure_ratio,
-        )?;
+        let ground = match (&self.section, &self.slope, &self.soil) {
+            (Some(section), None, None) => Ground::Section(section_from(section)?),
+            (Some(_), _, _) => {
+                return Err(ApiError::invalid(
+                    if self.slope.is_some() {
+                        "slope"
+                    } else {
+                        "soil"
+                    },
+                    "give either section, or slope and soil, not both",
+                ))
+            }
+            (None, Some(slope), Some(soil)) => {
+                let length =
+                    |field: &str, value: f64| number(field, value, MIN_LENGTH, false, MAX_LENGTH);
+                let height = length("slope.height", slope.height)?;
+                let slope_length = length("slope.length", slope.length)?;
+                let soil = soil_from("soil", soil, soil.pore_pressure_ratio.unwrap_or(0.0))?;
+                Ground::Simple(Embankment::new(height, slope_length)?, soil)
+            }
+            (None, None, _) => {
+                return Err(ApiError::invalid(
+                    "slope",
+                    "give the ground: slope and soil, or section",
+                ))
+            }
+            (None, Some(_), None) => {
+                return Err(ApiError::invalid("soil", "the slope needs its soil"))
+            }
+        };
         let seismic = match &self.seismic {
             Some(s) => Seismic::new(s.kh, s.kv)?,
             None => Seismic::default(),
@@ -141,6 +189,13 @@ impl SpencerRequest {
             0,
             MAX_EXTERNAL_LOADS,
         )?;
+        if matches!(ground, Ground::Section(_)) && !self.external_loads.is_empty() {
+            return Err(ApiError::invalid(
+                "external_loads",
+                "are for the simple slope's slices: on a section use section.line_loads and \
+                 section.surcharges",
+            ));
+        }
         let external_loads = self
             .external_loads
             .iter()
@@ -157,29 +212,112 @@ impl SpencerRequest {
                 })
             })
             .collect::<Result<Vec<_>, ApiError>>()?;
-        let embankment = Embankment::new(height, slope_length)?;
         let slices = NonZeroUsize::new(slices)
             .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
         Ok(Parts {
-            embankment,
+            ground,
             slices,
-            soil,
             seismic,
             external_loads,
         })
     }
 }
 
-/// The circle as given: its ranges (finite X, Y > 0, F_e ≥ 0) are `SlopeGeometry::new`'s checks.
-fn circle_from(circle: &CircleDto) -> SlipCircle {
-    SlipCircle {
-        x: circle.x,
-        y: circle.y,
-        lower_end_factor: circle.lower_end_factor,
+/// A circle in either form: relative (the simple slope only) or absolute.
+fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
+    match (circle.x, circle.y, circle.centre, circle.radius) {
+        (Some(x), Some(y), None, None) => match parts.ground {
+            Ground::Simple(embankment, soil) => {
+                let relative = SlipCircle {
+                    x,
+                    y,
+                    lower_end_factor: circle.lower_end_factor.unwrap_or(0.0),
+                };
+                Ok(Target::Surface(Analysed::Simple(SlopeProblem::new(
+                    embankment,
+                    relative,
+                    parts.slices,
+                    soil,
+                    parts.seismic,
+                    parts.external_loads,
+                )?)))
+            }
+            Ground::Section(_) => Err(ApiError::invalid(
+                "circle",
+                "on a section give the circle absolutely: centre [x, y] and radius",
+            )),
+        },
+        (None, None, Some(centre), Some(radius)) if circle.lower_end_factor.is_none() => {
+            if !parts.external_loads.is_empty() {
+                return Err(ApiError::invalid(
+                    "external_loads",
+                    "are for the relative circle's slices; with an absolute circle use a \
+                     section's line_loads",
+                ));
+            }
+            let shape = SlipShape::Circle {
+                centre: (centre[0], centre[1]),
+                radius,
+            };
+            section_target(parts, shape, None)
+        }
+        (None, None, None, None) => Err(ApiError::invalid(
+            "circle",
+            "give x and y (relative to the lower end), or centre and radius (absolute)",
+        )),
+        (None, None, Some(_), None) => Err(ApiError::invalid(
+            "circle.radius",
+            "the absolute circle needs its radius",
+        )),
+        (None, None, None, Some(_)) => Err(ApiError::invalid(
+            "circle.centre",
+            "the absolute circle needs its centre [x, y]",
+        )),
+        (Some(_), None, ..) => Err(ApiError::invalid("circle.y", "the relative circle needs y")),
+        (None, Some(_), ..) => Err(ApiError::invalid("circle.x", "the relative circle needs x")),
+        _ => Err(ApiError::invalid(
+            "circle",
+            "give either x, y (and lower_end_factor) or centre and radius, not both",
+        )),
     }
 }
 
-fn search_from(search: &SearchDto, parts: &Parts) -> Result<Target, ApiError> {
+/// An absolute circle or a polyline on a section (the simple slope becomes the section
+/// [(0, 0), (L, H)], continued level both ways, with its soil).
+fn section_target(
+    parts: Parts,
+    shape: SlipShape,
+    moment_centre: Option<(f64, f64)>,
+) -> Result<Target, ApiError> {
+    let section = match parts.ground {
+        Ground::Section(section) => section,
+        Ground::Simple(embankment, soil) => Section::new(SectionParts {
+            ground: Polyline::new(vec![(0.0, 0.0), (embankment.length(), embankment.height())])
+                .map_err(|e| ApiError::invalid("slope", e.to_string()))?,
+            layers: vec![Layer {
+                top: None,
+                soil,
+                pore_pressure_ratio: Some(soil.pore_pressure_ratio()),
+            }],
+            bedrock: None,
+            piezometric_line: None,
+            water_unit_weight: DEFAULT_WATER_UNIT_WEIGHT,
+            surcharges: Vec::new(),
+            line_loads: Vec::new(),
+            tension_crack: None,
+        })?,
+    };
+    let problem = SectionProblem::new(section, shape, parts.slices, parts.seismic, moment_centre)?;
+    Ok(Target::Surface(Analysed::Section(Box::new(problem))))
+}
+
+fn search_from(
+    search: &SearchDto,
+    embankment: Embankment,
+    soil: Soil,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+) -> Result<Target, ApiError> {
     let lower_end_factor = number(
         "search.lower_end_factor",
         search.lower_end_factor,
@@ -191,10 +329,10 @@ fn search_from(search: &SearchDto, parts: &Parts) -> Result<Target, ApiError> {
         .lower_end_factor_max
         .map(|m| number("search.lower_end_factor_max", m, 0.0, true, 100.0))
         .transpose()?;
-    let automatic = SearchGrid::automatic(&parts.embankment, lower_end_factor);
+    let automatic = SearchGrid::automatic(&embankment, lower_end_factor);
     let nx = count("search.nx", search.nx, 2, MAX_GRID)?;
     let ny = count("search.ny", search.ny, 2, MAX_GRID)?;
-    let cost = nx * ny * parts.slices.get();
+    let cost = nx * ny * slices.get();
     if cost > MAX_GRID_SLICES {
         return Err(ApiError::invalid(
             "search",
@@ -234,10 +372,10 @@ fn search_from(search: &SearchDto, parts: &Parts) -> Result<Target, ApiError> {
         ));
     }
     let problem = SearchProblem {
-        embankment: parts.embankment,
-        slices: parts.slices,
-        soil: parts.soil,
-        seismic: parts.seismic,
+        embankment,
+        slices,
+        soil,
+        seismic,
         lower_end_factor,
         lower_end_factor_max,
     };

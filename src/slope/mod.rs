@@ -5,32 +5,37 @@
 //! and [`drawing`] the picture, both from the solver's results. Slices are numbered from 1 at
 //! the lower end of the slip surface, as the thesis prints them.
 
+pub mod analysed;
 pub mod drawing;
 pub mod input;
 pub mod request;
 pub mod response;
+pub mod section;
 
 use std::time::{Duration, Instant};
 
 use axum::extract::State;
 use thrustline_solver::slope::{
     factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
-    RefinementStatus, SearchSettings, SearchStatus, SlopeProblem, SolverFailure,
+    RefinementStatus, SearchSettings, SearchStatus, Sliced, SlopeProblem, SolverFailure,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::MAX_SLICES;
 use crate::svg::Svg;
 use crate::AppState;
+use analysed::Analysed;
 use input::{SpencerInput, Target};
 use request::SpencerRequest;
 use response::{Refinement, SolvedSlope, SpencerResponse};
 
-/// Spencer's method for one slip circle.
+/// Spencer's method for one slip surface, or the critical circle.
 ///
 /// F and θ satisfying force and moment equilibrium (Spencer 1967/1973), Bishop's F, the slices
-/// and the line of thrust; give exactly one of `circle` (one circle) and `search` (the critical
-/// circle, with the F map). `converged: false` with a status when the equations have no
+/// and the line of thrust. The ground is the simple `slope` with its `soil`, or any `section`
+/// (layers, bedrock, water, loads, tension crack); give exactly one of `circle` (relative to the
+/// lower end on the simple slope, or absolute: `centre` and `radius`), `surface` (any polyline)
+/// and `search` (the critical circle, with the F map). `converged: false` with a status when the equations have no
 /// solution; a search or refinement stopped at the time limit is 422 naming the field.
 #[utoipa::path(
     post,
@@ -42,6 +47,24 @@ use response::{Refinement, SolvedSlope, SpencerResponse};
                            "circle": {"x": 9.63168, "y": 63.76416}, "slices": 100,
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
                                     "pore_pressure_ratio": 0.5}}))),
+        ("fredlund_krahn_1977" = (summary = "Fredlund & Krahn (1977) case 1, a section facing left: Spencer 2.073, Bishop 2.080 (SPEC §4.5)",
+            value = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
+                                       "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
+                           "circle": {"centre": [120, 90], "radius": 80}, "slices": 100}))),
+        ("layered_section" = (summary = "Layers, bedrock, a water table, a surcharge, a line load and a water-filled tension crack (SPEC §4.1)",
+            value = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+                                       "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+                                                  {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}],
+                                       "bedrock": [[-20, -12], [40, -12]],
+                                       "piezometric_line": [[-20, 1], [10, 3], [40, 6]], "water_unit_weight": 9.81,
+                                       "surcharges": [{"x_start": 25, "x_end": 35, "pressure": 20}],
+                                       "line_loads": [{"x": 30, "fx": 0, "fy": -50}],
+                                       "tension_crack": {"depth": 2.5, "water_depth": 2.5}},
+                           "circle": {"centre": [12, 28], "radius": 26}, "slices": 100}))),
+        ("polyline_surface" = (summary = "A non-circular slip surface through the same section as Fredlund & Krahn's",
+            value = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
+                                       "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
+                           "surface": [[40, 62], [70, 38], [130, 22], [165, 21]], "slices": 100}))),
         ("critical_circle" = (summary = "The critical circle of the same embankment (automatic search bounds)",
             value = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
@@ -79,10 +102,11 @@ pub async fn spencer_svg(
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Svg, ApiError> {
     let solved = solve(&state, request.validate()?).await?;
-    let title = if solved.search.is_some() {
-        "Spencer's method: the critical slip circle"
-    } else {
-        "Spencer's method: one slip circle"
+    let is_circle = solved.problem.circle().is_some();
+    let title = match (solved.search.is_some(), is_circle) {
+        (true, _) => "Spencer's method: the critical slip circle",
+        (false, true) => "Spencer's method: one slip circle",
+        (false, false) => "Spencer's method: one slip surface",
     };
     Ok(Svg(drawing::draw(&solved, title)))
 }
@@ -96,7 +120,7 @@ async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, Api
     let mut solved = solved?;
     solved.solve_time_ms = elapsed.as_secs_f64() * 1e3;
     tracing::info!(
-        slices = solved.problem.geometry.slices.len(),
+        slices = solved.problem.slice_count(),
         iterations = solved.solution.iterations,
         evaluations = solved.search.as_ref().map(|s| s.evaluations),
         solve_ms = solved.solve_time_ms,
@@ -117,7 +141,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         advice,
     };
     let (problem, search) = match input.target {
-        Target::Circle(problem) => (problem, None),
+        Target::Surface(problem) => (problem, None),
         Target::Search(grid, search_problem) => {
             let settings = SearchSettings {
                 time_limit: Some(time_limit),
@@ -152,7 +176,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                 search_problem.seismic,
                 Vec::new(),
             )?;
-            (problem, Some(found))
+            (Analysed::Simple(problem), Some(found))
         }
     };
     let (problem, solution, refinement) = match input.slice_tolerance {

@@ -16,21 +16,35 @@ pub struct SlopeDto {
     pub length: f64,
 }
 
-/// A trial slip circle, its centre measured from the lower end of the slip surface.
+/// A trial slip circle: either relative to the lower end of the slip surface (`x`, `y`,
+/// `lower_end_factor`; the simple `slope` only) or absolute (`centre`, `radius`; any section,
+/// and the simple `slope` in its own coordinates, toe at the origin).
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CircleDto {
-    /// Horizontal distance X from the lower end to the centre (towards the crest positive).
+    /// Relative form: horizontal distance X from the lower end to the centre (towards the crest
+    /// positive).
+    #[serde(default)]
     #[schema(examples(9.63168))]
-    pub x: f64,
-    /// Height Y of the centre above the lower end (> 0).
+    pub x: Option<f64>,
+    /// Relative form: height Y of the centre above the lower end (> 0).
+    #[serde(default)]
     #[schema(exclusive_minimum = 0.0, examples(63.76416))]
-    pub y: f64,
-    /// Lower-end position factor F_e ≥ 0: the lower end lies F_e·H in front of the toe.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
+    pub y: Option<f64>,
+    /// Relative form: lower-end position factor F_e ≥ 0: the lower end lies F_e·H in front of
+    /// the toe. Defaults to 0.
+    #[serde(default)]
     #[schema(minimum = 0.0, examples(0.0))]
-    pub lower_end_factor: f64,
+    pub lower_end_factor: Option<f64>,
+    /// Absolute form: the centre [x, y] in the section's coordinates.
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<f64>>, min_items = 2, max_items = 2, examples(json!([120.0, 90.0])))]
+    pub centre: Option<[f64; 2]>,
+    /// Absolute form: the radius, 0 < R ≤ 1e9. The sliding mass lies above the arc between
+    /// the two crossings of the ground that bound the deepest part of the arc.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e9, examples(80.0))]
+    pub radius: Option<f64>,
 }
 
 /// Soil properties, the same in every slice.
@@ -46,11 +60,12 @@ pub struct SoilDto {
     /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9.
     #[schema(minimum = 0.0, maximum = 89.9, examples(40.0))]
     pub friction_angle_deg: f64,
-    /// Pore pressure ratio r_u = u/(γh), 0 ≤ r_u ≤ 1.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
+    /// Pore pressure ratio r_u = u/σ_v (σ_v = W/b, γh in one soil), 0 ≤ r_u ≤ 1. Defaults to
+    /// 0 for `soil`; in a section's layer, when given it sets the pore pressure at bases in
+    /// this soil in place of the piezometric line.
+    #[serde(default)]
     #[schema(minimum = 0.0, maximum = 1.0, examples(0.5))]
-    pub pore_pressure_ratio: f64,
+    pub pore_pressure_ratio: Option<f64>,
 }
 
 /// Pseudo-static seismic coefficients, applied at the slice centroids.
@@ -101,11 +116,26 @@ pub struct ExternalLoadDto {
     "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}
 })))]
 pub struct SpencerRequest {
-    /// The embankment.
-    pub slope: SlopeDto,
-    /// The slip circle to analyse (give this or `search`).
+    /// The simple embankment (with `soil`); or give `section`.
+    #[serde(default)]
+    pub slope: Option<SlopeDto>,
+    /// Any cross-section: ground, layers, water, bedrock, loads, tension crack (instead of
+    /// `slope` and `soil`).
+    #[serde(default)]
+    pub section: Option<SectionDto>,
+    /// The slip circle to analyse (give this, `surface` or `search`).
     #[serde(default)]
     pub circle: Option<CircleDto>,
+    /// Any slip surface: a polyline [[x, y], ...] running left to right, its first and last
+    /// points at or above the ground (the surface starts and ends where it crosses the ground).
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 10000, examples(json!([[40.0, 62.0], [70.0, 38.0], [130.0, 22.0], [165.0, 21.0]])))]
+    pub surface: Option<Vec<[f64; 2]>>,
+    /// The centre [x, y] about which moment-only methods (Bishop's) take moments for a `surface`;
+    /// without it they are not reported for a surface (a circle uses its centre).
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<f64>>, min_items = 2, max_items = 2)]
+    pub moment_centre: Option<[f64; 2]>,
     /// Search for the critical circle instead (`{}` for automatic bounds).
     #[serde(default)]
     pub search: Option<SearchDto>,
@@ -127,8 +157,9 @@ pub struct SpencerRequest {
     #[schema(nullable)]
     #[schema(minimum = 1, maximum = 10000, default = 100, examples(100))]
     pub slices: usize,
-    /// The soil.
-    pub soil: SoilDto,
+    /// The soil of the simple `slope`.
+    #[serde(default)]
+    pub soil: Option<SoilDto>,
     /// Optional pseudo-static seismic load.
     #[serde(default)]
     pub seismic: Option<SeismicDto>,
@@ -185,4 +216,114 @@ pub struct SearchDto {
 
 fn default_grid() -> usize {
     21
+}
+
+/// A point [x, y] of a polyline, in the section's coordinates (y up).
+pub type Coordinates = [f64; 2];
+
+/// A cross-section (SPEC §4.1). Polylines run left to right with strictly increasing x and are
+/// continued horizontally beyond their ends; the section may face either way.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SectionDto {
+    /// The ground surface, 1 to 1000 points.
+    #[schema(value_type = Vec<Vec<f64>>, min_items = 1, max_items = 1000, examples(json!([[-20.0, 0.0], [0.0, 0.0], [20.0, 10.0], [40.0, 10.0]])))]
+    pub ground: Vec<Coordinates>,
+    /// Soil layers from the top down (1 to 50): the soil at a point is that of the last layer
+    /// whose top is at or above it. The first layer's top is the ground (`null`).
+    #[schema(min_items = 1, max_items = 50)]
+    pub layers: Vec<LayerDto>,
+    /// A hard stratum: slip surfaces do not pass below it (a circle that would, follows it).
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    pub bedrock: Option<Vec<Coordinates>>,
+    /// The piezometric line: u = γ_w·(y_line − y) below it; where it lies above the ground the
+    /// water is ponded and presses on the ground.
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    pub piezometric_line: Option<Vec<Coordinates>>,
+    /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
+    /// (kN/m³); give 62.4 for pcf.
+    #[serde(default)]
+    #[schema(
+        exclusive_minimum = 0.0,
+        maximum = 1e12,
+        default = 9.81,
+        examples(9.81)
+    )]
+    pub water_unit_weight: Option<f64>,
+    /// Vertical pressures on the ground.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(max_items = 1000)]
+    pub surcharges: Vec<SurchargeDto>,
+    /// Forces on ground points.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(max_items = 1000)]
+    pub line_loads: Vec<LineLoadDto>,
+    /// A tension crack at the upper end of the slip surface.
+    #[serde(default)]
+    pub tension_crack: Option<TensionCrackDto>,
+}
+
+/// One soil layer.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LayerDto {
+    /// The top of the layer; `null` for the first (the ground), required for the others.
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    pub top: Option<Vec<Coordinates>>,
+    /// The layer's soil.
+    pub soil: SoilDto,
+}
+
+/// A vertical pressure on the ground over [x_start, x_end], downward.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SurchargeDto {
+    /// Left end.
+    pub x_start: f64,
+    /// Right end (> x_start).
+    pub x_end: f64,
+    /// Pressure at x_start, 0 ≤ p ≤ 1e12.
+    #[schema(minimum = 0.0, maximum = 1e12)]
+    pub pressure: f64,
+    /// Pressure at x_end (linear in between). Defaults to `pressure`.
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 1e12)]
+    pub pressure_end: Option<f64>,
+}
+
+/// A force on the ground point above x.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LineLoadDto {
+    /// Where it acts.
+    pub x: f64,
+    /// Horizontal component, positive towards +x. Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub fx: f64,
+    /// Vertical component, positive upwards (a weight is negative). Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub fy: f64,
+}
+
+/// A tension crack: where the slip surface rises through the ground moved down by `depth`, it
+/// stops and a vertical crack rises to the ground.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TensionCrackDto {
+    /// Depth below the ground, > 0.
+    #[schema(exclusive_minimum = 0.0)]
+    pub depth: f64,
+    /// Water in the crack, measured up from its bottom, 0 ≤ z_w ≤ depth: ½·γ_w·z_w² pushes the
+    /// mass towards the toe at z_w/3 above the bottom. Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(minimum = 0.0)]
+    pub water_depth: f64,
 }

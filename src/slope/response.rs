@@ -3,8 +3,10 @@
 
 use serde::Serialize;
 use thrustline_solver::slope::{
-    FactorCurves, RefinementStep, SearchSolution, SlopeProblem, SpencerSolution, SpencerStatus,
+    FactorCurves, RefinementStep, SearchSolution, Sliced, SpencerSolution, SpencerStatus,
 };
+
+use super::analysed::Analysed;
 
 use crate::limits::MAX_SLICES;
 use utoipa::ToSchema;
@@ -45,21 +47,24 @@ pub struct CurvesDto {
 /// A point in the plane of the section.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct PointDto {
-    /// Horizontal coordinate (toe at 0, towards the crest positive).
+    /// Horizontal coordinate (the simple slope: toe at 0, towards the crest positive; a
+    /// section: its own coordinates).
     pub x: f64,
-    /// Vertical coordinate (toe at 0, up positive).
+    /// Vertical coordinate (up positive).
     pub y: f64,
 }
 
 /// Geometry and forces of one slice at the solution.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct SliceDto {
-    /// Slice number, 1 at the lower end.
+    /// Slice number, 1 at the lower (toe) end of the slip surface.
     pub slice: usize,
-    /// x of the toe-side vertical.
+    /// x of the slice's left side (the smaller x).
     pub x_left: f64,
-    /// x of the crest-side vertical.
+    /// x of the slice's right side.
     pub x_right: f64,
+    /// The soil at the base: index of the section's layer (0-based; 0 for the simple slope).
+    pub layer: usize,
     /// Inclination α of the base chord in degrees, positive where it rises towards the crest.
     pub base_inclination_deg: f64,
     /// Length of the base chord.
@@ -68,7 +73,8 @@ pub struct SliceDto {
     pub height: f64,
     /// Weight W.
     pub weight: f64,
-    /// Pore pressure u = r_u·γ·h at the base.
+    /// Pore pressure u at the base middle (r_u·σ_v, or γ_w times the head of the piezometric
+    /// line).
     pub pore_pressure: f64,
     /// Total normal force on the base.
     pub normal_force: f64,
@@ -76,6 +82,14 @@ pub struct SliceDto {
     pub effective_normal_force: f64,
     /// Mobilised shear force on the base.
     pub shear_force: f64,
+    /// Total normal stress σ = N/l on the base.
+    pub normal_stress: f64,
+    /// Effective normal stress σ' = σ − u on the base.
+    pub effective_normal_stress: f64,
+    /// Available shear strength c' + σ'·tan φ' of the base.
+    pub available_shear_strength: f64,
+    /// Mobilised shear stress τ = (c' + σ'·tan φ')/F on the base.
+    pub mobilised_shear_strength: f64,
     /// Resultant Q of the two inter-slice forces, positive along (cos θ, sin θ).
     pub interslice_resultant: f64,
     /// Inter-slice force on the crest-side boundary (compression positive; 0 at the exit).
@@ -152,11 +166,16 @@ pub struct SpencerResponse {
     #[schema(examples(1.0397))]
     #[schema(required = true)]
     pub bishop_factor_of_safety: Option<f64>,
-    /// Radius of the slip circle.
+    /// Radius of the slip circle; null for a polyline surface.
     #[schema(examples(64.4875))]
-    pub radius: f64,
-    /// The slip circle on the embankment.
-    pub circle: CircleOutDto,
+    #[schema(required = true)]
+    pub radius: Option<f64>,
+    /// The slip circle on the ground; null for a polyline surface.
+    #[schema(required = true)]
+    pub circle: Option<CircleOutDto>,
+    /// The slip surface as cut: the slice bases' end points, left to right (a tension crack
+    /// adds the top of its vertical face).
+    pub surface: Vec<PointDto>,
     /// Number of slices used.
     pub slice_count: usize,
     /// Per-slice geometry and forces (empty when not converged).
@@ -212,8 +231,8 @@ pub struct Refinement {
 /// for.
 #[derive(Debug, Clone)]
 pub struct SolvedSlope {
-    /// The circle analysed, at the slice count answered.
-    pub problem: SlopeProblem,
+    /// The slip surface analysed, at the slice count answered.
+    pub problem: Analysed,
     /// Its solution.
     pub solution: SpencerSolution,
     /// With `search`: how the search went.
@@ -230,7 +249,6 @@ impl SpencerResponse {
     /// The answer to a solved request.
     pub fn new(solved: &SolvedSlope) -> Self {
         let (problem, solution) = (&solved.problem, &solved.solution);
-        let g = &problem.geometry;
         let (converged, status, has_forces) = match solution.status {
             SpencerStatus::Converged => (true, SpencerStatusDto::Converged, true),
             SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
@@ -299,55 +317,72 @@ impl SpencerResponse {
                     .to_owned(),
             );
         }
+        let model = problem.model();
+        let to_x = |x: f64| problem.request_x(x);
         let slices = if has_forces {
-            g.slices
+            model
+                .slices
                 .iter()
                 .zip(&solution.slice_forces)
                 .enumerate()
-                .map(|(i, (s, f))| SliceDto {
-                    slice: i + 1,
-                    x_left: s.x_left,
-                    x_right: s.x_right,
-                    base_inclination_deg: s.base_inclination_rad.to_degrees(),
-                    base_length: s.base_length,
-                    height: s.height_middle,
-                    weight: f.weight,
-                    pore_pressure: f.pore_pressure,
-                    normal_force: f.normal_force,
-                    effective_normal_force: f.effective_normal_force,
-                    shear_force: f.shear_force,
-                    interslice_resultant: f.interslice_resultant,
-                    interslice_force: f.interslice_force_right,
-                    m_alpha: f.m_alpha,
+                .map(|(i, (s, f))| {
+                    let (a, b) = (to_x(s.x_left), to_x(s.x_right));
+                    let normal_stress = f.normal_force / s.base_length;
+                    let effective_normal_stress = f.effective_normal_force / s.base_length;
+                    let available = s.cohesion + effective_normal_stress * s.tan_phi;
+                    SliceDto {
+                        slice: i + 1,
+                        x_left: a.min(b),
+                        x_right: a.max(b),
+                        layer: s.layer,
+                        base_inclination_deg: s.base_inclination_rad.to_degrees(),
+                        base_length: s.base_length,
+                        height: s.height_middle,
+                        weight: f.weight,
+                        pore_pressure: f.pore_pressure,
+                        normal_force: f.normal_force,
+                        effective_normal_force: f.effective_normal_force,
+                        shear_force: f.shear_force,
+                        normal_stress,
+                        effective_normal_stress,
+                        available_shear_strength: available,
+                        mobilised_shear_strength: f.shear_force / s.base_length,
+                        interslice_resultant: f.interslice_resultant,
+                        interslice_force: f.interslice_force_right,
+                        m_alpha: f.m_alpha,
+                    }
                 })
                 .collect()
         } else {
             Vec::new()
         };
         let point = |(x, y): (f64, f64)| PointDto { x, y };
+        let circle = problem.circle().map(|c| CircleOutDto {
+            x: c.centre.0 - c.lower_end.0,
+            y: c.centre.1 - c.lower_end.1,
+            radius: c.radius,
+            centre: point(c.centre),
+            lower_end: point(c.lower_end),
+            upper_exit: point(c.upper_exit),
+        });
+        let surface = problem.surface();
         SpencerResponse {
             converged,
             status,
             factor_of_safety: solution.factor_of_safety,
             theta_deg: solution.theta_rad.map(f64::to_degrees),
             bishop_factor_of_safety: solution.bishop_factor_of_safety,
-            radius: g.radius,
-            circle: CircleOutDto {
-                x: g.centre.0 - g.lower_end.0,
-                y: g.centre.1 - g.lower_end.1,
-                radius: g.radius,
-                centre: point(g.centre),
-                lower_end: point(g.lower_end),
-                upper_exit: point(g.upper_exit),
-            },
-            slice_count: g.slices.len(),
+            radius: circle.as_ref().map(|c| c.radius),
+            circle,
+            surface: surface.into_iter().map(point).collect(),
+            slice_count: model.slices.len(),
             slices,
             thrust_line: solution
                 .thrust_line
                 .iter()
                 .map(|t| BoundaryThrustPointDto {
                     boundary: t.boundary,
-                    x: t.x,
+                    x: to_x(t.x),
                     y: t.y,
                     force: t.force,
                     inside_slice: t.is_inside_slice,

@@ -117,7 +117,10 @@ pub fn with(mut body: Value, path: &str, value: Value) -> Value {
     let mut target = &mut body;
     let parts: Vec<&str> = path.split('.').collect();
     for part in &parts[..parts.len() - 1] {
-        target = &mut target[*part];
+        target = match part.parse::<usize>() {
+            Ok(index) if target.is_array() => &mut target[index],
+            _ => &mut target[*part],
+        };
     }
     target[parts[parts.len() - 1]] = value;
     body

@@ -78,6 +78,21 @@ impl Soil {
     pub fn unit_weight(&self) -> f64 {
         self.unit_weight
     }
+
+    /// Effective cohesion c'.
+    pub fn cohesion(&self) -> f64 {
+        self.cohesion
+    }
+
+    /// Effective friction angle φ' in degrees.
+    pub fn friction_angle_deg(&self) -> f64 {
+        self.friction_angle_rad.to_degrees()
+    }
+
+    /// Pore pressure ratio r_u.
+    pub fn pore_pressure_ratio(&self) -> f64 {
+        self.pore_pressure_ratio
+    }
 }
 
 /// Pseudo-static seismic coefficients: k_h·W towards the toe and k_v·W downwards, at the slice

@@ -1,0 +1,111 @@
+//! The slip surface a request analyses: on the simple embankment (the thesis' relative circle)
+//! or on a section; what the response and the drawing read of it, in the request's coordinates.
+
+use std::borrow::Cow;
+use std::num::NonZeroUsize;
+
+use thrustline_solver::slope::section::{SectionProblem, SlipShape};
+use thrustline_solver::slope::{SliceModel, Sliced, SlopeError, SlopeProblem};
+
+/// One slip surface on the simple embankment (the thesis' relative circle) or on a section.
+#[derive(Debug, Clone)]
+pub enum Analysed {
+    /// The simple form of SPEC §2 with a relative circle.
+    Simple(SlopeProblem),
+    /// A section (or the simple slope as one) with an absolute circle or a polyline.
+    Section(Box<SectionProblem>),
+}
+
+/// A circle placed on the ground, in the request's coordinates.
+#[derive(Debug, Clone, Copy)]
+pub struct PlacedCircle {
+    /// The centre.
+    pub centre: (f64, f64),
+    /// The radius.
+    pub radius: f64,
+    /// The lower (toe) end of the slip surface.
+    pub lower_end: (f64, f64),
+    /// The upper (crest) end of the slip surface.
+    pub upper_exit: (f64, f64),
+}
+
+impl Analysed {
+    /// A solver-frame x in the request's coordinates.
+    pub fn request_x(&self, x: f64) -> f64 {
+        match self {
+            Self::Simple(_) => x,
+            Self::Section(p) => p.to_section_x(x),
+        }
+    }
+
+    /// The circle, when the surface is one.
+    pub fn circle(&self) -> Option<PlacedCircle> {
+        match self {
+            Self::Simple(p) => {
+                let g = &p.geometry;
+                Some(PlacedCircle {
+                    centre: g.centre,
+                    radius: g.radius,
+                    lower_end: g.lower_end,
+                    upper_exit: g.upper_exit,
+                })
+            }
+            Self::Section(p) => match p.shape() {
+                SlipShape::Circle { centre, radius } => {
+                    let (lower_end, upper_exit) = p.ends();
+                    Some(PlacedCircle {
+                        centre: *centre,
+                        radius: *radius,
+                        lower_end,
+                        upper_exit,
+                    })
+                }
+                SlipShape::Polyline(_) => None,
+            },
+        }
+    }
+
+    /// The slip surface as cut, left to right (the slice bases' end points).
+    pub fn surface(&self) -> Vec<(f64, f64)> {
+        match self {
+            Self::Simple(p) => {
+                let g = &p.geometry;
+                std::iter::once(g.lower_end)
+                    .chain(g.slices.iter().map(|s| (s.x_right, s.base_right_y)))
+                    .collect()
+            }
+            Self::Section(p) => p.surface(),
+        }
+    }
+
+    /// Ground level above a solver-frame x.
+    pub fn ground_y(&self, x: f64) -> f64 {
+        match self {
+            Self::Simple(p) => p.geometry.embankment.ground(x),
+            Self::Section(p) => p.section().ground().y_at(self.request_x(x)),
+        }
+    }
+}
+
+impl Sliced for Analysed {
+    fn model(&self) -> Cow<'_, SliceModel> {
+        match self {
+            Self::Simple(p) => Cow::Owned(p.model()),
+            Self::Section(p) => Cow::Borrowed(p.model()),
+        }
+    }
+
+    fn slice_count(&self) -> usize {
+        match self {
+            Self::Simple(p) => p.geometry.slices.len(),
+            Self::Section(p) => Sliced::slice_count(p.as_ref()),
+        }
+    }
+
+    fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
+        Ok(match self {
+            Self::Simple(p) => Self::Simple(p.with_slices(slices)?),
+            Self::Section(p) => Self::Section(Box::new(p.with_slices(slices)?)),
+        })
+    }
+}

@@ -1,0 +1,185 @@
+//! The validation of a `section` (SPEC §4.1) into the solver's [`Section`], and of a `surface`:
+//! every point and number checked, each failure naming its field path.
+
+use thrustline_solver::slope::section::{
+    Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
+};
+use thrustline_solver::slope::Soil;
+
+use super::request::{Coordinates, SectionDto, SoilDto};
+use crate::error::ApiError;
+use crate::limits::{
+    DEFAULT_WATER_UNIT_WEIGHT, MAX_LAYERS, MAX_MAGNITUDE, MAX_POLYLINE_POINTS, MAX_SECTION_LOADS,
+};
+use crate::validation::{count, number};
+
+/// A polyline from its points, at `field`.
+pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiError> {
+    count(field, points.len(), 1, MAX_POLYLINE_POINTS).map_err(|_| {
+        ApiError::invalid(
+            field,
+            format!(
+                "{} points is out of range: allowed is 1 to {MAX_POLYLINE_POINTS} points [x, y]",
+                points.len()
+            ),
+        )
+    })?;
+    Polyline::new(points.iter().map(|p| (p[0], p[1])).collect()).map_err(|e| {
+        use thrustline_solver::slope::section::PolylineError;
+        let at = match e {
+            PolylineError::Empty => field.to_owned(),
+            PolylineError::NotFinite { index } | PolylineError::NotIncreasing { index } => {
+                format!("{field}[{index}]")
+            }
+        };
+        ApiError::invalid(at, e.to_string())
+    })
+}
+
+/// A soil at `prefix` (`soil` or `section.layers[i].soil`); r_u is the caller's.
+pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
+    let field = |name: &str| format!("{prefix}.{name}");
+    number(
+        &field("unit_weight"),
+        dto.unit_weight,
+        0.0,
+        true,
+        MAX_MAGNITUDE,
+    )?;
+    number(&field("cohesion"), dto.cohesion, 0.0, false, MAX_MAGNITUDE)?;
+    // The friction angle, r_u and a soil without strength are Soil::new's checks; its errors
+    // name `soil.*`, re-rooted here at the prefix.
+    Soil::new(dto.unit_weight, dto.cohesion, dto.friction_angle_deg, ratio).map_err(|e| {
+        match ApiError::from(e) {
+            ApiError::Invalid { field, detail } => ApiError::Invalid {
+                field: field.replacen("soil", prefix, 1),
+                detail,
+            },
+            other => other,
+        }
+    })
+}
+
+/// The section as the solver takes it.
+pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
+    let ground = polyline("section.ground", &dto.ground)?;
+    count("section.layers", dto.layers.len(), 1, MAX_LAYERS)?;
+    let layers = dto
+        .layers
+        .iter()
+        .enumerate()
+        .map(|(i, layer)| {
+            let prefix = format!("section.layers[{i}]");
+            let ratio = layer
+                .soil
+                .pore_pressure_ratio
+                .map(|r| {
+                    number(
+                        &format!("{prefix}.soil.pore_pressure_ratio"),
+                        r,
+                        0.0,
+                        false,
+                        1.0,
+                    )
+                })
+                .transpose()?;
+            Ok(Layer {
+                top: layer
+                    .top
+                    .as_ref()
+                    .map(|t| polyline(&format!("{prefix}.top"), t))
+                    .transpose()?,
+                soil: soil(&format!("{prefix}.soil"), &layer.soil, 0.0)?,
+                pore_pressure_ratio: ratio,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    let line = |field: &str, points: &Option<Vec<Coordinates>>| {
+        points.as_ref().map(|p| polyline(field, p)).transpose()
+    };
+    let water_unit_weight = number(
+        "section.water_unit_weight",
+        dto.water_unit_weight.unwrap_or(DEFAULT_WATER_UNIT_WEIGHT),
+        0.0,
+        true,
+        MAX_MAGNITUDE,
+    )?;
+    count(
+        "section.surcharges",
+        dto.surcharges.len(),
+        0,
+        MAX_SECTION_LOADS,
+    )?;
+    count(
+        "section.line_loads",
+        dto.line_loads.len(),
+        0,
+        MAX_SECTION_LOADS,
+    )?;
+    let surcharges = dto
+        .surcharges
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let field = |name: &str| format!("section.surcharges[{i}].{name}");
+            let x_start = number(&field("x_start"), s.x_start, -1e9, false, 1e9)?;
+            let x_end = number(&field("x_end"), s.x_end, -1e9, false, 1e9)?;
+            if x_end <= x_start {
+                return Err(ApiError::invalid(
+                    field("x_end"),
+                    "must be greater than x_start",
+                ));
+            }
+            let pressure = number(&field("pressure"), s.pressure, 0.0, false, MAX_MAGNITUDE)?;
+            let pressure_end = s
+                .pressure_end
+                .map(|p| number(&field("pressure_end"), p, 0.0, false, MAX_MAGNITUDE))
+                .transpose()?
+                .unwrap_or(pressure);
+            Ok(Surcharge {
+                x_start,
+                x_end,
+                pressure,
+                pressure_end,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    let line_loads = dto
+        .line_loads
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let field = |name: &str| format!("section.line_loads[{i}].{name}");
+            Ok(LineLoad {
+                x: number(&field("x"), l.x, -1e9, false, 1e9)?,
+                fx: number(&field("fx"), l.fx, -MAX_MAGNITUDE, false, MAX_MAGNITUDE)?,
+                fy: number(&field("fy"), l.fy, -MAX_MAGNITUDE, false, MAX_MAGNITUDE)?,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    let tension_crack = dto
+        .tension_crack
+        .as_ref()
+        .map(|c| {
+            let depth = number("section.tension_crack.depth", c.depth, 0.0, true, 1e9)?;
+            let water_depth = number(
+                "section.tension_crack.water_depth",
+                c.water_depth,
+                0.0,
+                false,
+                depth,
+            )?;
+            Ok::<_, ApiError>(TensionCrack { depth, water_depth })
+        })
+        .transpose()?;
+    Ok(Section::new(SectionParts {
+        ground,
+        layers,
+        bedrock: line("section.bedrock", &dto.bedrock)?,
+        piezometric_line: line("section.piezometric_line", &dto.piezometric_line)?,
+        water_unit_weight,
+        surcharges,
+        line_loads,
+        tension_crack,
+    })?)
+}

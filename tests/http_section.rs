@@ -1,0 +1,210 @@
+//! `POST /slope/spencer` with a `section`, an absolute circle or a polyline surface (SPEC §4).
+
+mod common;
+
+use common::{assert_problem, spencer_example, with, Server};
+use serde_json::{json, Value};
+
+fn fredlund_krahn() -> Value {
+    json!({
+        "section": {
+            "ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
+            "layers": [{"top": null,
+                        "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]
+        },
+        "circle": {"centre": [120, 90], "radius": 80},
+        "slices": 200
+    })
+}
+
+#[tokio::test]
+async fn fredlund_krahn_case_1_over_http() {
+    // SPEC §4.5: Spencer 2.073 (their slices; ±0.002), Bishop for this circle 2.07563 by an
+    // independent fine integration (see the solver's section tests).
+    let server = Server::start().await;
+    let (status, _, body) = server.post("/slope/spencer", &fredlund_krahn()).await;
+    assert_eq!(status, 200, "{body}");
+    let f = body["factor_of_safety"].as_f64().unwrap();
+    assert!((f - 2.073).abs() < 2e-3, "F = {f}");
+    let bishop = body["bishop_factor_of_safety"].as_f64().unwrap();
+    assert!((bishop - 2.07563).abs() < 2e-4, "Bishop {bishop}");
+    assert_eq!(body["radius"], 80.0);
+    assert_eq!(body["circle"]["centre"]["x"], 120.0);
+    // The slope faces left: the lower end is on the right, the slices run right to left.
+    let lower = body["circle"]["lower_end"]["x"].as_f64().unwrap();
+    assert!((lower - 158.7298).abs() < 1e-3, "lower end x {lower}");
+    let slices = body["slices"].as_array().unwrap();
+    assert!(slices[0]["x_left"].as_f64().unwrap() > slices[1]["x_left"].as_f64().unwrap());
+    let surface = body["surface"].as_array().unwrap();
+    assert!(surface
+        .windows(2)
+        .all(|w| w[1]["x"].as_f64() > w[0]["x"].as_f64()));
+    // Stresses are the forces over the base length, and the mobilised strength is the
+    // available one over F.
+    for s in slices {
+        let l = s["base_length"].as_f64().unwrap();
+        let sigma = s["normal_stress"].as_f64().unwrap();
+        let n = s["normal_force"].as_f64().unwrap();
+        assert!(
+            (sigma * l - n).abs() < 1e-9 * (1.0 + n.abs()),
+            "σ·l {} vs N {n}",
+            sigma * l
+        );
+        let available = s["available_shear_strength"].as_f64().unwrap();
+        let mobilised = s["mobilised_shear_strength"].as_f64().unwrap();
+        assert!((available / f - mobilised).abs() < 1e-9 * available);
+    }
+}
+
+#[tokio::test]
+async fn the_simple_slope_takes_an_absolute_circle_and_a_surface() {
+    // Spencer's example circle given absolutely on the simple slope: the section form cuts at
+    // the toe and crest as well, so F agrees with the relative form to the slicing (≤ 5e-5
+    // at N = 1000, both near the converged 1.0695).
+    let server = Server::start().await;
+    let mut body = spencer_example();
+    body["circle"] = json!({"centre": [9.63168, 63.76416], "radius": 9.63168f64.hypot(63.76416)});
+    body["slices"] = json!(1000);
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let f = answer["factor_of_safety"].as_f64().unwrap();
+    assert!((f - 1.0695).abs() < 2e-4, "F = {f}");
+
+    body["circle"] = Value::Null;
+    body["surface"] = json!([[-5, 0], [10, -5], [50, 10], [70, 31]]);
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    assert!(answer["circle"].is_null() && answer["radius"].is_null());
+    assert!(answer["bishop_factor_of_safety"].is_null());
+    assert!(answer["factor_of_safety"].as_f64().unwrap() > 0.5);
+}
+
+#[tokio::test]
+async fn section_errors_name_their_fields() {
+    let server = Server::start().await;
+    let cases: Vec<(Value, &str)> = vec![
+        (
+            with(
+                fredlund_krahn(),
+                "section.ground",
+                json!([[0, 60], [60, 60], [60, 20]]),
+            ),
+            "section.ground[2]",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "section.layers.0.soil.friction_angle_deg",
+                json!(95),
+            ),
+            "section.layers[0].soil.friction_angle_deg",
+        ),
+        (
+            with(fredlund_krahn(), "section.layers.0.top", json!([[0, 1]])),
+            "section.layers[0].top",
+        ),
+        (
+            with(fredlund_krahn(), "section.water_unit_weight", json!(-1)),
+            "section.water_unit_weight",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "section.tension_crack",
+                json!({"depth": 2, "water_depth": 3}),
+            ),
+            "section.tension_crack.water_depth",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "section.surcharges",
+                json!([{"x_start": 5, "x_end": 1, "pressure": 1}]),
+            ),
+            "section.surcharges[0].x_end",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "circle",
+                json!({"centre": [120, 200], "radius": 80}),
+            ),
+            "circle.centre",
+        ),
+        (
+            with(fredlund_krahn(), "circle", json!({"centre": [120, 90]})),
+            "circle.radius",
+        ),
+        (
+            with(fredlund_krahn(), "circle", json!({"x": 1, "y": 50})),
+            "circle",
+        ),
+        (
+            with(fredlund_krahn(), "slope", json!({"height": 1, "length": 1})),
+            "slope",
+        ),
+        (
+            with(
+                with(fredlund_krahn(), "circle", Value::Null),
+                "surface",
+                json!([[10, 50], [100, 10]]),
+            ),
+            "surface",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "external_loads",
+                json!([{"slice": 1, "fy": -1}]),
+            ),
+            "external_loads",
+        ),
+    ];
+    for (body, field) in cases {
+        let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+        assert_eq!(answer["field"], field, "{answer}");
+    }
+}
+
+#[tokio::test]
+async fn a_layered_section_with_water_loads_and_a_crack_is_drawn() {
+    let server = Server::start().await;
+    let body = json!({ "section": {
+        "ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+        "layers": [
+          {"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+          {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}],
+        "bedrock": [[-20, -12], [40, -12]],
+        "piezometric_line": [[-20, 1], [10, 3], [40, 6]],
+        "surcharges": [{"x_start": 25, "x_end": 35, "pressure": 20}],
+        "line_loads": [{"x": 30, "fx": 0, "fy": -50}],
+        "tension_crack": {"depth": 2.5, "water_depth": 2.5} },
+      "circle": {"centre": [12, 28], "radius": 26},
+      "slices": 100 });
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["converged"], true);
+    // The surface ends with the crack's vertical face: 2.5 deep at the crest (y = 10).
+    let surface = answer["surface"].as_array().unwrap();
+    let (a, b) = (&surface[surface.len() - 2], &surface[surface.len() - 1]);
+    assert_eq!(a["x"], b["x"]);
+    assert!((a["y"].as_f64().unwrap() - 7.5).abs() < 1e-9 && b["y"] == 10.0);
+    let response = server
+        .client
+        .post(format!("{}/slope/spencer/svg", server.base))
+        .json(&body)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 200);
+    let svg = response.text().await.unwrap();
+    for label in [
+        "top of layer 2",
+        "bedrock",
+        "piezometric line",
+        "one slip circle",
+    ] {
+        assert!(svg.contains(label), "no {label}");
+    }
+}
