@@ -36,15 +36,29 @@ fn circle_ends(
         .collect();
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    // Of the pieces of the lower half that lie below the ground, the one reaching deepest.
+    // Of the pieces of the lower half that lie below the ground, the one where the arc lies
+    // deepest below the ground (a sliver where the arc grazes the ground is not it). Ground
+    // minus arc is concave on each straight piece of the ground: sampled at the ground's
+    // vertices and 32 points per piece, its largest value is found to well within a slice.
+    let depth = |x: f64| ground.y_at(x) - arc(x);
     let deepest = cuts
         .windows(2)
         .filter(|w| {
             let m = 0.5 * (w[0] + w[1]);
-            w[1] > w[0] && ground.y_at(m) > arc(m)
+            w[1] > w[0] && depth(m) > 0.0
         })
-        .map(|w| (w[0], w[1], arc(xc.clamp(w[0], w[1]))))
-        .min_by(|a, b| a.2.total_cmp(&b.2));
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let samples = (0..=32).map(|k| a + (b - a) * f64::from(k) / 32.0);
+            let vertices = ground.xs().filter(|&x| x > a && x < b);
+            let deepest = samples
+                .chain(vertices)
+                .chain(std::iter::once(xc.clamp(a, b)))
+                .map(depth)
+                .fold(f64::NEG_INFINITY, f64::max);
+            (a, b, deepest)
+        })
+        .max_by(|a, b| a.2.total_cmp(&b.2));
     let Some((entry, exit, _)) = deepest else {
         return Err(SlopeError::NoSlipMass {
             parameter: SlopeParameter::CircleCentre,

@@ -10,6 +10,7 @@
 mod cut;
 mod ends;
 pub mod polyline;
+pub mod search;
 #[cfg(test)]
 mod tests;
 
@@ -325,6 +326,55 @@ impl SlipShape {
     }
 }
 
+/// Places `shape` on `section` and cuts it, in the solver's frame: mirrored (with `mirror`, the
+/// section seen from behind, when the caller has it) when the crest lies to the left.
+fn place(
+    section: &Section,
+    mirror: Option<&Section>,
+    shape: &SlipShape,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    moment_centre: Option<(f64, f64)>,
+) -> Result<cut::Cut, SlopeError> {
+    let (entry, exit) = ends::ends(&section.ground, shape)?;
+    let ground = &section.ground;
+    let rises_left = ground.y_at(entry) > ground.y_at(exit)
+        || (ground.y_at(entry) == ground.y_at(exit) && {
+            let p = ground.points();
+            p[0].1 > p[p.len() - 1].1
+        });
+    if rises_left {
+        let owned;
+        let mirrored = match mirror {
+            Some(m) => m,
+            None => {
+                owned = section.mirrored();
+                &owned
+            }
+        };
+        let centre = moment_centre.map(|c| (-c.0, c.1));
+        cut::Cut::new(
+            mirrored,
+            &shape.mirrored(),
+            (-exit, -entry),
+            slices,
+            seismic,
+            centre,
+            true,
+        )
+    } else {
+        cut::Cut::new(
+            section,
+            shape,
+            (entry, exit),
+            slices,
+            seismic,
+            moment_centre,
+            false,
+        )
+    }
+}
+
 /// One slip surface on one section, cut into slices, ready to solve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SectionProblem {
@@ -379,35 +429,7 @@ impl SectionProblem {
                 )?;
             }
         }
-        let (entry, exit) = ends::ends(&section.ground, &shape)?;
-        let rises_left = section.ground.y_at(entry) > section.ground.y_at(exit)
-            || (section.ground.y_at(entry) == section.ground.y_at(exit) && {
-                let p = section.ground.points();
-                p[0].1 > p[p.len() - 1].1
-            });
-        let cut = if rises_left {
-            let (section, shape) = (section.mirrored(), shape.mirrored());
-            let centre = moment_centre.map(|c| (-c.0, c.1));
-            cut::Cut::new(
-                &section,
-                &shape,
-                (-exit, -entry),
-                slices,
-                seismic,
-                centre,
-                true,
-            )?
-        } else {
-            cut::Cut::new(
-                &section,
-                &shape,
-                (entry, exit),
-                slices,
-                seismic,
-                moment_centre,
-                false,
-            )?
-        };
+        let cut = place(&section, None, &shape, slices, seismic, moment_centre)?;
         Ok(Self {
             section,
             shape,

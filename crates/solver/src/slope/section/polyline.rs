@@ -115,6 +115,20 @@ impl Polyline {
             .collect()
     }
 
+    /// The least distance from `point` to the line over [x_min, x_max].
+    pub fn distance_to(&self, point: (f64, f64), x_min: f64, x_max: f64) -> f64 {
+        self.pieces(x_min, x_max)
+            .into_iter()
+            .map(|(x0, x1, m, k)| {
+                let (a, b) = ((x0, m * x0 + k), (x1, m * x1 + k));
+                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+                let t = (((point.0 - a.0) * dx + (point.1 - a.1) * dy) / (dx * dx + dy * dy))
+                    .clamp(0.0, 1.0);
+                (a.0 + t * dx - point.0).hypot(a.1 + t * dy - point.1)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// x where this line and `other` cross (or touch) within (x_min, x_max).
     pub fn crossings(&self, other: &Polyline, x_min: f64, x_max: f64) -> Vec<f64> {
         let mut cuts: Vec<f64> = std::iter::once(x_min)

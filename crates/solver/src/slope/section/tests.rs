@@ -2,7 +2,9 @@
 
 use std::num::NonZeroUsize;
 
+use super::search::{search_circles, CircleRegion, CircleSearch, CircleSearchSettings, Radii};
 use super::*;
+use crate::slope::search::SearchStatus;
 use crate::slope::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
 
 fn line(points: &[(f64, f64)]) -> Polyline {
@@ -321,4 +323,77 @@ fn a_circle_below_bedrock_follows_it() {
             > 5
     );
     assert!(s.factor_of_safety.is_some());
+}
+
+const ACADS_1A: [(f64, f64); 4] = [(20.0, 25.0), (30.0, 25.0), (50.0, 35.0), (70.0, 35.0)];
+
+fn acads_search(region: CircleRegion, hard: bool) -> CircleSearch {
+    let section = Section::new(one_soil(&ACADS_1A, 20.0, 3.0, 19.6)).unwrap();
+    search_circles(
+        &section,
+        region,
+        hard,
+        NonZeroUsize::new(50).unwrap(),
+        Seismic::default(),
+        &CircleSearchSettings::default(),
+    )
+}
+
+#[test]
+fn acads_1a_critical_circle_with_automatic_bounds() {
+    // SPEC §4.5: Spencer F ≈ 0.986 (Slide2), Bishop 0.987, the study's referee 1.00. The search
+    // finds a circle tangent to the level ground at the toe with F = 0.984 (its own grid; a
+    // lower F than Slide2's is a better minimum, not an error: 0.2 % apart).
+    let section = Section::new(one_soil(&ACADS_1A, 20.0, 3.0, 19.6)).unwrap();
+    let found = acads_search(CircleRegion::automatic(&section, 21, 21, 10), false);
+    assert_eq!(found.status, SearchStatus::Found);
+    let f = found.factor_of_safety.unwrap();
+    assert!((f - 0.986).abs() < 5e-3, "F = {f}");
+    assert!(!found.is_on_edge);
+    // The refined F is no worse than the best grid point, and re-solving the circle at 500
+    // slices moves it by less than 1e-3.
+    let grid_best = found
+        .grid
+        .factors
+        .iter()
+        .flatten()
+        .flatten()
+        .fold(f64::INFINITY, |a, &b| a.min(b));
+    assert!(f <= grid_best);
+    let ((xc, yc), r) = found.circle.unwrap();
+    let (_, s) = solve(
+        one_soil(&ACADS_1A, 20.0, 3.0, 19.6),
+        SlipShape::Circle {
+            centre: (xc, yc),
+            radius: r,
+        },
+        500,
+    );
+    let fine = s.factor_of_safety.unwrap();
+    assert!((fine - f).abs() < 1e-3, "{fine} vs {f}");
+    let bishop = s.bishop_factor_of_safety.unwrap();
+    assert!((bishop - 0.987).abs() < 5e-3, "Bishop {bishop}");
+}
+
+#[test]
+fn given_bounds_are_hard() {
+    // A region well left of the critical centre (x_c ≈ 30): the answer stays inside it, on its
+    // right edge, and says so.
+    let region = CircleRegion {
+        x_min: 0.0,
+        x_max: 20.0,
+        y_min: 40.0,
+        y_max: 70.0,
+        nx: 11,
+        ny: 11,
+        radii: Radii::Tangent(vec![10.0, 15.0, 20.0, 25.0]),
+    };
+    let found = acads_search(region.clone(), true);
+    let ((xc, yc), r) = found.circle.unwrap();
+    assert!((region.x_min..=region.x_max).contains(&xc), "x_c = {xc}");
+    assert!((region.y_min..=region.y_max).contains(&yc), "y_c = {yc}");
+    assert!(yc - r >= 10.0 - 1e-9 && yc - r <= 25.0 + 1e-9);
+    assert!(found.is_on_edge);
+    assert_eq!(found.regrids, 0);
+    assert!(found.factor_of_safety.unwrap() > 0.984);
 }

@@ -1,0 +1,444 @@
+//! The critical circle of a section (SPEC §4.4): centres on a grid, several radii at each (a
+//! range, tangents to given elevations, or chosen from the section), the least F over radii
+//! mapped over the centres, then Nelder–Mead over (x_c, y_c, R) from the best few grid points.
+//!
+//! Given bounds are hard: the answer's centre lies inside them and a minimum on their edge is
+//! reported as such. Automatic bounds cover toe, face and deep circles of the section and move
+//! (at most `max_regrids` times) when the minimum lies on their edge. Circles that cut a mass
+//! but have no solution are counted, and flagged when they lie next to the minimum.
+
+use std::num::NonZeroUsize;
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+use super::{place, Section, SlipShape};
+use crate::numerics::nelder_mead;
+use crate::outcome::SolverFailure;
+use crate::slope::search::{FactorGrid, SearchStatus};
+use crate::slope::spencer::{solve_spencer_factor, Seismic, SpencerSettings};
+
+/// The radii tried at each centre.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Radii {
+    /// `count` radii evenly from `min` to `max`.
+    Range {
+        /// Smallest radius.
+        min: f64,
+        /// Largest radius.
+        max: f64,
+        /// Number of radii (≥ 1).
+        count: usize,
+    },
+    /// Circles tangent to each of these elevations (R = y_c − y), below the centre.
+    Tangent(Vec<f64>),
+    /// `count` radii from just cutting the ground to a depth of one section height below its
+    /// lowest point (or down to the bedrock).
+    Automatic {
+        /// Number of radii (≥ 1).
+        count: usize,
+    },
+}
+
+/// The region of centres and the radii.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CircleRegion {
+    /// Smallest centre x.
+    pub x_min: f64,
+    /// Largest centre x.
+    pub x_max: f64,
+    /// Smallest centre y.
+    pub y_min: f64,
+    /// Largest centre y.
+    pub y_max: f64,
+    /// Grid points along x (≥ 2).
+    pub nx: usize,
+    /// Grid points along y (≥ 2).
+    pub ny: usize,
+    /// Radii at each centre.
+    pub radii: Radii,
+}
+
+/// Extent of the section's relief: (x_lo, x_hi, y_low, y_top), the x-range of the non-level
+/// part of the ground (all of it when level).
+fn relief(section: &Section) -> (f64, f64, f64, f64) {
+    let p = section.ground.points();
+    let sloping: Vec<f64> = p
+        .windows(2)
+        .filter(|w| w[0].1 != w[1].1)
+        .flat_map(|w| [w[0].0, w[1].0])
+        .collect();
+    let (x_lo, x_hi) = if sloping.is_empty() {
+        (p[0].0, p[p.len() - 1].0)
+    } else {
+        sloping
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                (a.min(x), b.max(x))
+            })
+    };
+    let (y_low, y_top) = p
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), q| {
+            (a.min(q.1), b.max(q.1))
+        });
+    (x_lo, x_hi, y_low, y_top)
+}
+
+impl CircleRegion {
+    /// Centres over the sloping part of the ground widened by half its size each way, from
+    /// half-way up the relief to two sizes above its top; radii chosen per centre.
+    pub fn automatic(section: &Section, nx: usize, ny: usize, nr: usize) -> Self {
+        let (x_lo, x_hi, y_low, y_top) = relief(section);
+        let size = (x_hi - x_lo).max(y_top - y_low).max(1e-6);
+        Self {
+            x_min: x_lo - 0.5 * size,
+            x_max: x_hi + 0.5 * size,
+            y_min: y_low + 0.5 * (y_top - y_low).max(0.1 * size),
+            y_max: y_top + 2.0 * size,
+            nx,
+            ny,
+            radii: Radii::Automatic { count: nr },
+        }
+    }
+
+    fn xs(&self) -> Vec<f64> {
+        spaced(self.x_min, self.x_max, self.nx)
+    }
+
+    fn ys(&self) -> Vec<f64> {
+        spaced(self.y_min, self.y_max, self.ny)
+    }
+}
+
+fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+    if n < 2 {
+        return vec![a];
+    }
+    (0..n)
+        .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// Settings of the search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CircleSearchSettings {
+    /// Settings of each Spencer solution.
+    pub spencer: SpencerSettings,
+    /// Grid points the refinement starts from. Defaults to 3.
+    pub starts: usize,
+    /// Nelder–Mead evaluations per start. Defaults to 400.
+    pub max_refine_evaluations: usize,
+    /// Times automatic bounds may move. Defaults to 3.
+    pub max_regrids: usize,
+    /// No circle is evaluated after this instant; the search then says it ran out of time.
+    pub deadline: Option<Instant>,
+}
+
+impl Default for CircleSearchSettings {
+    fn default() -> Self {
+        Self {
+            spencer: SpencerSettings::default(),
+            starts: 3,
+            max_refine_evaluations: 400,
+            max_regrids: 3,
+            deadline: None,
+        }
+    }
+}
+
+/// What the search found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CircleSearch {
+    /// How it ended.
+    pub status: SearchStatus,
+    /// The critical circle: centre and radius.
+    pub circle: Option<((f64, f64), f64)>,
+    /// Its factor of safety.
+    pub factor_of_safety: Option<f64>,
+    /// The least F over the radii at each centre of the last grid (absolute coordinates).
+    pub grid: FactorGrid,
+    /// The region of the last grid.
+    pub region: CircleRegion,
+    /// Circles evaluated.
+    pub evaluations: usize,
+    /// Circles that cut a sliding mass but whose equations have no solution.
+    pub unsolved: usize,
+    /// Whether unsolved circles lie at or next to the grid centre of the minimum.
+    pub unsolved_near_minimum: bool,
+    /// Times automatic bounds moved.
+    pub regrids: usize,
+    /// Whether the minimum lies on the edge of the region (given bounds: the answer is the
+    /// least F inside them; the true minimum may lie outside).
+    pub is_on_edge: bool,
+}
+
+/// A circle's F; `Err(true)` when it cuts a mass but has no solution, `Err(false)` when it
+/// cuts none.
+type Outcome = Result<f64, bool>;
+
+struct Evaluator<'a> {
+    section: &'a Section,
+    mirror: Section,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    spencer: SpencerSettings,
+    deadline: Option<Instant>,
+    /// Lowest y a circle may usefully reach (automatic radii).
+    deep: f64,
+}
+
+impl Evaluator<'_> {
+    fn is_late(&self) -> bool {
+        self.deadline.is_some_and(|d| Instant::now() >= d)
+    }
+
+    fn factor(&self, centre: (f64, f64), radius: f64) -> Outcome {
+        let shape = SlipShape::Circle { centre, radius };
+        let cut = place(
+            self.section,
+            Some(&self.mirror),
+            &shape,
+            self.slices,
+            self.seismic,
+            None,
+        )
+        .map_err(|_| false)?;
+        match solve_spencer_factor(&cut.model, &self.spencer) {
+            Some(s) if s.factor_of_safety.is_finite() => Ok(s.factor_of_safety),
+            _ => Err(true),
+        }
+    }
+
+    fn radii(&self, radii: &Radii, (xc, yc): (f64, f64)) -> Vec<f64> {
+        match radii {
+            Radii::Range { min, max, count } => spaced(*min, *max, *count),
+            Radii::Tangent(ys) => ys.iter().filter(|&&y| y < yc).map(|y| yc - y).collect(),
+            Radii::Automatic { count } => {
+                let ground = &self.section.ground;
+                let p = ground.points();
+                let span = (p[p.len() - 1].0 - p[0].0).max(1.0);
+                let near = ground.distance_to(
+                    (xc, yc),
+                    p[0].0 - 10.0 * span,
+                    p[p.len() - 1].0 + 10.0 * span,
+                );
+                let far = yc - self.deep;
+                if far <= near {
+                    return Vec::new();
+                }
+                let n = (*count).max(1);
+                (1..=n)
+                    .map(|k| near + (far - near) * k as f64 / n as f64)
+                    .collect()
+            }
+        }
+    }
+}
+
+/// The least F over the radii at one centre: (F, R), and the number of unsolved circles.
+type CentreResult = (Option<(f64, f64)>, usize);
+
+/// Searches the critical circle of `section` over `region`; `hard` bounds stay put, automatic
+/// ones move when the minimum lies on their edge.
+pub fn search_circles(
+    section: &Section,
+    region: CircleRegion,
+    hard: bool,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    settings: &CircleSearchSettings,
+) -> CircleSearch {
+    let (_, _, y_low, y_top) = relief(section);
+    let deep = section
+        .bedrock
+        .as_ref()
+        .map_or(y_low - (y_top - y_low).max(1e-6), |b| {
+            b.points().iter().fold(f64::INFINITY, |m, p| m.min(p.1))
+        });
+    let evaluator = Evaluator {
+        section,
+        mirror: section.mirrored(),
+        slices,
+        seismic,
+        spencer: settings.spencer,
+        deadline: settings.deadline,
+        deep,
+    };
+    let mut region = region;
+    let mut evaluations = 0;
+    let mut regrids = 0;
+    loop {
+        let (xs, ys) = (region.xs(), region.ys());
+        let results: Vec<Vec<CentreResult>> = ys
+            .par_iter()
+            .map(|&y| {
+                xs.iter()
+                    .map(|&x| {
+                        let mut best: Option<(f64, f64)> = None;
+                        let mut unsolved = 0;
+                        for r in evaluator.radii(&region.radii, (x, y)) {
+                            if evaluator.is_late() {
+                                break;
+                            }
+                            match evaluator.factor((x, y), r) {
+                                Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
+                                Ok(_) | Err(false) => {}
+                                Err(true) => unsolved += 1,
+                            }
+                        }
+                        (best, unsolved)
+                    })
+                    .collect()
+            })
+            .collect();
+        evaluations += xs
+            .iter()
+            .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
+            .map(|c| evaluator.radii(&region.radii, c).len())
+            .sum::<usize>();
+        let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
+        let grid = FactorGrid {
+            xs: xs.clone(),
+            ys: ys.clone(),
+            factors: results
+                .iter()
+                .map(|row| row.iter().map(|r| r.0.map(|b| b.0)).collect())
+                .collect(),
+        };
+        let mut points: Vec<(f64, f64, usize, usize)> = results
+            .iter()
+            .enumerate()
+            .flat_map(|(j, row)| {
+                row.iter()
+                    .enumerate()
+                    .filter_map(move |(i, r)| r.0.map(|(f, radius)| (f, radius, i, j)))
+            })
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let late = evaluator.is_late();
+        let status_of = |found: SearchStatus| {
+            if late || evaluator.is_late() {
+                SearchStatus::SolverFailed(SolverFailure::MaxTime)
+            } else {
+                found
+            }
+        };
+        let Some(&(f0, r0, bi, bj)) = points.first() else {
+            return CircleSearch {
+                status: status_of(SearchStatus::NoValidCircle),
+                circle: None,
+                factor_of_safety: None,
+                grid,
+                region,
+                evaluations,
+                unsolved,
+                unsolved_near_minimum: false,
+                regrids,
+                is_on_edge: false,
+            };
+        };
+        let unsolved_near_minimum = (bj.saturating_sub(1)..=(bj + 1).min(ys.len() - 1)).any(|j| {
+            (bi.saturating_sub(1)..=(bi + 1).min(xs.len() - 1)).any(|i| results[j][i].1 > 0)
+        });
+        // Refine from the best few grid points that are not neighbours of each other.
+        let mut starts: Vec<(f64, usize, usize)> = Vec::new();
+        for &(_, r, i, j) in &points {
+            if starts.len() >= settings.starts {
+                break;
+            }
+            if starts
+                .iter()
+                .all(|&(_, a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
+            {
+                starts.push((r, i, j));
+            }
+        }
+        let dx = (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64;
+        let dy = (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64;
+        let inside = |v: &[f64]| {
+            v[0] >= region.x_min
+                && v[0] <= region.x_max
+                && v[1] >= region.y_min
+                && v[1] <= region.y_max
+        };
+        let radius_allowed = |v: &[f64]| match &region.radii {
+            Radii::Range { min, max, .. } => v[2] >= *min && v[2] <= *max,
+            Radii::Tangent(ys) => {
+                let below: Vec<f64> = ys.iter().copied().filter(|&y| y < v[1]).collect();
+                let (lo, hi) = below
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
+                        (a.min(y), b.max(y))
+                    });
+                !below.is_empty() && v[2] >= v[1] - hi && v[2] <= v[1] - lo
+            }
+            Radii::Automatic { .. } => v[2] > 0.0 && v[2] <= v[1] - deep,
+        };
+        let refined: Vec<(f64, Vec<f64>, usize)> = starts
+            .par_iter()
+            .map(|&(r, i, j)| {
+                let objective = |v: &[f64]| {
+                    if evaluator.is_late() || !inside(v) || !radius_allowed(v) {
+                        return f64::INFINITY;
+                    }
+                    evaluator
+                        .factor((v[0], v[1]), v[2])
+                        .unwrap_or(f64::INFINITY)
+                };
+                let scale = dx.abs().max(dy.abs()).max(r);
+                let m = nelder_mead(
+                    objective,
+                    &[xs[i], ys[j], r],
+                    &[0.5 * dx, 0.5 * dy, 0.05 * r],
+                    1e-9 * scale,
+                    settings.max_refine_evaluations,
+                );
+                (m.value, m.point, m.evaluations)
+            })
+            .collect();
+        evaluations += refined.iter().map(|r| r.2).sum::<usize>();
+        let (f, v) = refined
+            .into_iter()
+            .filter(|r| r.0.is_finite() && r.0 <= f0)
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or((f0, vec![xs[bi], ys[bj], r0]), |r| (r.0, r.1));
+        let tolerance = 1e-6 * dx.abs().max(dy.abs());
+        let on_edge = bi == 0
+            || bj == 0
+            || bi + 1 == xs.len()
+            || bj + 1 == ys.len()
+            || v[0] - region.x_min <= tolerance
+            || region.x_max - v[0] <= tolerance
+            || v[1] - region.y_min <= tolerance
+            || region.y_max - v[1] <= tolerance;
+        if on_edge && !hard && regrids < settings.max_regrids && !evaluator.is_late() {
+            // Centre a region of the same size on the best point found.
+            let (half_x, half_y) = (
+                0.5 * (region.x_max - region.x_min),
+                0.5 * (region.y_max - region.y_min),
+            );
+            region = CircleRegion {
+                x_min: v[0] - half_x,
+                x_max: v[0] + half_x,
+                y_min: v[1] - half_y,
+                y_max: v[1] + half_y,
+                ..region
+            };
+            regrids += 1;
+            continue;
+        }
+        return CircleSearch {
+            status: status_of(SearchStatus::Found),
+            circle: Some(((v[0], v[1]), v[2])),
+            factor_of_safety: Some(f),
+            grid,
+            region,
+            evaluations,
+            unsolved,
+            unsolved_near_minimum,
+            regrids,
+            is_on_edge: on_edge,
+        };
+    }
+}
