@@ -208,3 +208,100 @@ async fn a_layered_section_with_water_loads_and_a_crack_is_drawn() {
         assert!(svg.contains(label), "no {label}");
     }
 }
+
+fn acads_1a() -> Value {
+    json!({
+        "section": {
+            "ground": [[20, 25], [30, 25], [50, 35], [70, 35]],
+            "layers": [{"top": null,
+                        "soil": {"unit_weight": 20, "cohesion": 3, "friction_angle_deg": 19.6}}]
+        },
+        "search": {},
+        "slices": 50
+    })
+}
+
+#[tokio::test]
+async fn acads_1a_critical_circle_over_http() {
+    // SPEC §4.5: Spencer ≈ 0.986 (Slide2), referee 1.00; see the solver's search test.
+    let server = Server::start().await;
+    let (status, _, body) = server.post("/slope/spencer", &acads_1a()).await;
+    assert_eq!(status, 200, "{body}");
+    let f = body["factor_of_safety"].as_f64().unwrap();
+    assert!((f - 0.986).abs() < 5e-3, "F = {f}");
+    assert_eq!(body["search"]["on_edge"], false);
+    assert!(body["search"]["unsolved"].is_u64());
+    // The grid is absolute: the critical centre lies within its columns and rows.
+    let xs = body["grid"]["xs"].as_array().unwrap();
+    let centre = body["circle"]["centre"]["x"].as_f64().unwrap();
+    assert!(xs[0].as_f64().unwrap() < centre && centre < xs[xs.len() - 1].as_f64().unwrap());
+}
+
+#[tokio::test]
+async fn section_search_bounds_are_hard_and_validated() {
+    let server = Server::start().await;
+    let body = with(
+        acads_1a(),
+        "search",
+        json!({"x_min": 0, "x_max": 20, "y_min": 40, "y_max": 70, "nx": 11, "ny": 11,
+               "tangent_elevations": [10, 15, 20, 25]}),
+    );
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let x = answer["circle"]["centre"]["x"].as_f64().unwrap();
+    assert!((0.0..=20.0).contains(&x), "centre x {x} outside the bounds");
+    assert_eq!(answer["search"]["on_edge"], true);
+    assert_eq!(answer["search"]["regrids"], 0);
+    let warnings = answer["warnings"].to_string();
+    assert!(
+        warnings.contains("edge of the given search bounds"),
+        "{warnings}"
+    );
+
+    let cases = [
+        (
+            with(acads_1a(), "search", json!({"lower_end_factor": 1})),
+            "search.lower_end_factor",
+        ),
+        (
+            with(acads_1a(), "search", json!({"radius_min": 5})),
+            "search.radius_max",
+        ),
+        (
+            with(
+                acads_1a(),
+                "search",
+                json!({"radius_min": 5, "radius_max": 4}),
+            ),
+            "search.radius_max",
+        ),
+        (
+            with(acads_1a(), "search", json!({"x_min": 10, "x_max": 5})),
+            "search.x_max",
+        ),
+        (with(acads_1a(), "search", json!({"nr": 0})), "search.nr"),
+        (
+            with(
+                acads_1a(),
+                "search",
+                json!({"tangent_elevations": [1, "a"]}),
+            ),
+            "search.tangent_elevations",
+        ),
+        (
+            with(
+                spencer_example(),
+                "search",
+                json!({"tangent_elevations": [1]}),
+            ),
+            "search.tangent_elevations",
+        ),
+    ];
+    for (mut body, field) in cases {
+        if field == "search.tangent_elevations" && body.get("circle").is_some() {
+            body["circle"] = Value::Null;
+        }
+        let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+}

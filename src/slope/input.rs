@@ -5,6 +5,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::slope::section::search::CircleRegion;
 use thrustline_solver::slope::section::{
     Layer, Polyline, Section, SectionParts, SectionProblem, SlipShape,
 };
@@ -14,7 +15,7 @@ use thrustline_solver::slope::{
 
 use super::analysed::Analysed;
 use super::request::{CircleDto, SearchDto, SpencerRequest};
-use super::section::{polyline, section_from, soil as soil_from};
+use super::section::{polyline, search_region, section_from, soil as soil_from};
 use crate::error::ApiError;
 use crate::limits::{
     DEFAULT_WATER_UNIT_WEIGHT, MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES,
@@ -40,6 +41,23 @@ pub enum Target {
     Surface(Analysed),
     /// The grid to search and everything but the circle.
     Search(SearchGrid, SearchProblem),
+    /// A search over a section.
+    SectionSearch(Box<SectionSearch>),
+}
+
+/// A search for the critical circle of a section.
+#[derive(Debug, Clone)]
+pub struct SectionSearch {
+    /// The section.
+    pub section: Section,
+    /// The centres and radii.
+    pub region: CircleRegion,
+    /// Whether the bounds were given (they then stay put).
+    pub hard: bool,
+    /// Slices per circle.
+    pub slices: NonZeroUsize,
+    /// Seismic coefficients.
+    pub seismic: Seismic,
 }
 
 /// The ground and soil: a section, or the simple slope with its soil.
@@ -124,12 +142,15 @@ impl SpencerRequest {
                     }
                     search_from(search, embankment, soil, parts.slices, parts.seismic)?
                 }
-                Ground::Section(_) => {
-                    return Err(ApiError::invalid(
-                        "search",
-                        "a search over a section is not available yet: give a circle or a \
-                         surface (a search works on the simple slope)",
-                    ))
+                Ground::Section(section) => {
+                    let (region, hard) = search_region(search, &section, parts.slices.get())?;
+                    Target::SectionSearch(Box::new(SectionSearch {
+                        section,
+                        region,
+                        hard,
+                        slices: parts.slices,
+                        seismic: parts.seismic,
+                    }))
                 }
             }
         } else {
@@ -318,6 +339,22 @@ fn search_from(
     slices: NonZeroUsize,
     seismic: Seismic,
 ) -> Result<Target, ApiError> {
+    let section_only = [
+        ("search.radius_min", search.radius_min.is_some()),
+        ("search.radius_max", search.radius_max.is_some()),
+        ("search.nr", search.nr.is_some()),
+        (
+            "search.tangent_elevations",
+            search.tangent_elevations.is_some(),
+        ),
+    ];
+    if let Some((field, _)) = section_only.iter().find(|f| f.1) {
+        return Err(ApiError::invalid(
+            *field,
+            "is for a search over a section; on the simple slope the radius follows from the \
+             centre and the lower end",
+        ));
+    }
     let lower_end_factor = number(
         "search.lower_end_factor",
         search.lower_end_factor,

@@ -8,6 +8,7 @@
 pub mod analysed;
 pub mod drawing;
 pub mod input;
+pub mod report;
 pub mod request;
 pub mod response;
 pub mod section;
@@ -25,9 +26,12 @@ use crate::limits::MAX_SLICES;
 use crate::svg::Svg;
 use crate::AppState;
 use analysed::Analysed;
-use input::{SpencerInput, Target};
+use input::{SectionSearch, SpencerInput, Target};
+use report::SearchReport;
 use request::SpencerRequest;
 use response::{Refinement, SolvedSlope, SpencerResponse};
+use thrustline_solver::slope::section::search::{search_circles, CircleSearchSettings};
+use thrustline_solver::slope::section::{SectionProblem, SlipShape};
 
 /// Spencer's method for one slip surface, or the critical circle.
 ///
@@ -140,16 +144,16 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         seconds: time_limit.as_secs_f64(),
         advice,
     };
-    let (problem, search) = match input.target {
-        Target::Surface(problem) => (problem, None),
-        Target::Search(grid, search_problem) => {
-            let settings = SearchSettings {
-                time_limit: Some(time_limit),
-                ..SearchSettings::default()
-            };
-            let found = search_critical_circle(&search_problem, grid, &settings);
-            let circle =
-                match (found.status, found.circle) {
+    let (problem, search) =
+        match input.target {
+            Target::Surface(problem) => (problem, None),
+            Target::Search(grid, search_problem) => {
+                let settings = SearchSettings {
+                    time_limit: Some(time_limit),
+                    ..SearchSettings::default()
+                };
+                let found = search_critical_circle(&search_problem, grid, &settings);
+                let circle = match (found.status, found.circle) {
                     (SearchStatus::Found, Some(circle)) => circle,
                     (SearchStatus::SolverFailed(SolverFailure::MaxTime), _) => {
                         return Err(over_time(
@@ -168,17 +172,52 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                          or move the bounds (or leave them out for automatic ones)",
                     )),
                 };
-            let problem = SlopeProblem::new(
-                search_problem.embankment,
-                circle,
-                search_problem.slices,
-                search_problem.soil,
-                search_problem.seismic,
-                Vec::new(),
-            )?;
-            (Analysed::Simple(problem), Some(found))
-        }
-    };
+                let problem = SlopeProblem::new(
+                    search_problem.embankment,
+                    circle,
+                    search_problem.slices,
+                    search_problem.soil,
+                    search_problem.seismic,
+                    Vec::new(),
+                )?;
+                (Analysed::Simple(problem), Some(SearchReport::from(&found)))
+            }
+            Target::SectionSearch(search) => {
+                let settings = CircleSearchSettings {
+                    deadline: Some(deadline),
+                    ..CircleSearchSettings::default()
+                };
+                let SectionSearch {
+                    section,
+                    region,
+                    hard,
+                    slices,
+                    seismic,
+                } = *search;
+                let found = search_circles(&section, region, hard, slices, seismic, &settings);
+                let circle = match (found.status, found.circle) {
+                    (SearchStatus::Found, Some(circle)) => circle,
+                    (SearchStatus::SolverFailed(SolverFailure::MaxTime), _) => {
+                        return Err(over_time(
+                            "search",
+                            "use a smaller grid, fewer radii or fewer slices",
+                        ))
+                    }
+                    _ => return Err(ApiError::invalid(
+                        "search",
+                        "no circle in the region searched cuts a sliding mass with a solution: \
+                         widen or move the bounds or the radii (or leave them out)",
+                    )),
+                };
+                let shape = SlipShape::Circle {
+                    centre: circle.0,
+                    radius: circle.1,
+                };
+                let problem = SectionProblem::new(section, shape, slices, seismic, None)?;
+                let report = SearchReport::of_section(&found, hard);
+                (Analysed::Section(Box::new(problem)), Some(report))
+            }
+        };
     let (problem, solution, refinement) = match input.slice_tolerance {
         None => {
             let solution = solve_spencer(&problem.model(), &Default::default());

@@ -174,19 +174,42 @@ fn default_slices() -> usize {
     100
 }
 
-/// A search for the critical circle: a grid over centres, refined by Nelder–Mead; bounds left
-/// out are chosen automatically around the perpendicular bisector of the slope.
+/// A search for the critical circle: a grid over centres, refined by Nelder–Mead. On the simple
+/// slope, centres are measured from the lower end and bounds left out are chosen around the
+/// perpendicular bisector of the face. On a section, bounds are absolute and hard (the answer's
+/// centre lies inside them), several radii are tried at each centre (`radius_min`…`radius_max`
+/// in `nr` steps, or `tangent_elevations`, or chosen from the section), and bounds left out
+/// cover toe, face and deep circles (moved when the minimum lies on their edge).
 #[derive(Debug, Clone, Default, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SearchDto {
-    /// Smallest centre X (from the lower end). Automatic when missing.
+    /// Smallest centre x (simple slope: from the lower end; section: absolute). Automatic
+    /// when missing.
     pub x_min: Option<f64>,
-    /// Largest centre X. Automatic when missing.
+    /// Largest centre x. Automatic when missing.
     pub x_max: Option<f64>,
-    /// Smallest centre Y (above the lower end). Automatic when missing.
+    /// Smallest centre y (simple slope: above the lower end; section: absolute). Automatic
+    /// when missing.
     pub y_min: Option<f64>,
-    /// Largest centre Y. Automatic when missing.
+    /// Largest centre y. Automatic when missing.
     pub y_max: Option<f64>,
+    /// Section only: the smallest radius tried at each centre (with `radius_max`).
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
+    pub radius_min: Option<f64>,
+    /// Section only: the largest radius tried at each centre.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
+    pub radius_max: Option<f64>,
+    /// Section only: radii per centre, 1 ≤ nr ≤ 101. Defaults to 10.
+    #[serde(default)]
+    #[schema(minimum = 1, maximum = 101, default = 10)]
+    pub nr: Option<usize>,
+    /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
+    /// range; at most 101.
+    #[serde(default)]
+    #[schema(max_items = 101)]
+    pub tangent_elevations: Option<Vec<f64>>,
     /// Grid points along X, 2 ≤ nx ≤ 101. Defaults to 21.
     #[serde(
         default = "default_grid",
@@ -203,12 +226,14 @@ pub struct SearchDto {
     #[schema(nullable)]
     #[schema(minimum = 2, maximum = 101, default = 21)]
     pub ny: usize,
-    /// Lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100. Defaults to 0 (toe).
+    /// Simple slope only: lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100.
+    /// Defaults to 0 (toe).
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     #[schema(minimum = 0.0, maximum = 100.0)]
     pub lower_end_factor: f64,
-    /// When given, F_e is searched too, within [0, this], in the refinement.
+    /// Simple slope only: when given, F_e is searched too, within [0, this], in the
+    /// refinement.
     #[serde(default)]
     #[schema(exclusive_minimum = 0.0, maximum = 100.0)]
     pub lower_end_factor_max: Option<f64>,

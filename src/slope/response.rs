@@ -3,10 +3,11 @@
 
 use serde::Serialize;
 use thrustline_solver::slope::{
-    FactorCurves, RefinementStep, SearchSolution, Sliced, SpencerSolution, SpencerStatus,
+    FactorCurves, RefinementStep, Sliced, SpencerSolution, SpencerStatus,
 };
 
 use super::analysed::Analysed;
+use super::report::SearchReport;
 
 use crate::limits::MAX_SLICES;
 use utoipa::ToSchema;
@@ -14,11 +15,12 @@ use utoipa::ToSchema;
 /// F over the grid of centres, for contour plots.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct GridDto {
-    /// Centre X of the grid columns (from the lower end).
+    /// Centre x of the grid columns (simple slope: from the lower end; section: absolute).
     pub xs: Vec<f64>,
-    /// Centre Y of the grid rows.
+    /// Centre y of the grid rows (simple slope: above the lower end; section: absolute).
     pub ys: Vec<f64>,
-    /// `factor_of_safety[j][i]` at (xs[i], ys[j]); null where the centre gives no valid circle.
+    /// `factor_of_safety[j][i]` at (xs[i], ys[j]), the least over the radii tried on a
+    /// section; null where the centre gives no circle with a solution.
     pub factor_of_safety: Vec<Vec<Option<f64>>>,
 }
 
@@ -31,6 +33,13 @@ pub struct SearchOutDto {
     pub regrids: usize,
     /// Whether the minimum still lies on the edge of the region searched.
     pub on_edge: bool,
+    /// Sections: circles that cut a sliding mass but whose equations have no solution; null
+    /// for the simple slope's search.
+    #[schema(required = true)]
+    pub unsolved: Option<usize>,
+    /// Whether circles without a solution lie at or next to the grid centre of the minimum
+    /// (the least F found may then not be the least F there is).
+    pub unsolved_near_minimum: bool,
 }
 
 /// Spencer's figure: F from each equation alone against θ; they cross at the answer.
@@ -236,7 +245,7 @@ pub struct SolvedSlope {
     /// Its solution.
     pub solution: SpencerSolution,
     /// With `search`: how the search went.
-    pub search: Option<SearchSolution>,
+    pub search: Option<SearchReport>,
     /// With `curves`: F_f(θ) and F_m(θ).
     pub curves: Option<FactorCurves>,
     /// With `slice_tolerance`: the refinement.
@@ -310,12 +319,27 @@ impl SpencerResponse {
                 refinement.tolerance
             ));
         }
-        if solved.search.as_ref().is_some_and(|s| s.is_on_edge) {
-            warnings.push(
-                "the critical centre lies on the edge of the search region even after moving the \
-             grid: the true minimum may lie outside it"
-                    .to_owned(),
-            );
+        if let Some(search) = &solved.search {
+            if search.is_on_edge && search.hard {
+                warnings.push(
+                    "the critical centre lies on the edge of the given search bounds: F is the \
+                     least inside them, the true minimum may lie outside"
+                        .to_owned(),
+                );
+            } else if search.is_on_edge {
+                warnings.push(
+                    "the critical centre lies on the edge of the search region even after moving \
+                     the grid: the true minimum may lie outside it"
+                        .to_owned(),
+                );
+            }
+            if search.unsolved_near_minimum {
+                warnings.push(format!(
+                    "circles next to the critical one have no Spencer solution ({} in the whole \
+                     search): the least F may lie among them",
+                    search.unsolved.unwrap_or(0)
+                ));
+            }
         }
         let model = problem.model();
         let to_x = |x: f64| problem.request_x(x);
@@ -396,6 +420,8 @@ impl SpencerResponse {
                 evaluations: search.evaluations,
                 regrids: search.regrids,
                 on_edge: search.is_on_edge,
+                unsolved: search.unsolved,
+                unsolved_near_minimum: search.unsolved_near_minimum,
             }),
             grid: solved.search.as_ref().map(|search| GridDto {
                 xs: search.grid.xs.clone(),

@@ -1,17 +1,137 @@
 //! The validation of a `section` (SPEC §4.1) into the solver's [`Section`], and of a `surface`:
 //! every point and number checked, each failure naming its field path.
 
+use thrustline_solver::slope::section::search::{CircleRegion, Radii};
 use thrustline_solver::slope::section::{
     Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
 };
 use thrustline_solver::slope::Soil;
 
-use super::request::{Coordinates, SectionDto, SoilDto};
+use super::request::{Coordinates, SearchDto, SectionDto, SoilDto};
 use crate::error::ApiError;
 use crate::limits::{
-    DEFAULT_WATER_UNIT_WEIGHT, MAX_LAYERS, MAX_MAGNITUDE, MAX_POLYLINE_POINTS, MAX_SECTION_LOADS,
+    DEFAULT_WATER_UNIT_WEIGHT, MAX_GRID, MAX_GRID_SLICES, MAX_LAYERS, MAX_MAGNITUDE,
+    MAX_POLYLINE_POINTS, MAX_SECTION_LOADS,
 };
 use crate::validation::{count, number};
+
+/// Radii per centre when none are given.
+const DEFAULT_RADII: usize = 10;
+
+/// The region of a search over a section, and whether its bounds were given (hard).
+pub fn search_region(
+    search: &SearchDto,
+    section: &Section,
+    slices: usize,
+) -> Result<(CircleRegion, bool), ApiError> {
+    if search.lower_end_factor != 0.0 || search.lower_end_factor_max.is_some() {
+        return Err(ApiError::invalid(
+            "search.lower_end_factor",
+            "is for the simple slope; on a section the circles' ends follow from the centre \
+             and radius",
+        ));
+    }
+    let nx = count("search.nx", search.nx, 2, MAX_GRID)?;
+    let ny = count("search.ny", search.ny, 2, MAX_GRID)?;
+    let nr = count("search.nr", search.nr.unwrap_or(DEFAULT_RADII), 1, MAX_GRID)?;
+    let coordinate =
+        |field: &str, v: Option<f64>| v.map(|v| number(field, v, -1e9, false, 1e9)).transpose();
+    let radius =
+        |field: &str, v: Option<f64>| v.map(|v| number(field, v, 0.0, true, 1e9)).transpose();
+    let radii = match (
+        radius("search.radius_min", search.radius_min)?,
+        radius("search.radius_max", search.radius_max)?,
+        &search.tangent_elevations,
+    ) {
+        (None, None, None) => Radii::Automatic { count: nr },
+        (Some(min), Some(max), None) if max >= min => Radii::Range {
+            min,
+            max,
+            count: nr,
+        },
+        (Some(_), Some(_), None) => {
+            return Err(ApiError::invalid(
+                "search.radius_max",
+                "must be at least search.radius_min",
+            ))
+        }
+        (None, None, Some(ys)) => {
+            count("search.tangent_elevations", ys.len(), 1, MAX_GRID)?;
+            for (i, &y) in ys.iter().enumerate() {
+                number(
+                    &format!("search.tangent_elevations[{i}]"),
+                    y,
+                    -1e9,
+                    false,
+                    1e9,
+                )?;
+            }
+            Radii::Tangent(ys.clone())
+        }
+        (_, _, Some(_)) => {
+            return Err(ApiError::invalid(
+                "search.tangent_elevations",
+                "give either tangent_elevations or radius_min and radius_max",
+            ))
+        }
+        (Some(_), None, None) => {
+            return Err(ApiError::invalid(
+                "search.radius_max",
+                "give it with radius_min",
+            ))
+        }
+        (None, Some(_), None) => {
+            return Err(ApiError::invalid(
+                "search.radius_min",
+                "give it with radius_max",
+            ))
+        }
+    };
+    let per_centre = match &radii {
+        Radii::Tangent(ys) => ys.len(),
+        Radii::Range { count, .. } | Radii::Automatic { count } => *count,
+    };
+    let cost = nx * ny * per_centre * slices;
+    if cost > MAX_GRID_SLICES {
+        return Err(ApiError::invalid(
+            "search",
+            format!(
+                "nx·ny·radii·slices = {cost} is out of range: allowed is at most \
+                 {MAX_GRID_SLICES} (fewer grid points, radii or slices)"
+            ),
+        ));
+    }
+    let automatic = CircleRegion::automatic(section, nx, ny, per_centre);
+    let bounds = [
+        coordinate("search.x_min", search.x_min)?,
+        coordinate("search.x_max", search.x_max)?,
+        coordinate("search.y_min", search.y_min)?,
+        coordinate("search.y_max", search.y_max)?,
+    ];
+    let hard = bounds.iter().any(Option::is_some);
+    let region = CircleRegion {
+        x_min: bounds[0].unwrap_or(automatic.x_min),
+        x_max: bounds[1].unwrap_or(automatic.x_max),
+        y_min: bounds[2].unwrap_or(automatic.y_min),
+        y_max: bounds[3].unwrap_or(automatic.y_max),
+        nx,
+        ny,
+        radii,
+    };
+    if region.x_max <= region.x_min {
+        return Err(ApiError::invalid(
+            "search.x_max",
+            format!("must be greater than search.x_min ({})", region.x_min),
+        ));
+    }
+    if region.y_max <= region.y_min {
+        return Err(ApiError::invalid(
+            "search.y_max",
+            format!("must be greater than search.y_min ({})", region.y_min),
+        ));
+    }
+    Ok((region, hard))
+}
 
 /// A polyline from its points, at `field`.
 pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiError> {
