@@ -305,3 +305,47 @@ async fn section_search_bounds_are_hard_and_validated() {
         assert_problem(status, &content_type, &answer, 422, field);
     }
 }
+
+#[tokio::test]
+async fn methods_side_by_side() {
+    // Fredlund & Krahn case 1 at 1000 slices against the independent computations of the
+    // solver's section tests: ordinary 1.92768, Bishop 2.07563, Janbu 1.87702, M–P (half-sine)
+    // 2.07140 with λ = 0.32321; a triangle given as points is accepted and converges.
+    let server = Server::start().await;
+    let mut body = with(fredlund_krahn(), "slices", json!(1000));
+    body["methods"] = json!(["morgenstern_price", "bishop", "janbu", "ordinary"]);
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let m = &answer["methods"];
+    let f = |name: &str| m[name]["factor_of_safety"].as_f64().unwrap();
+    assert!((f("ordinary") - 1.92768).abs() < 1e-4);
+    assert!((f("bishop") - 2.07563).abs() < 1e-4);
+    assert!((f("janbu") - 1.87702).abs() < 1e-4);
+    assert!((f("morgenstern_price") - 2.07140).abs() < 1e-4);
+    assert!((m["morgenstern_price"]["lambda"].as_f64().unwrap() - 0.32321).abs() < 1e-3);
+    assert_eq!(m["bishop"]["converged"], true);
+
+    body["methods"] = json!(["morgenstern_price"]);
+    body["interslice_function"] = json!([[0, 0], [0.5, 1], [1, 0]]);
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let triangle = answer["methods"]["morgenstern_price"]["factor_of_safety"]
+        .as_f64()
+        .unwrap();
+    assert!((triangle - 2.0714).abs() < 5e-3, "triangle {triangle}");
+    assert!(answer["methods"].get("bishop").is_none());
+
+    body["interslice_function"] = json!([[0, 0], [0, 1]]);
+    let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+    assert_problem(
+        status,
+        &content_type,
+        &answer,
+        422,
+        "interslice_function[1]",
+    );
+    body["interslice_function"] = Value::Null;
+    body["methods"] = json!(["simplified"]);
+    let (status, _, _) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 422);
+}

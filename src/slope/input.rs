@@ -14,6 +14,7 @@ use thrustline_solver::slope::{
 };
 
 use super::analysed::Analysed;
+use super::methods::{interslice_function, MethodName};
 use super::request::{CircleDto, SearchDto, SpencerRequest};
 use super::section::{polyline, search_region, section_from, soil as soil_from};
 use crate::error::ApiError;
@@ -22,6 +23,7 @@ use crate::limits::{
     MAX_LENGTH, MAX_SLICES, MIN_LENGTH, SLICE_TOLERANCE,
 };
 use crate::validation::{count, finite, number};
+use thrustline_solver::slope::spencer::methods::InterSliceFunction;
 
 /// A validated Spencer request, ready for the solver.
 #[derive(Debug, Clone)]
@@ -32,6 +34,10 @@ pub struct SpencerInput {
     pub slice_tolerance: Option<f64>,
     /// Whether to compute Spencer's curves F_f(θ), F_m(θ).
     pub curves: bool,
+    /// Other methods to report.
+    pub methods: Vec<MethodName>,
+    /// Morgenstern–Price's inter-slice function.
+    pub interslice_function: InterSliceFunction,
 }
 
 /// One slip surface, or a search.
@@ -160,10 +166,14 @@ impl SpencerRequest {
                  for the critical circle",
             ));
         };
+        let mut methods = self.methods.clone();
+        methods.dedup();
         Ok(SpencerInput {
             target,
             slice_tolerance,
             curves: self.curves,
+            methods,
+            interslice_function: interslice_function(self.interslice_function.as_deref())?,
         })
     }
 

@@ -8,6 +8,7 @@
 pub mod analysed;
 pub mod drawing;
 pub mod input;
+pub mod methods;
 pub mod report;
 pub mod request;
 pub mod response;
@@ -54,7 +55,8 @@ use thrustline_solver::slope::section::{SectionProblem, SlipShape};
         ("fredlund_krahn_1977" = (summary = "Fredlund & Krahn (1977) case 1, a section facing left: Spencer 2.073, Bishop 2.080 (SPEC §4.5)",
             value = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
                                        "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
-                           "circle": {"centre": [120, 90], "radius": 80}, "slices": 100}))),
+                           "circle": {"centre": [120, 90], "radius": 80}, "slices": 100,
+                           "methods": ["morgenstern_price", "bishop", "janbu", "ordinary"]}))),
         ("layered_section" = (summary = "Layers, bedrock, a water table, a surcharge, a line load and a water-filled tension crack (SPEC §4.1)",
             value = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
                                        "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
@@ -249,11 +251,20 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
         _ => None,
     };
+    let methods = (!input.methods.is_empty()).then(|| {
+        methods::methods(
+            &input.methods,
+            &input.interslice_function,
+            &problem.model(),
+            &solution,
+        )
+    });
     Ok(SolvedSlope {
         problem,
         solution,
         search,
         curves,
+        methods,
         refinement,
         solve_time_ms: 0.0,
     })

@@ -139,6 +139,17 @@ pub struct SpencerRequest {
     /// Search for the critical circle instead (`{}` for automatic bounds).
     #[serde(default)]
     pub search: Option<SearchDto>,
+    /// Other methods to report beside Spencer's, for the same slices: `morgenstern_price`,
+    /// `bishop`, `janbu`, `ordinary` (answered in `methods`).
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(max_items = 4)]
+    pub methods: Vec<super::methods::MethodName>,
+    /// Morgenstern–Price's inter-slice function as points [ξ, f], ξ from 0 (toe end) to 1
+    /// (crest end); defaults to the half-sine sin(π·ξ).
+    #[serde(default)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000, examples(json!([[0.0, 0.0], [0.5, 1.0], [1.0, 0.0]])))]
+    pub interslice_function: Option<Vec<[f64; 2]>>,
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]

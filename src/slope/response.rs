@@ -7,6 +7,7 @@ use thrustline_solver::slope::{
 };
 
 use super::analysed::Analysed;
+use super::methods::MethodsDto;
 use super::report::SearchReport;
 
 use crate::limits::MAX_SLICES;
@@ -210,6 +211,9 @@ pub struct SpencerResponse {
     /// With `curves: true`: F_f(θ) and F_m(θ).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub curves: Option<CurvesDto>,
+    /// With `methods`: each method's F for the same slices.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub methods: Option<MethodsDto>,
     /// With `slice_tolerance`: F at each number of slices tried, the last one answered.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slice_refinement: Option<Vec<SliceRefinementDto>>,
@@ -248,6 +252,8 @@ pub struct SolvedSlope {
     pub search: Option<SearchReport>,
     /// With `curves`: F_f(θ) and F_m(θ).
     pub curves: Option<FactorCurves>,
+    /// With `methods`: the other methods' answers.
+    pub methods: Option<MethodsDto>,
     /// With `slice_tolerance`: the refinement.
     pub refinement: Option<Refinement>,
     /// Wall time of the solve in milliseconds.
@@ -428,6 +434,7 @@ impl SpencerResponse {
                 ys: search.grid.ys.clone(),
                 factor_of_safety: search.grid.factors.clone(),
             }),
+            methods: solved.methods.clone(),
             curves: solved.curves.as_ref().map(|c| CurvesDto {
                 theta_deg: c.theta_deg.clone(),
                 force_factor: c.force_factor.clone(),

@@ -397,3 +397,51 @@ fn given_bounds_are_hard() {
     assert_eq!(found.regrids, 0);
     assert!(found.factor_of_safety.unwrap() > 0.984);
 }
+
+#[test]
+fn fredlund_krahn_case_1_by_every_method() {
+    use crate::slope::spencer::methods::{
+        bishop, janbu, morgenstern_price, ordinary, InterSliceFunction,
+    };
+    // Independent integration of the same circle (200,000 strips, weights at the strip
+    // middles; Bishop's and Janbu's textbook fixed points): ordinary 1.92768, Bishop 2.07563,
+    // Janbu simplified 1.87702. Published (their
+    // slices): ordinary 1.928, Bishop 2.080, Spencer 2.073, Morgenstern–Price (half-sine) 2.076.
+    let parts = one_soil(
+        &[(0.0, 60.0), (60.0, 60.0), (140.0, 20.0), (180.0, 20.0)],
+        120.0,
+        600.0,
+        20.0,
+    );
+    let circle = SlipShape::Circle {
+        centre: (120.0, 90.0),
+        radius: 80.0,
+    };
+    let (p, s) = solve(parts, circle, 1000);
+    let model = p.model();
+    let close = |name: &str, got: Option<f64>, want: f64, tolerance: f64| {
+        let got = got.unwrap_or(f64::NAN);
+        assert!((got - want).abs() < tolerance, "{name}: {got} vs {want}");
+    };
+    close("ordinary", ordinary(model).factor_of_safety, 1.92768, 1e-4);
+    close("Bishop", bishop(model).factor_of_safety, 2.07563, 1e-4);
+    close("Janbu", janbu(model).factor_of_safety, 1.87702, 1e-4);
+    let spencer = (s.factor_of_safety.unwrap(), s.theta_rad.unwrap().tan());
+    let mp = morgenstern_price(model, &InterSliceFunction::HalfSine, spencer);
+    // An independent GLE iteration (Fredlund & Krahn's own scheme: X = λ·f·E by fixed point,
+    // F_f and F_m crossed in λ; 4000 strips) gives F = 2.07140, λ = 0.32321 for the half-sine and
+    // F = 2.07185, λ = 0.25762 for f ≡ 1; the published 2.076 is within their slicing.
+    close("Morgenstern–Price", mp.factor_of_safety, 2.07140, 1e-4);
+    close("Morgenstern–Price λ", mp.lambda, 0.32321, 1e-3);
+    close(
+        "Morgenstern–Price (published)",
+        mp.factor_of_safety,
+        2.076,
+        5e-3,
+    );
+    close("Spencer λ by GLE", Some(spencer.1), 0.25762, 1e-4);
+    // f ≡ 1 is Spencer: the same F and λ = tan θ to 1e-9.
+    let constant = morgenstern_price(model, &InterSliceFunction::Constant, (spencer.0 * 1.1, 0.0));
+    close("M–P constant F", constant.factor_of_safety, spencer.0, 1e-9);
+    close("M–P constant λ", constant.lambda, spencer.1, 1e-9);
+}

@@ -46,9 +46,9 @@ pub(super) struct SliceResultant {
 
 pub(super) struct Equations {
     pub terms: Vec<SliceTerms>,
-    force_scale: f64,
-    moment_scale: f64,
-    known_moment: f64,
+    pub force_scale: f64,
+    pub moment_scale: f64,
+    pub known_moment: f64,
 }
 
 impl Equations {

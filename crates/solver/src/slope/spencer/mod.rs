@@ -31,6 +31,7 @@
 
 mod describe;
 mod equations;
+pub mod methods;
 mod newton;
 mod problem;
 mod solution;

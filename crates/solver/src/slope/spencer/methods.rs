@@ -1,0 +1,222 @@
+//! The methods engineers compare with Spencer's (SPEC §4.3), on the same slices: the ordinary
+//! method (Fellenius), Bishop's simplified, Janbu's simplified (uncorrected) and
+//! Morgenstern–Price with any inter-slice function.
+//!
+//! # Morgenstern–Price
+//! The inter-slice force on boundary j is E_j·(1, λ·f_j) (E horizontal, compression positive;
+//! f the inter-slice function at the boundary's x). Each slice's normal and tangential
+//! equilibrium with S = (c'l + (N − ul) tan φ')/F gives E across it:
+//!
+//! ```text
+//!   E_{i+1}·D_{i+1} = c'l + (A_n − ul) tan φ' − F·A_t + E_i·D_i,
+//!   D_j = F·(cos α + λ f_j sin α) − tan φ'·(λ f_j cos α − sin α)     (α of slice i),
+//! ```
+//!
+//! from E_0 = 0; force equilibrium needs E_n = 0, moment equilibrium the same equation as
+//! Spencer's, Σ b_i × Q_i = Σ M_i with Q_i = E_i g_i − E_{i+1} g_{i+1} (the sum of the slices'
+//! moments about their base middles). With f ≡ 1 these are Spencer's equations (λ = tan θ).
+//! D_j > 0 plays the part of m_α > 0. Solved by damped Newton on (F, λ) from Spencer's answer.
+
+use super::equations::Equations;
+use crate::slope::slices::SliceModel;
+
+/// The inter-slice function of Morgenstern–Price.
+#[derive(Debug, Clone, PartialEq)]
+pub enum InterSliceFunction {
+    /// f = sin(π·ξ), ξ = (x − x_l)/(x_r − x_l) along the mass.
+    HalfSine,
+    /// f ≡ 1 (Spencer's parallel forces).
+    Constant,
+    /// f(ξ) by linear interpolation between points (ξ, f), ξ in [0, 1] increasing.
+    Points(Vec<(f64, f64)>),
+}
+
+impl InterSliceFunction {
+    fn at(&self, xi: f64) -> f64 {
+        match self {
+            Self::HalfSine => (std::f64::consts::PI * xi).sin(),
+            Self::Constant => 1.0,
+            Self::Points(points) => {
+                let i = points.partition_point(|p| p.0 < xi);
+                match (i.checked_sub(1).map(|k| points[k]), points.get(i)) {
+                    (Some(a), Some(b)) if b.0 > a.0 => a.1 + (b.1 - a.1) * (xi - a.0) / (b.0 - a.0),
+                    (_, Some(b)) => b.1,
+                    (Some(a), None) => a.1,
+                    (None, None) => 0.0,
+                }
+            }
+        }
+    }
+}
+
+/// F of one method; `None` when its equation has no root (or, for the moment methods, when the
+/// surface has no centre of rotation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MethodFactor {
+    /// The factor of safety.
+    pub factor_of_safety: Option<f64>,
+    /// Morgenstern–Price's λ.
+    pub lambda: Option<f64>,
+    /// Newton iterations (Morgenstern–Price).
+    pub iterations: usize,
+}
+
+impl MethodFactor {
+    fn plain(f: Option<f64>) -> Self {
+        Self {
+            factor_of_safety: f,
+            lambda: None,
+            iterations: 0,
+        }
+    }
+}
+
+/// The ordinary method (Fellenius): N = the known forces' normal component, moments about the
+/// centre. `None` without a centre of rotation or when nothing drives the mass.
+pub fn ordinary(model: &SliceModel) -> MethodFactor {
+    if !model.has_moment_centre {
+        return MethodFactor::plain(None);
+    }
+    let equations = Equations::new(model);
+    let (mut driving, mut resisting) = (0.0, 0.0);
+    for t in &equations.terms {
+        let (s, c) = (t.sin_alpha, t.cos_alpha);
+        // The known force K from its components along and across the base.
+        let kx = -t.a_t * c + t.a_n * s;
+        let ky = -t.a_t * s - t.a_n * c;
+        let (dx, dy) = t.arm;
+        let normal = t.a_n;
+        driving += dx * ky - dy * kx + t.moment + normal * (dx * c + dy * s);
+        resisting += t.resistance * (dx * s - dy * c);
+    }
+    let f = -resisting / driving;
+    MethodFactor::plain((driving < 0.0 && f.is_finite() && f > 0.0).then_some(f))
+}
+
+/// Bishop's simplified method: the moment equation with horizontal inter-slice forces.
+pub fn bishop(model: &SliceModel) -> MethodFactor {
+    if !model.has_moment_centre {
+        return MethodFactor::plain(None);
+    }
+    let mut evaluations = 0;
+    MethodFactor::plain(Equations::new(model).f_at_theta(0.0, true, &mut evaluations))
+}
+
+/// Janbu's simplified method (uncorrected): force equilibrium with horizontal inter-slice
+/// forces.
+pub fn janbu(model: &SliceModel) -> MethodFactor {
+    let mut evaluations = 0;
+    MethodFactor::plain(Equations::new(model).f_at_theta(0.0, false, &mut evaluations))
+}
+
+/// Scaled residuals (E_n/ΣW, moment/(ΣW·L)) of Morgenstern–Price at (F, λ); `None` where a D
+/// is not positive.
+fn mp_residuals(
+    equations: &Equations,
+    f_values: &[f64],
+    (f, lambda): (f64, f64),
+) -> Option<(f64, f64)> {
+    let mut e = 0.0;
+    let mut moment = -equations.known_moment;
+    for (i, t) in equations.terms.iter().enumerate() {
+        let d = |fj: f64| {
+            f * (t.cos_alpha + lambda * fj * t.sin_alpha)
+                - t.tan_phi * (lambda * fj * t.cos_alpha - t.sin_alpha)
+        };
+        let (d_left, d_right) = (d(f_values[i]), d(f_values[i + 1]));
+        if !(d_right > 0.0 && d_left > 0.0) {
+            return None;
+        }
+        let e_next = (t.resistance - f * t.a_t + e * d_left) / d_right;
+        let qx = e - e_next;
+        let qy = lambda * (f_values[i] * e - f_values[i + 1] * e_next);
+        moment += t.arm.0 * qy - t.arm.1 * qx;
+        e = e_next;
+    }
+    let r = (e / equations.force_scale, moment / equations.moment_scale);
+    (r.0.is_finite() && r.1.is_finite()).then_some(r)
+}
+
+/// Morgenstern–Price with `function`, by damped Newton on (F, λ) from `start` (Spencer's F and
+/// tan θ, say).
+pub fn morgenstern_price(
+    model: &SliceModel,
+    function: &InterSliceFunction,
+    start: (f64, f64),
+) -> MethodFactor {
+    const SOLVED: f64 = 1e-11;
+    let equations = Equations::new(model);
+    let n = model.slices.len();
+    let (x0, x1) = match (model.slices.first(), model.slices.last()) {
+        (Some(a), Some(b)) => (a.x_left, b.x_right),
+        _ => return MethodFactor::plain(None),
+    };
+    let f_values: Vec<f64> = (0..=n)
+        .map(|j| {
+            let x = if j == n { x1 } else { model.slices[j].x_left };
+            function.at((x - x0) / (x1 - x0))
+        })
+        .collect();
+    let merit = |r: (f64, f64)| r.0.hypot(r.1);
+    let mut x = start;
+    let mut iterations = 0;
+    let Some(mut r) = mp_residuals(&equations, &f_values, x) else {
+        return MethodFactor::plain(None);
+    };
+    for _ in 0..60 {
+        if merit(r) <= SOLVED {
+            return MethodFactor {
+                factor_of_safety: Some(x.0),
+                lambda: Some(x.1),
+                iterations,
+            };
+        }
+        iterations += 1;
+        // Central differences: the residuals are smooth where every D is positive.
+        let (hf, hl) = (1e-7 * x.0, 1e-7 * x.1.abs().max(1e-3));
+        let diff = |dx: (f64, f64)| {
+            let plus = mp_residuals(&equations, &f_values, (x.0 + dx.0, x.1 + dx.1))?;
+            let minus = mp_residuals(&equations, &f_values, (x.0 - dx.0, x.1 - dx.1))?;
+            let h = if dx.0 != 0.0 { dx.0 } else { dx.1 };
+            Some((
+                (plus.0 - minus.0) / (2.0 * h),
+                (plus.1 - minus.1) / (2.0 * h),
+            ))
+        };
+        let (Some(d_f), Some(d_l)) = (diff((hf, 0.0)), diff((0.0, hl))) else {
+            break;
+        };
+        let det = d_f.0 * d_l.1 - d_l.0 * d_f.1;
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        let mut step = (
+            -(r.0 * d_l.1 - r.1 * d_l.0) / det,
+            -(d_f.0 * r.1 - d_f.1 * r.0) / det,
+        );
+        // F stays positive; λ moves by at most 0.5 a step.
+        let scale = 1.0f64
+            .min(0.5 * x.0 / step.0.abs().max(f64::MIN_POSITIVE))
+            .min(0.5 / step.1.abs().max(f64::MIN_POSITIVE));
+        step = (step.0 * scale, step.1 * scale);
+        let mut accepted = None;
+        for _ in 0..40 {
+            let next = (x.0 + step.0, x.1 + step.1);
+            if let Some(rn) = mp_residuals(&equations, &f_values, next) {
+                if merit(rn) < merit(r) {
+                    accepted = Some((next, rn));
+                    break;
+                }
+            }
+            step = (0.5 * step.0, 0.5 * step.1);
+        }
+        let Some((next, rn)) = accepted else { break };
+        (x, r) = (next, rn);
+    }
+    let solved = merit(r) <= SOLVED;
+    MethodFactor {
+        factor_of_safety: solved.then_some(x.0),
+        lambda: solved.then_some(x.1),
+        iterations,
+    }
+}
