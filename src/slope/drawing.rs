@@ -4,7 +4,7 @@
 use thrustline_solver::slope::Sliced;
 
 use super::analysed::{Analysed, PlacedCircle};
-use super::response::SolvedSlope;
+use super::report::SolvedSlope;
 use crate::svg::{escape, heat, Canvas};
 
 /// What is drawn of the ground, in the request's coordinates.

@@ -13,6 +13,7 @@ pub mod report;
 pub mod request;
 pub mod response;
 pub mod section;
+pub mod warnings;
 
 use std::time::{Duration, Instant};
 
@@ -29,8 +30,9 @@ use crate::AppState;
 use analysed::Analysed;
 use input::{SectionSearch, SpencerInput, Target};
 use report::SearchReport;
+use report::{Refinement, SolvedSlope};
 use request::SpencerRequest;
-use response::{Refinement, SolvedSlope, SpencerResponse};
+use response::SpencerResponse;
 use thrustline_solver::slope::section::search::{search_circles, CircleSearchSettings};
 use thrustline_solver::slope::section::{SectionProblem, SlipShape};
 

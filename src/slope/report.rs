@@ -1,8 +1,14 @@
-//! How a search went, from the simple slope's search or a section's: what the response and the
-//! drawing read of it.
+//! What a solve produced — the surface analysed, its solution and the extras asked for, and how
+//! a search went (the simple slope's or a section's): what the response, the warnings and the
+//! drawing read.
 
 use thrustline_solver::slope::section::search::CircleSearch;
-use thrustline_solver::slope::{FactorGrid, SearchSolution};
+use thrustline_solver::slope::{
+    FactorCurves, FactorGrid, RefinementStep, SearchSolution, SpencerSolution,
+};
+
+use super::analysed::Analysed;
+use super::methods::MethodsDto;
 
 /// How a search went.
 #[derive(Debug, Clone)]
@@ -55,4 +61,35 @@ impl SearchReport {
             unsolved_near_minimum: s.unsolved_near_minimum,
         }
     }
+}
+
+/// How a refinement went: the steps, and whether F settled within the tolerance.
+#[derive(Debug, Clone)]
+pub struct Refinement {
+    /// The relative tolerance asked for.
+    pub tolerance: f64,
+    /// F at each slice count.
+    pub steps: Vec<RefinementStep>,
+    /// Whether the last doubling changed F by less than the tolerance.
+    pub is_settled: bool,
+}
+
+/// A solved Spencer request: the circle analysed (or found), its solution and the extras asked
+/// for.
+#[derive(Debug, Clone)]
+pub struct SolvedSlope {
+    /// The slip surface analysed, at the slice count answered.
+    pub problem: Analysed,
+    /// Its solution.
+    pub solution: SpencerSolution,
+    /// With `search`: how the search went.
+    pub search: Option<SearchReport>,
+    /// With `curves`: F_f(θ) and F_m(θ).
+    pub curves: Option<FactorCurves>,
+    /// With `methods`: the other methods' answers.
+    pub methods: Option<MethodsDto>,
+    /// With `slice_tolerance`: the refinement.
+    pub refinement: Option<Refinement>,
+    /// Wall time of the solve in milliseconds.
+    pub solve_time_ms: f64,
 }

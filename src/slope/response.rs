@@ -2,15 +2,12 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::Serialize;
-use thrustline_solver::slope::{
-    FactorCurves, RefinementStep, Sliced, SpencerSolution, SpencerStatus,
-};
+use thrustline_solver::slope::{Sliced, SpencerStatus};
 
-use super::analysed::Analysed;
 use super::methods::MethodsDto;
-use super::report::SearchReport;
+use super::report::SolvedSlope;
+use super::warnings::warnings;
 
-use crate::limits::MAX_SLICES;
 use utoipa::ToSchema;
 
 /// F over the grid of centres, for contour plots.
@@ -229,37 +226,6 @@ pub struct SliceRefinementDto {
     pub factor_of_safety: Option<f64>,
 }
 
-/// How a refinement went: the steps, and whether F settled within the tolerance.
-#[derive(Debug, Clone)]
-pub struct Refinement {
-    /// The relative tolerance asked for.
-    pub tolerance: f64,
-    /// F at each slice count.
-    pub steps: Vec<RefinementStep>,
-    /// Whether the last doubling changed F by less than the tolerance.
-    pub is_settled: bool,
-}
-
-/// A solved Spencer request: the circle analysed (or found), its solution and the extras asked
-/// for.
-#[derive(Debug, Clone)]
-pub struct SolvedSlope {
-    /// The slip surface analysed, at the slice count answered.
-    pub problem: Analysed,
-    /// Its solution.
-    pub solution: SpencerSolution,
-    /// With `search`: how the search went.
-    pub search: Option<SearchReport>,
-    /// With `curves`: F_f(θ) and F_m(θ).
-    pub curves: Option<FactorCurves>,
-    /// With `methods`: the other methods' answers.
-    pub methods: Option<MethodsDto>,
-    /// With `slice_tolerance`: the refinement.
-    pub refinement: Option<Refinement>,
-    /// Wall time of the solve in milliseconds.
-    pub solve_time_ms: f64,
-}
-
 impl SpencerResponse {
     /// The answer to a solved request.
     pub fn new(solved: &SolvedSlope) -> Self {
@@ -269,84 +235,7 @@ impl SpencerResponse {
             SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
             SpencerStatus::MomentOnly => (false, SpencerStatusDto::MomentOnly, true),
         };
-        let mut warnings = Vec::new();
-        match solution.status {
-        SpencerStatus::Converged => {}
-        SpencerStatus::NoSolution => warnings.push(
-            "no (F, θ) with positive m_α satisfies both equilibrium equations for this circle; \
-             no factor of safety is reported"
-                .to_owned(),
-        ),
-        SpencerStatus::MomentOnly => warnings.push(
-            "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
-             moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
-             slice forces are Bishop's (θ = 0)"
-                .to_owned(),
-        ),
-    }
-        let one_based = |list: &[usize]| {
-            list.iter()
-                .map(|i| (i + 1).to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        if !solution.small_m_alpha_slices.is_empty() {
-            warnings.push(format!(
-                "m_alpha < {} at slices {}: base forces there are sensitive to F",
-                thrustline_solver::slope::spencer::SMALL_DENOMINATOR,
-                one_based(&solution.small_m_alpha_slices)
-            ));
-        }
-        if !solution.negative_effective_normal_slices.is_empty() {
-            warnings.push(format!(
-                "negative effective normal force (tension) at slices {}",
-                one_based(&solution.negative_effective_normal_slices)
-            ));
-        }
-        let outside: Vec<usize> = solution
-            .thrust_line
-            .iter()
-            .filter(|t| !t.is_inside_slice)
-            .map(|t| t.boundary)
-            .collect();
-        if !outside.is_empty() {
-            warnings.push(format!(
-                "the line of thrust leaves the sliding mass at boundaries {}",
-                outside
-                    .iter()
-                    .map(ToString::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ));
-        }
-        if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
-            warnings.push(format!(
-                "slice_tolerance {} not reached before {MAX_SLICES} slices",
-                refinement.tolerance
-            ));
-        }
-        if let Some(search) = &solved.search {
-            if search.is_on_edge && search.hard {
-                warnings.push(
-                    "the critical centre lies on the edge of the given search bounds: F is the \
-                     least inside them, the true minimum may lie outside"
-                        .to_owned(),
-                );
-            } else if search.is_on_edge {
-                warnings.push(
-                    "the critical centre lies on the edge of the search region even after moving \
-                     the grid: the true minimum may lie outside it"
-                        .to_owned(),
-                );
-            }
-            if search.unsolved_near_minimum {
-                warnings.push(format!(
-                    "circles next to the critical one have no Spencer solution ({} in the whole \
-                     search): the least F may lie among them",
-                    search.unsolved.unwrap_or(0)
-                ));
-            }
-        }
+        let warnings = warnings(solved);
         let model = problem.model();
         let to_x = |x: f64| problem.request_x(x);
         let slices = if has_forces {

@@ -1,0 +1,90 @@
+//! The warnings of a Spencer answer: what the engineer should look at before trusting F.
+
+use thrustline_solver::slope::SpencerStatus;
+
+use super::report::SolvedSlope;
+use crate::limits::MAX_SLICES;
+
+/// Every warning that applies to `solved`, in words.
+pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
+    let solution = &solved.solution;
+    let mut warnings = Vec::new();
+    match solution.status {
+        SpencerStatus::Converged => {}
+        SpencerStatus::NoSolution => warnings.push(
+            "no (F, θ) with positive m_α satisfies both equilibrium equations for this circle; \
+             no factor of safety is reported"
+                .to_owned(),
+        ),
+        SpencerStatus::MomentOnly => warnings.push(
+            "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
+             moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
+             slice forces are Bishop's (θ = 0)"
+                .to_owned(),
+        ),
+    }
+    let one_based = |list: &[usize]| {
+        list.iter()
+            .map(|i| (i + 1).to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if !solution.small_m_alpha_slices.is_empty() {
+        warnings.push(format!(
+            "m_alpha < {} at slices {}: base forces there are sensitive to F",
+            thrustline_solver::slope::spencer::SMALL_DENOMINATOR,
+            one_based(&solution.small_m_alpha_slices)
+        ));
+    }
+    if !solution.negative_effective_normal_slices.is_empty() {
+        warnings.push(format!(
+            "negative effective normal force (tension) at slices {}",
+            one_based(&solution.negative_effective_normal_slices)
+        ));
+    }
+    let outside: Vec<usize> = solution
+        .thrust_line
+        .iter()
+        .filter(|t| !t.is_inside_slice)
+        .map(|t| t.boundary)
+        .collect();
+    if !outside.is_empty() {
+        warnings.push(format!(
+            "the line of thrust leaves the sliding mass at boundaries {}",
+            outside
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
+    if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
+        warnings.push(format!(
+            "slice_tolerance {} not reached before {MAX_SLICES} slices",
+            refinement.tolerance
+        ));
+    }
+    if let Some(search) = &solved.search {
+        if search.is_on_edge && search.hard {
+            warnings.push(
+                "the critical centre lies on the edge of the given search bounds: F is the \
+                     least inside them, the true minimum may lie outside"
+                    .to_owned(),
+            );
+        } else if search.is_on_edge {
+            warnings.push(
+                "the critical centre lies on the edge of the search region even after moving \
+                     the grid: the true minimum may lie outside it"
+                    .to_owned(),
+            );
+        }
+        if search.unsolved_near_minimum {
+            warnings.push(format!(
+                "circles next to the critical one have no Spencer solution ({} in the whole \
+                     search): the least F may lie among them",
+                search.unsolved.unwrap_or(0)
+            ));
+        }
+    }
+    warnings
+}
