@@ -24,6 +24,7 @@ use crate::limits::{
 };
 use crate::validation::{count, finite, number};
 use thrustline_solver::slope::spencer::methods::InterSliceFunction;
+use thrustline_solver::slope::spencer::NegativeEffectiveStress;
 
 /// A validated Spencer request, ready for the solver.
 #[derive(Debug, Clone)]
@@ -38,6 +39,8 @@ pub struct SpencerInput {
     pub methods: Vec<MethodName>,
     /// Morgenstern–Price's inter-slice function.
     pub interslice_function: InterSliceFunction,
+    /// The treatment of tension at slice bases.
+    pub negative_effective_stress: NegativeEffectiveStress,
 }
 
 /// One slip surface, or a search.
@@ -174,6 +177,7 @@ impl SpencerRequest {
             curves: self.curves,
             methods,
             interslice_function: interslice_function(self.interslice_function.as_deref())?,
+            negative_effective_stress: self.negative_effective_stress.into(),
         })
     }
 

@@ -21,6 +21,7 @@ use axum::extract::State;
 use thrustline_solver::slope::{
     factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
     RefinementStatus, SearchSettings, SearchStatus, Sliced, SlopeProblem, SolverFailure,
+    SpencerSettings,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -148,12 +149,17 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         seconds: time_limit.as_secs_f64(),
         advice,
     };
+    let spencer = SpencerSettings {
+        negative_effective_stress: input.negative_effective_stress,
+        ..SpencerSettings::default()
+    };
     let (problem, search) =
         match input.target {
             Target::Surface(problem) => (problem, None),
             Target::Search(grid, search_problem) => {
                 let settings = SearchSettings {
                     time_limit: Some(time_limit),
+                    spencer,
                     ..SearchSettings::default()
                 };
                 let found = search_critical_circle(&search_problem, grid, &settings);
@@ -189,6 +195,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
             Target::SectionSearch(search) => {
                 let settings = CircleSearchSettings {
                     deadline: Some(deadline),
+                    spencer,
                     ..CircleSearchSettings::default()
                 };
                 let SectionSearch {
@@ -224,13 +231,14 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         };
     let (problem, solution, refinement) = match input.slice_tolerance {
         None => {
-            let solution = solve_spencer(&problem.model(), &Default::default());
+            let solution = solve_spencer(&problem.model(), &spencer);
             (problem, solution, None)
         }
         Some(tolerance) => {
             let settings = RefinementSettings {
                 max_slices: MAX_SLICES,
                 deadline: Some(deadline),
+                spencer,
                 ..RefinementSettings::new(tolerance)
             };
             let refined = refine_slices(problem, &settings)?;

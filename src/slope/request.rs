@@ -150,6 +150,14 @@ pub struct SpencerRequest {
     #[serde(default)]
     #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000, examples(json!([[0.0, 0.0], [0.5, 1.0], [1.0, 0.0]])))]
     pub interslice_function: Option<Vec<[f64; 2]>>,
+    /// Where a slice base comes out in tension (negative effective normal force): `keep` the
+    /// classic equations (the default: Spencer's and the thesis' published numbers; a root
+    /// held up by net tension is answered `unphysical`, never converged), `drop_friction`
+    /// (no tension: the frictional term is dropped on those slices, c' kept, and the equations
+    /// solved again, as Slide2 and SLOPE/W do) or `drop_strength` (c' dropped too).
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub negative_effective_stress: NegativeEffectiveStressDto,
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
@@ -362,4 +370,27 @@ pub struct TensionCrackDto {
     #[schema(nullable)]
     #[schema(minimum = 0.0)]
     pub water_depth: f64,
+}
+
+/// The treatment of tension at slice bases.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum NegativeEffectiveStressDto {
+    /// The classic equations (the published numbers); net tension makes a root unphysical.
+    #[default]
+    Keep,
+    /// No tension: the frictional term dropped where N' < 0, c' kept.
+    DropFriction,
+    /// No strength in tension: c' dropped as well.
+    DropStrength,
+}
+
+impl From<NegativeEffectiveStressDto> for thrustline_solver::slope::spencer::NegativeEffectiveStress {
+    fn from(dto: NegativeEffectiveStressDto) -> Self {
+        match dto {
+            NegativeEffectiveStressDto::Keep => Self::Keep,
+            NegativeEffectiveStressDto::DropFriction => Self::DropFriction,
+            NegativeEffectiveStressDto::DropStrength => Self::DropStrength,
+        }
+    }
 }

@@ -151,6 +151,10 @@ pub enum SpencerStatusDto {
     /// alone fixes F exactly for a circle (the base shear c'·l/F does not depend on the normal
     /// forces): F is reported, θ and the line of thrust are not; slice forces are Bishop's.
     MomentOnly,
+    /// The equations have a root, but F is outside 1e-6…1e6 or the frictional terms add up to
+    /// a negative resistance (the mass held up by tension at the base): no F is reported.
+    /// `negative_effective_stress: drop_friction` answers such surfaces.
+    Unphysical,
 }
 
 /// Spencer's factor of safety, the inter-slice inclination and everything behind them.
@@ -234,6 +238,7 @@ impl SpencerResponse {
             SpencerStatus::Converged => (true, SpencerStatusDto::Converged, true),
             SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
             SpencerStatus::MomentOnly => (false, SpencerStatusDto::MomentOnly, true),
+            SpencerStatus::Unphysical => (false, SpencerStatusDto::Unphysical, false),
         };
         let warnings = warnings(solved);
         let model = problem.model();

@@ -22,6 +22,13 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
              slice forces are Bishop's (θ = 0)"
                 .to_owned(),
         ),
+        SpencerStatus::Unphysical => warnings.push(format!(
+            "the equilibrium equations have a root F = {:e} that is not physical (F outside \
+             1e-6…1e6, or the mass held up by tension at the base: Σ N'·tan φ' < 0); no factor \
+             of safety is reported — negative_effective_stress: drop_friction solves such \
+             surfaces without tension",
+            solution.unphysical_root.unwrap_or(f64::NAN)
+        )),
     }
     let one_based = |list: &[usize]| {
         list.iter()
@@ -34,6 +41,13 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
             "m_alpha < {} at slices {}: base forces there are sensitive to F",
             thrustline_solver::slope::spencer::SMALL_DENOMINATOR,
             one_based(&solution.small_m_alpha_slices)
+        ));
+    }
+    if !solution.tension_dropped_slices.is_empty() {
+        warnings.push(format!(
+            "bases in tension at slices {}: their strength in tension was dropped \
+             (negative_effective_stress) and the equations solved again",
+            one_based(&solution.tension_dropped_slices)
         ));
     }
     if !solution.negative_effective_normal_slices.is_empty() {

@@ -90,6 +90,8 @@ pub(super) fn describe(
         thrust_line,
         small_m_alpha_slices,
         negative_effective_normal_slices,
+        unphysical_root: None,
+        tension_dropped_slices: Vec::new(),
         residual: Some(residuals.force.abs().max(residuals.moment.abs())).filter(|r| r.is_finite()),
     }
 }

@@ -46,7 +46,10 @@ use crate::slope::slices::SliceModel;
 
 pub use describe::SMALL_DENOMINATOR;
 pub use problem::{ExternalLoad, Seismic, SlopeProblem, Soil};
-pub use solution::{SliceForces, SpencerSettings, SpencerSolution, SpencerStatus, ThrustPoint};
+pub use solution::{
+    NegativeEffectiveStress, SliceForces, SpencerSettings, SpencerSolution, SpencerStatus,
+    ThrustPoint,
+};
 
 /// Spencer's F for one slip surface without the per-slice forces: what a search needs.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,17 +61,39 @@ pub struct SpencerFactor {
     pub theta_rad: Option<f64>,
 }
 
+/// The range of F a physical root lies in (the bracketing range of the solver).
+pub const PHYSICAL_F: (f64, f64) = (1e-6, 1e6);
+
 /// Spencer's (F, θ) alone, without the per-slice forces: what a search over circles needs.
-/// `None` when the equations have no solution.
+/// `None` when the equations have no physical solution.
 pub fn solve_spencer_factor(
     model: &SliceModel,
     settings: &SpencerSettings,
 ) -> Option<SpencerFactor> {
+    if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
+        let s = solve_spencer(model, settings);
+        return s.factor_of_safety.map(|f| SpencerFactor {
+            factor_of_safety: f,
+            theta_rad: s.theta_rad,
+        });
+    }
     let equations = Equations::new(model);
+    // φ' = 0 on a circle: the moment equation about the centre alone fixes F whatever the
+    // inter-slice forces (the base normals pass through the centre, the shear is c'l/F), so
+    // Bishop's F is Spencer's; no need to look for θ.
+    if equations.is_frictionless() && model.has_moment_centre {
+        let mut evaluations = 0;
+        return equations
+            .f_at_theta(0.0, true, &mut evaluations)
+            .map(|f| SpencerFactor {
+                factor_of_safety: f,
+                theta_rad: None,
+            });
+    }
     let mut solved = solve_equations(&equations, settings);
     solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
     match (solved.root, solved.bishop) {
-        (Some((f, theta)), _) => Some(SpencerFactor {
+        (Some((f, theta)), _) => is_physical(&equations, f, theta).then_some(SpencerFactor {
             factor_of_safety: f,
             theta_rad: Some(theta),
         }),
@@ -81,13 +106,76 @@ pub fn solve_spencer_factor(
     }
 }
 
-/// Solves Spencer's two equations for the slip circle of `problem`.
+/// Whether a root is physical: F within [`PHYSICAL_F`] and Σ N'·tan φ' ≥ 0.
+fn is_physical(equations: &Equations, f: f64, theta: f64) -> bool {
+    let (sin_t, cos_t) = theta.sin_cos();
+    let friction: f64 = equations
+        .terms
+        .iter()
+        .map(|t| {
+            let q = Equations::q(t, f, (sin_t, cos_t)).q;
+            let normal = t.a_n + q * (t.alpha - theta).sin();
+            (normal - t.pore_force) * t.tan_phi
+        })
+        .sum();
+    (PHYSICAL_F.0..=PHYSICAL_F.1).contains(&f) && friction >= 0.0
+}
+
+/// Solves Spencer's two equations for the slip surface of `model`, with the treatment of
+/// negative effective stress of `settings`.
 pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
+    let mut solution = solve_classic(model, settings);
+    if settings.negative_effective_stress == NegativeEffectiveStress::Keep {
+        return solution;
+    }
+    let drop_cohesion = settings.negative_effective_stress == NegativeEffectiveStress::DropStrength;
+    let mut current = model.clone();
+    let mut dropped: Vec<usize> = Vec::new();
+    // Drop the strength of slices in tension until none with friction is left in tension
+    // (each round drops at least one more slice, so at most N rounds; 50 in practice).
+    for _ in 0..50 {
+        let newly: Vec<usize> = solution
+            .negative_effective_normal_slices
+            .iter()
+            .copied()
+            .filter(|&i| current.slices[i].tan_phi > 0.0 || (drop_cohesion && current.slices[i].cohesion > 0.0))
+            .collect();
+        if newly.is_empty() || solution.status == SpencerStatus::NoSolution {
+            break;
+        }
+        for &i in &newly {
+            current.slices[i].tan_phi = 0.0;
+            if drop_cohesion {
+                current.slices[i].cohesion = 0.0;
+            }
+        }
+        dropped.extend(newly);
+        solution = solve_classic(&current, settings);
+    }
+    dropped.sort_unstable();
+    solution.tension_dropped_slices = dropped;
+    solution
+}
+
+/// The classic equations, with the physical check.
+fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
     let equations = Equations::new(model);
     let mut solved = solve_equations(&equations, settings);
     // Bishop's F is a moment equation about a centre of rotation: without one it means nothing.
     solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
     match (solved.root, solved.bishop) {
+        (Some((f, theta)), _) if !is_physical(&equations, f, theta) => {
+            // Described, so that the slices in tension are known; F and θ withheld.
+            let s = describe(model, &equations, f, theta, &solved);
+            SpencerSolution {
+                status: SpencerStatus::Unphysical,
+                factor_of_safety: None,
+                theta_rad: None,
+                unphysical_root: Some(f),
+                thrust_line: Vec::new(),
+                ..s
+            }
+        }
         (Some((f, theta)), _) => describe(model, &equations, f, theta, &solved),
         (None, Some(bishop)) if equations.is_frictionless() => {
             let mut s = describe(model, &equations, bishop, 0.0, &solved);
@@ -96,19 +184,25 @@ pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerS
             s.thrust_line.clear();
             s
         }
-        (None, _) => SpencerSolution {
-            status: SpencerStatus::NoSolution,
-            factor_of_safety: None,
-            theta_rad: None,
-            bishop_factor_of_safety: solved.bishop,
-            iterations: solved.iterations,
-            used_fallback: solved.used_fallback,
-            slice_forces: vec![SliceForces::default(); model.slices.len()],
-            thrust_line: Vec::new(),
-            small_m_alpha_slices: Vec::new(),
-            negative_effective_normal_slices: Vec::new(),
-            residual: None,
-        },
+        (None, _) => no_solution(model, &solved),
+    }
+}
+
+fn no_solution(model: &SliceModel, solved: &newton::EquationsSolution) -> SpencerSolution {
+    SpencerSolution {
+        status: SpencerStatus::NoSolution,
+        factor_of_safety: None,
+        theta_rad: None,
+        bishop_factor_of_safety: solved.bishop,
+        iterations: solved.iterations,
+        used_fallback: solved.used_fallback,
+        slice_forces: vec![SliceForces::default(); model.slices.len()],
+        thrust_line: Vec::new(),
+        small_m_alpha_slices: Vec::new(),
+        negative_effective_normal_slices: Vec::new(),
+        unphysical_root: None,
+        tension_dropped_slices: Vec::new(),
+        residual: None,
     }
 }
 

@@ -8,6 +8,25 @@ pub struct SpencerSettings {
     pub tolerance: f64,
     /// Maximum Newton iterations before the bracketing fallback. Defaults to 50.
     pub max_iterations: usize,
+    /// What to do where the effective normal force on a base comes out negative. Defaults to
+    /// [`NegativeEffectiveStress::Keep`].
+    pub negative_effective_stress: NegativeEffectiveStress,
+}
+
+/// The treatment of a negative effective normal force N' on a slice base (tension, which soil
+/// cannot carry).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum NegativeEffectiveStress {
+    /// The classic equations: N'·tan φ' enters the strength whatever its sign. Spencer's and
+    /// the thesis' published numbers are these; a root where the frictional terms add up to a
+    /// negative resistance is reported as [`SpencerStatus::Unphysical`], never as converged.
+    #[default]
+    Keep,
+    /// No tension: on slices whose N' comes out negative the frictional term is dropped
+    /// (c' kept) and the equations solved again, until no frictional slice is in tension.
+    DropFriction,
+    /// As `DropFriction`, with c' dropped as well on those slices (no strength in tension).
+    DropStrength,
 }
 
 impl Default for SpencerSettings {
@@ -15,6 +34,7 @@ impl Default for SpencerSettings {
         Self {
             tolerance: 1e-12,
             max_iterations: 50,
+            negative_effective_stress: NegativeEffectiveStress::Keep,
         }
     }
 }
@@ -33,6 +53,10 @@ pub enum SpencerStatus {
     /// (the classical φ = 0 analysis). F is reported, θ is not; per-slice forces are Bishop's
     /// (θ = 0) and there is no line of thrust.
     MomentOnly,
+    /// The equations have a root, but not a physical one: F outside 1e-6…1e6, or the
+    /// frictional terms Σ N'·tan φ' add up to a negative resistance (tension at the base
+    /// carried by friction). No F is reported; `unphysical_root` holds the root for the record.
+    Unphysical,
 }
 
 /// Forces on one slice at the solution.
@@ -95,6 +119,11 @@ pub struct SpencerSolution {
     pub small_m_alpha_slices: Vec<usize>,
     /// Slices whose effective normal force is negative at the solution.
     pub negative_effective_normal_slices: Vec<usize>,
+    /// With [`SpencerStatus::Unphysical`]: the root that was rejected.
+    pub unphysical_root: Option<f64>,
+    /// Slices whose frictional strength (and with `DropStrength` cohesion) was dropped because
+    /// their effective normal force came out negative.
+    pub tension_dropped_slices: Vec<usize>,
     /// Largest scaled residual of the two equations at the solution (force / ΣW, moment /
     /// (ΣW·R)).
     /// `None` when there is no solution.

@@ -2,7 +2,7 @@ use std::num::NonZeroUsize;
 
 use super::*;
 use crate::reference::spencer_1967;
-use crate::slope::{SlopeError, SlopeParameter};
+use crate::slope::{Embankment, SlipCircle, SlopeError, SlopeParameter};
 
 /// Spencer (1967) example with the unit weight and the cohesion scaled.
 fn spencer_example(n: usize, unit_weight: f64, cohesion_scale: f64) -> SlopeProblem {
@@ -172,7 +172,9 @@ fn one_slice_is_solved_or_reported_honestly() {
     );
     match s.status {
         SpencerStatus::Converged => assert!(s.residual.unwrap() < 1e-9),
-        SpencerStatus::NoSolution => assert!(s.factor_of_safety.is_none()),
+        SpencerStatus::NoSolution | SpencerStatus::Unphysical => {
+            assert!(s.factor_of_safety.is_none())
+        }
         // φ' = 40° here: the moment-only answer is for φ' = 0 alone.
         SpencerStatus::MomentOnly => panic!("moment-only answer with friction"),
     }
@@ -190,4 +192,65 @@ fn soil_without_strength_is_rejected() {
     assert!(Soil::new(10.0, 1.0, 90.0, 0.0).is_err());
     assert!(Soil::new(10.0, 1.0, 30.0, 1.5).is_err());
     assert!(Soil::new(-1.0, 1.0, 30.0, 0.0).is_err());
+}
+
+/// Issue #15's steep slope with r_u = 0.5: a 2:1e-9 (vertical) face 30.48 high, the circle
+/// through the toe with centre (−62.509, 62.072) from it.
+fn vertical_face_with_high_pore_pressure() -> SlopeProblem {
+    SlopeProblem::new(
+        Embankment::new(30.48, 1e-9).unwrap(),
+        SlipCircle {
+            x: -62.509252886075785,
+            y: 62.071731840088276,
+            lower_end_factor: 0.0,
+        },
+        std::num::NonZeroUsize::new(50).unwrap(),
+        Soil::new(10.0, 18.58, 40.0, 0.5).unwrap(),
+        Seismic::default(),
+        Vec::new(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn a_root_held_up_by_tension_is_not_converged() {
+    // The classic equations have a root F ≈ 2e-15 there with every slice in tension: reported
+    // as unphysical, with no F.
+    let s = solve_spencer(
+        &vertical_face_with_high_pore_pressure().model(),
+        &SpencerSettings::default(),
+    );
+    assert_eq!(s.status, SpencerStatus::Unphysical, "{:?}", s.factor_of_safety);
+    assert!(s.factor_of_safety.is_none());
+    assert!(s.unphysical_root.is_some_and(|f| f < 1e-3));
+}
+
+#[test]
+fn dropping_friction_in_tension_gives_the_cohesive_answer() {
+    // With the frictional term dropped where N' < 0 (c' kept), the mass is held by cohesion
+    // (and friction where the base is in compression): a physical F, no frictional slice left
+    // in tension. Dropping c' as well on those slices can only lower F.
+    let model = vertical_face_with_high_pore_pressure().model();
+    let settings = SpencerSettings {
+        negative_effective_stress: NegativeEffectiveStress::DropFriction,
+        ..SpencerSettings::default()
+    };
+    let s = solve_spencer(&model, &settings);
+    let f = s.factor_of_safety.unwrap();
+    assert!(f > 0.1 && f < 10.0, "F = {f}");
+    assert!(!s.tension_dropped_slices.is_empty());
+    for &i in &s.negative_effective_normal_slices {
+        assert!(s.tension_dropped_slices.contains(&i), "slice {i} in tension with friction");
+    }
+    let settings = SpencerSettings {
+        negative_effective_stress: NegativeEffectiveStress::DropStrength,
+        ..SpencerSettings::default()
+    };
+    let weaker = solve_spencer(&model, &settings);
+    if let Some(g) = weaker.factor_of_safety {
+        assert!(g <= f * (1.0 + 1e-9), "{g} > {f}");
+    }
+    // Spencer's own example keeps its published F under the default treatment.
+    let classic = solve_spencer(&spencer_example(100, 10.0, 1.0).model(), &SpencerSettings::default());
+    assert!((classic.factor_of_safety.unwrap() - 1.06958).abs() < 5e-6);
 }
