@@ -48,8 +48,9 @@ pub struct SpencerInput {
 pub enum Target {
     /// The slip surface to analyse.
     Surface(Analysed),
-    /// The grid to search and everything but the circle.
-    Search(SearchGrid, SearchProblem),
+    /// The grid to search, everything but the circle, and whether the bounds were given (they
+    /// then stay put).
+    Search(SearchGrid, SearchProblem, bool),
     /// A search over a section.
     SectionSearch(Box<SectionSearch>),
 }
@@ -430,5 +431,8 @@ fn search_from(
         lower_end_factor,
         lower_end_factor_max,
     };
-    Ok(Target::Search(grid, problem))
+    let hard = [search.x_min, search.x_max, search.y_min, search.y_max]
+        .iter()
+        .any(Option::is_some);
+    Ok(Target::Search(grid, problem, hard))
 }

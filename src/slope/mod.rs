@@ -156,10 +156,11 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
     let (problem, search) =
         match input.target {
             Target::Surface(problem) => (problem, None),
-            Target::Search(grid, search_problem) => {
+            Target::Search(grid, search_problem, hard_bounds) => {
                 let settings = SearchSettings {
                     time_limit: Some(time_limit),
                     spencer,
+                    hard_bounds,
                     ..SearchSettings::default()
                 };
                 let found = search_critical_circle(&search_problem, grid, &settings);
@@ -190,7 +191,10 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                     search_problem.seismic,
                     Vec::new(),
                 )?;
-                (Analysed::Simple(problem), Some(SearchReport::from(&found)))
+                (
+                    Analysed::Simple(problem),
+                    Some(SearchReport::of_simple(&found, hard_bounds)),
+                )
             }
             Target::SectionSearch(search) => {
                 let settings = CircleSearchSettings {

@@ -25,29 +25,30 @@ pub struct SearchReport {
     pub grid: FactorGrid,
     /// Whether the grid's coordinates are absolute (a section) rather than from the lower end.
     pub absolute: bool,
-    /// Circles that cut a mass but had no solution (sections; the simple search does not
-    /// tell them from circles that cut none).
-    pub unsolved: Option<usize>,
+    /// Circles of the last grid that cut a mass but had no physical Spencer solution.
+    pub unsolved: usize,
+    /// The least Bishop F among them.
+    pub unsolved_bishop_minimum: Option<f64>,
     /// Whether unsolved circles lie at or next to the grid centre of the minimum.
     pub unsolved_near_minimum: bool,
 }
 
-impl From<&SearchSolution> for SearchReport {
-    fn from(s: &SearchSolution) -> Self {
+impl SearchReport {
+    /// The report of the simple slope's search with given (`hard`) or automatic bounds.
+    pub fn of_simple(s: &SearchSolution, hard: bool) -> Self {
         Self {
             evaluations: s.evaluations,
             regrids: s.regrids,
             is_on_edge: s.is_on_edge,
-            hard: false,
+            hard,
             grid: s.grid.clone(),
             absolute: false,
-            unsolved: None,
-            unsolved_near_minimum: false,
+            unsolved: s.unsolved,
+            unsolved_bishop_minimum: s.unsolved_bishop_minimum,
+            unsolved_near_minimum: s.unsolved_near_minimum,
         }
     }
-}
 
-impl SearchReport {
     /// The report of a section's search with given (`hard`) or automatic bounds.
     pub fn of_section(s: &CircleSearch, hard: bool) -> Self {
         Self {
@@ -57,7 +58,8 @@ impl SearchReport {
             hard,
             grid: s.grid.clone(),
             absolute: true,
-            unsolved: Some(s.unsolved),
+            unsolved: s.unsolved,
+            unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
         }
     }

@@ -385,7 +385,9 @@ pub enum NegativeEffectiveStressDto {
     DropStrength,
 }
 
-impl From<NegativeEffectiveStressDto> for thrustline_solver::slope::spencer::NegativeEffectiveStress {
+impl From<NegativeEffectiveStressDto>
+    for thrustline_solver::slope::spencer::NegativeEffectiveStress
+{
     fn from(dto: NegativeEffectiveStressDto) -> Self {
         match dto {
             NegativeEffectiveStressDto::Keep => Self::Keep,

@@ -31,10 +31,13 @@ pub struct SearchOutDto {
     pub regrids: usize,
     /// Whether the minimum still lies on the edge of the region searched.
     pub on_edge: bool,
-    /// Sections: circles that cut a sliding mass but whose equations have no solution; null
-    /// for the simple slope's search.
+    /// Circles of the last grid that cut a sliding mass but whose equations have no physical
+    /// solution.
+    pub unsolved: usize,
+    /// The least Bishop F among those circles (null when none has one): when it is below the
+    /// answer's F, the critical surface may hide among them (see `warnings`).
     #[schema(required = true)]
-    pub unsolved: Option<usize>,
+    pub unsolved_bishop_minimum: Option<f64>,
     /// Whether circles without a solution lie at or next to the grid centre of the minimum
     /// (the least F found may then not be the least F there is).
     pub unsolved_near_minimum: bool,
@@ -321,6 +324,7 @@ impl SpencerResponse {
                 regrids: search.regrids,
                 on_edge: search.is_on_edge,
                 unsolved: search.unsolved,
+                unsolved_bishop_minimum: search.unsolved_bishop_minimum,
                 unsolved_near_minimum: search.unsolved_near_minimum,
             }),
             grid: solved.search.as_ref().map(|search| GridDto {

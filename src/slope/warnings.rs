@@ -92,11 +92,23 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
                     .to_owned(),
             );
         }
-        if search.unsolved_near_minimum {
+        let below = search
+            .unsolved_bishop_minimum
+            .zip(solution.factor_of_safety)
+            .filter(|(b, f)| b < f);
+        if let Some((bishop, f)) = below {
             warnings.push(format!(
-                "circles next to the critical one have no Spencer solution ({} in the whole \
-                     search): the least F may lie among them",
-                search.unsolved.unwrap_or(0)
+                "{} circles of the search have no physical Spencer solution, and Bishop's F on \
+                 them goes down to {bishop:.4}, below the F found ({f:.4}): the critical F may \
+                 be lower than reported (with φ' near 0, m_α ≤ 0 on steep bases rules Spencer's \
+                 solution out there)",
+                search.unsolved
+            ));
+        } else if search.unsolved_near_minimum {
+            warnings.push(format!(
+                "circles next to the critical one have no Spencer solution ({} in the search): \
+                 the least F may lie among them",
+                search.unsolved
             ));
         }
     }

@@ -16,7 +16,9 @@ use super::geometry::{Embankment, SlipCircle};
 use crate::numerics::{nelder_mead, Minimum};
 use crate::outcome::SolverFailure;
 
-use super::spencer::{solve_spencer_factor, Seismic, SlopeProblem, Soil, SpencerSettings};
+use super::spencer::{
+    spencer_factor_outcome, FactorOutcome, Seismic, SlopeProblem, Soil, SpencerSettings,
+};
 
 /// The region of centres searched and the grid laid over it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -107,6 +109,9 @@ pub struct SearchSettings {
     /// Wall-time limit of the whole search; circles not evaluated by then count as invalid and
     /// the solution says it timed out. Defaults to none.
     pub time_limit: Option<std::time::Duration>,
+    /// Whether the grid's bounds were given: they then stay put (no regrids) and the refined
+    /// centre stays inside them. Defaults to false.
+    pub hard_bounds: bool,
 }
 
 impl Default for SearchSettings {
@@ -117,6 +122,7 @@ impl Default for SearchSettings {
             max_regrids: 4,
             max_refine_evaluations: 300,
             time_limit: None,
+            hard_bounds: false,
         }
     }
 }
@@ -161,6 +167,12 @@ pub struct SearchSolution {
     /// Whether the minimum still lies on the edge of the last grid (the true minimum may lie
     /// outside the region searched).
     pub is_on_edge: bool,
+    /// Grid circles of the last grid that cut a mass but have no physical Spencer solution.
+    pub unsolved: usize,
+    /// The least Bishop F among those (an indication of what they would give).
+    pub unsolved_bishop_minimum: Option<f64>,
+    /// Whether such circles lie at or next to the grid point of the minimum.
+    pub unsolved_near_minimum: bool,
 }
 
 /// Spencer's F for one circle, or `None` when the circle is invalid or has no solution.
@@ -169,6 +181,16 @@ pub fn factor_of_safety(
     circle: SlipCircle,
     settings: &SpencerSettings,
 ) -> Option<f64> {
+    outcome(problem, circle, settings).ok()
+}
+
+/// Spencer's F for one circle; `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it
+/// has no physical solution (with Bishop's F there, if any).
+fn outcome(
+    problem: &SearchProblem,
+    circle: SlipCircle,
+    settings: &SpencerSettings,
+) -> Result<f64, Option<Option<f64>>> {
     let slope = SlopeProblem::new(
         problem.embankment,
         circle,
@@ -177,8 +199,11 @@ pub fn factor_of_safety(
         problem.seismic,
         Vec::new(),
     )
-    .ok()?;
-    solve_spencer_factor(&slope.model(), settings).map(|s| s.factor_of_safety)
+    .map_err(|_| None::<Option<f64>>)?;
+    match spencer_factor_outcome(&slope.model(), settings) {
+        FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
+        FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
+    }
 }
 
 /// An optional instant after which no more circles are evaluated.
@@ -199,32 +224,65 @@ fn status(deadline: &Deadline, otherwise: SearchStatus) -> SearchStatus {
     }
 }
 
+/// F over the grid, and the outcome of each point: `Err(Some(bishop))` where unsolved.
+type Outcomes = Vec<Vec<Result<f64, Option<Option<f64>>>>>;
+
 fn evaluate_grid(
     problem: &SearchProblem,
     grid: &SearchGrid,
     settings: &SpencerSettings,
     deadline: &Deadline,
-) -> FactorGrid {
+) -> (FactorGrid, Outcomes) {
     let (xs, ys) = (grid.xs(), grid.ys());
-    let factors = ys
+    let outcomes: Outcomes = ys
         .par_iter()
         .map(|&y| {
             xs.iter()
                 .map(|&x| {
                     if deadline.is_past() {
-                        return None;
+                        return Err(None);
                     }
                     let circle = SlipCircle {
                         x,
                         y,
                         lower_end_factor: problem.lower_end_factor,
                     };
-                    factor_of_safety(problem, circle, settings)
+                    outcome(problem, circle, settings)
                 })
                 .collect()
         })
         .collect();
-    FactorGrid { xs, ys, factors }
+    let factors = outcomes
+        .iter()
+        .map(|row| row.iter().map(|o| o.as_ref().ok().copied()).collect())
+        .collect();
+    (FactorGrid { xs, ys, factors }, outcomes)
+}
+
+/// Unsolved circles of a grid: how many, the least Bishop F among them, and whether any lies
+/// at or next to grid point (i, j).
+pub(crate) fn unsolved_summary(
+    outcomes: &Outcomes,
+    (i, j): (usize, usize),
+) -> (usize, Option<f64>, bool) {
+    let mut count = 0;
+    let mut least: Option<f64> = None;
+    for row in outcomes {
+        for o in row {
+            if let Err(Some(bishop)) = o {
+                count += 1;
+                if let Some(b) = bishop {
+                    least = Some(least.map_or(*b, |l: f64| l.min(*b)));
+                }
+            }
+        }
+    }
+    let near = (j.saturating_sub(1)..=(j + 1).min(outcomes.len().saturating_sub(1))).any(|jj| {
+        let row = &outcomes[jj];
+        (i.saturating_sub(1)..=(i + 1).min(row.len().saturating_sub(1)))
+            .any(|ii| matches!(row[ii], Err(Some(_))))
+    });
+    (count, least, near)
 }
 
 /// Searches the critical circle over `grid` (moving it when the minimum is on its edge).
@@ -242,7 +300,7 @@ pub fn search_critical_circle(
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let factors = evaluate_grid(problem, &grid, &settings.spencer, &deadline);
+        let (factors, outcomes) = evaluate_grid(problem, &grid, &settings.spencer, &deadline);
         evaluations += grid.nx * grid.ny;
         let mut points: Vec<(f64, usize, usize)> = factors
             .factors
@@ -256,6 +314,7 @@ pub fn search_critical_circle(
             .collect();
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
         let Some(&(_, bi, bj)) = points.first() else {
+            let (unsolved, unsolved_bishop_minimum, _) = unsolved_summary(&outcomes, (0, 0));
             return SearchSolution {
                 status: status(&deadline, SearchStatus::NoValidCircle),
                 circle: None,
@@ -264,6 +323,9 @@ pub fn search_critical_circle(
                 evaluations,
                 regrids,
                 is_on_edge: false,
+                unsolved,
+                unsolved_bishop_minimum,
+                unsolved_near_minimum: false,
             };
         };
         let (dx, dy) = grid.cell();
@@ -291,6 +353,13 @@ pub fn search_critical_circle(
                 };
                 let objective = |v: &[f64]| {
                     if deadline.is_past() {
+                        return f64::INFINITY;
+                    }
+                    let outside = v[0] < grid.x_min
+                        || v[0] > grid.x_max
+                        || v[1] < grid.y_min
+                        || v[1] > grid.y_max;
+                    if settings.hard_bounds && outside {
                         return f64::INFINITY;
                     }
                     if let (Some(max), Some(&f_e)) = (problem.lower_end_factor_max, v.get(2)) {
@@ -353,7 +422,11 @@ pub fn search_critical_circle(
             y: v[1],
             lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
         };
-        if (on_edge || outside) && regrids < settings.max_regrids && !deadline.is_past() {
+        if (on_edge || outside)
+            && !settings.hard_bounds
+            && regrids < settings.max_regrids
+            && !deadline.is_past()
+        {
             // Centre a grid of the same size on the best point found.
             let (half_x, half_y) = (
                 0.5 * (grid.x_max - grid.x_min),
@@ -370,6 +443,8 @@ pub fn search_critical_circle(
             regrids += 1;
             continue;
         }
+        let (unsolved, unsolved_bishop_minimum, unsolved_near_minimum) =
+            unsolved_summary(&outcomes, (bi, bj));
         return SearchSolution {
             status: status(&deadline, SearchStatus::Found),
             circle: Some(circle),
@@ -378,6 +453,9 @@ pub fn search_critical_circle(
             evaluations,
             regrids,
             is_on_edge: on_edge || outside,
+            unsolved,
+            unsolved_bishop_minimum,
+            unsolved_near_minimum,
         };
     }
 }

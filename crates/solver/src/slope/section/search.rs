@@ -16,7 +16,7 @@ use super::{place, Section, SlipShape};
 use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
 use crate::slope::search::{FactorGrid, SearchStatus};
-use crate::slope::spencer::{solve_spencer_factor, Seismic, SpencerSettings};
+use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
 #[derive(Debug, Clone, PartialEq)]
@@ -164,6 +164,8 @@ pub struct CircleSearch {
     pub evaluations: usize,
     /// Circles that cut a sliding mass but whose equations have no solution.
     pub unsolved: usize,
+    /// The least Bishop F among the unsolved circles (an indication of what they would give).
+    pub unsolved_bishop_minimum: Option<f64>,
     /// Whether unsolved circles lie at or next to the grid centre of the minimum.
     pub unsolved_near_minimum: bool,
     /// Times automatic bounds moved.
@@ -173,9 +175,9 @@ pub struct CircleSearch {
     pub is_on_edge: bool,
 }
 
-/// A circle's F; `Err(true)` when it cuts a mass but has no solution, `Err(false)` when it
-/// cuts none.
-type Outcome = Result<f64, bool>;
+/// A circle's F; `Err(Some(bishop))` when it cuts a mass but has no solution (with Bishop's
+/// F there, if any), `Err(None)` when it cuts none.
+type Outcome = Result<f64, Option<Option<f64>>>;
 
 struct Evaluator<'a> {
     section: &'a Section,
@@ -203,10 +205,10 @@ impl Evaluator<'_> {
             self.seismic,
             None,
         )
-        .map_err(|_| false)?;
-        match solve_spencer_factor(&cut.model, &self.spencer) {
-            Some(s) if s.factor_of_safety.is_finite() => Ok(s.factor_of_safety),
-            _ => Err(true),
+        .map_err(|_| None::<Option<f64>>)?;
+        match spencer_factor_outcome(&cut.model, &self.spencer) {
+            FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
+            FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
         }
     }
 
@@ -236,8 +238,9 @@ impl Evaluator<'_> {
     }
 }
 
-/// The least F over the radii at one centre: (F, R), and the number of unsolved circles.
-type CentreResult = (Option<(f64, f64)>, usize);
+/// The least F over the radii at one centre: (F, R), the number of unsolved circles and the
+/// least Bishop F among them.
+type CentreResult = (Option<(f64, f64)>, usize, Option<f64>);
 
 /// Searches the critical circle of `section` over `region`; `hard` bounds stay put, automatic
 /// ones move when the minimum lies on their edge.
@@ -277,17 +280,23 @@ pub fn search_circles(
                     .map(|&x| {
                         let mut best: Option<(f64, f64)> = None;
                         let mut unsolved = 0;
+                        let mut bishop: Option<f64> = None;
                         for r in evaluator.radii(&region.radii, (x, y)) {
                             if evaluator.is_late() {
                                 break;
                             }
                             match evaluator.factor((x, y), r) {
                                 Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
-                                Ok(_) | Err(false) => {}
-                                Err(true) => unsolved += 1,
+                                Ok(_) | Err(None) => {}
+                                Err(Some(b)) => {
+                                    unsolved += 1;
+                                    if let Some(b) = b {
+                                        bishop = Some(bishop.map_or(b, |l| l.min(b)));
+                                    }
+                                }
                             }
                         }
-                        (best, unsolved)
+                        (best, unsolved, bishop)
                     })
                     .collect()
             })
@@ -298,6 +307,11 @@ pub fn search_circles(
             .map(|c| evaluator.radii(&region.radii, c).len())
             .sum::<usize>();
         let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
+        let unsolved_bishop_minimum = results
+            .iter()
+            .flatten()
+            .filter_map(|r| r.2)
+            .reduce(f64::min);
         let grid = FactorGrid {
             xs: xs.clone(),
             ys: ys.clone(),
@@ -333,6 +347,7 @@ pub fn search_circles(
                 region,
                 evaluations,
                 unsolved,
+                unsolved_bishop_minimum,
                 unsolved_near_minimum: false,
                 regrids,
                 is_on_edge: false,
@@ -436,6 +451,7 @@ pub fn search_circles(
             region,
             evaluations,
             unsolved,
+            unsolved_bishop_minimum,
             unsolved_near_minimum,
             regrids,
             is_on_edge: on_edge,

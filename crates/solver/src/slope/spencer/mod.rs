@@ -70,12 +70,38 @@ pub fn solve_spencer_factor(
     model: &SliceModel,
     settings: &SpencerSettings,
 ) -> Option<SpencerFactor> {
+    match spencer_factor_outcome(model, settings) {
+        FactorOutcome::Solved(s) => Some(s),
+        FactorOutcome::Unsolved { .. } => None,
+    }
+}
+
+/// Spencer's F for a search, or why not.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FactorOutcome {
+    /// Solved.
+    Solved(SpencerFactor),
+    /// No physical solution; Bishop's F for the same surface when it has one (an indication
+    /// of what the surface would give, for the search's report).
+    Unsolved {
+        /// Bishop's simplified F (circles, or a given moment centre).
+        bishop: Option<f64>,
+    },
+}
+
+/// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution.
+pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
         let s = solve_spencer(model, settings);
-        return s.factor_of_safety.map(|f| SpencerFactor {
-            factor_of_safety: f,
-            theta_rad: s.theta_rad,
-        });
+        return match s.factor_of_safety {
+            Some(f) => FactorOutcome::Solved(SpencerFactor {
+                factor_of_safety: f,
+                theta_rad: s.theta_rad,
+            }),
+            None => FactorOutcome::Unsolved {
+                bishop: s.bishop_factor_of_safety,
+            },
+        };
     }
     let equations = Equations::new(model);
     // φ' = 0 on a circle: the moment equation about the centre alone fixes F whatever the
@@ -83,26 +109,29 @@ pub fn solve_spencer_factor(
     // Bishop's F is Spencer's; no need to look for θ.
     if equations.is_frictionless() && model.has_moment_centre {
         let mut evaluations = 0;
-        return equations
-            .f_at_theta(0.0, true, &mut evaluations)
-            .map(|f| SpencerFactor {
+        return match equations.f_at_theta(0.0, true, &mut evaluations) {
+            Some(f) => FactorOutcome::Solved(SpencerFactor {
                 factor_of_safety: f,
                 theta_rad: None,
-            });
+            }),
+            None => FactorOutcome::Unsolved { bishop: None },
+        };
     }
     let mut solved = solve_equations(&equations, settings);
     solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
     match (solved.root, solved.bishop) {
-        (Some((f, theta)), _) => is_physical(&equations, f, theta).then_some(SpencerFactor {
-            factor_of_safety: f,
-            theta_rad: Some(theta),
-        }),
+        (Some((f, theta)), _) if is_physical(&equations, f, theta) => {
+            FactorOutcome::Solved(SpencerFactor {
+                factor_of_safety: f,
+                theta_rad: Some(theta),
+            })
+        }
         // φ' = 0: the moment equation alone is exact (see SpencerStatus::MomentOnly).
-        (None, Some(f)) if equations.is_frictionless() => Some(SpencerFactor {
+        (None, Some(f)) if equations.is_frictionless() => FactorOutcome::Solved(SpencerFactor {
             factor_of_safety: f,
             theta_rad: None,
         }),
-        (None, _) => None,
+        (_, bishop) => FactorOutcome::Unsolved { bishop },
     }
 }
 
@@ -138,7 +167,10 @@ pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerS
             .negative_effective_normal_slices
             .iter()
             .copied()
-            .filter(|&i| current.slices[i].tan_phi > 0.0 || (drop_cohesion && current.slices[i].cohesion > 0.0))
+            .filter(|&i| {
+                current.slices[i].tan_phi > 0.0
+                    || (drop_cohesion && current.slices[i].cohesion > 0.0)
+            })
             .collect();
         if newly.is_empty() || solution.status == SpencerStatus::NoSolution {
             break;

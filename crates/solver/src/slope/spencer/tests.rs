@@ -220,7 +220,12 @@ fn a_root_held_up_by_tension_is_not_converged() {
         &vertical_face_with_high_pore_pressure().model(),
         &SpencerSettings::default(),
     );
-    assert_eq!(s.status, SpencerStatus::Unphysical, "{:?}", s.factor_of_safety);
+    assert_eq!(
+        s.status,
+        SpencerStatus::Unphysical,
+        "{:?}",
+        s.factor_of_safety
+    );
     assert!(s.factor_of_safety.is_none());
     assert!(s.unphysical_root.is_some_and(|f| f < 1e-3));
 }
@@ -240,7 +245,10 @@ fn dropping_friction_in_tension_gives_the_cohesive_answer() {
     assert!(f > 0.1 && f < 10.0, "F = {f}");
     assert!(!s.tension_dropped_slices.is_empty());
     for &i in &s.negative_effective_normal_slices {
-        assert!(s.tension_dropped_slices.contains(&i), "slice {i} in tension with friction");
+        assert!(
+            s.tension_dropped_slices.contains(&i),
+            "slice {i} in tension with friction"
+        );
     }
     let settings = SpencerSettings {
         negative_effective_stress: NegativeEffectiveStress::DropStrength,
@@ -251,6 +259,9 @@ fn dropping_friction_in_tension_gives_the_cohesive_answer() {
         assert!(g <= f * (1.0 + 1e-9), "{g} > {f}");
     }
     // Spencer's own example keeps its published F under the default treatment.
-    let classic = solve_spencer(&spencer_example(100, 10.0, 1.0).model(), &SpencerSettings::default());
+    let classic = solve_spencer(
+        &spencer_example(100, 10.0, 1.0).model(),
+        &SpencerSettings::default(),
+    );
     assert!((classic.factor_of_safety.unwrap() - 1.06958).abs() < 5e-6);
 }
