@@ -1,8 +1,10 @@
 //! The sliding mass of a section cut into vertical slices, in the solver's frame (crest towards
-//! +x). Slices are cut at every ground vertex, layer boundary, water-line break, bedrock kink,
-//! surcharge edge and crossing of these lines with each other and with the slip surface, so
-//! that within a slice every line is straight; between those cuts the slices are of about equal
-//! width.
+//! +x). Slice sides fall where the base changes: the surface's vertices and its crossings with
+//! layer tops, the water line and bedrock, and the bedrock's kinks where the base follows it;
+//! between those the slices are of equal width. Above the base, the weights and loads are
+//! integrated exactly, piece by piece between the kinks and crossings of the ground, the layer
+//! tops, the water line and the surcharge edges, so a section cut like the simple embankment
+//! (one soil, no water) gets the simple embankment's slices.
 
 use std::num::NonZeroUsize;
 
@@ -108,7 +110,8 @@ impl Cut {
             xb = x;
             crack = Some((x, crack_line.y_at(x), ground.y_at(x)));
         }
-        let cuts = cuts(section, shape, xa, xb, tolerance);
+        let cuts = base_cuts(section, shape, xa, xb, tolerance);
+        let points = top_points(section, xa, xb, tolerance);
         let boundaries = allocate(&cuts, slices.get());
         let last = boundaries.len() - 1;
         let base_at = |i: usize, x: f64| {
@@ -131,11 +134,12 @@ impl Cut {
                     section,
                     (boundaries[i], boundaries[i + 1]),
                     (base_ys[i], base_ys[i + 1]),
+                    &points,
                     tolerance,
                 )
             })
             .collect();
-        let loads = loads(section, &slices, crack);
+        let loads = loads(section, &slices, &points, crack);
         let surface: Vec<(f64, f64)> = boundaries
             .iter()
             .copied()
@@ -175,32 +179,8 @@ impl Cut {
     }
 }
 
-/// Every x in (a, b) where a slice side must fall, sorted, with a and b at the ends.
-fn cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
-    let ground = &section.ground;
-    let tops: Vec<&Polyline> = section
-        .layers
-        .iter()
-        .filter_map(|l| l.top.as_ref())
-        .collect();
-    let lines: Vec<&Polyline> = std::iter::once(ground)
-        .chain(tops.iter().copied())
-        .chain(section.bedrock.as_ref())
-        .chain(section.piezometric_line.as_ref())
-        .collect();
-    let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
-    if let SlipShape::Polyline(line) = shape {
-        xs.extend(line.xs());
-    }
-    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
-    for (i, line) in lines.iter().enumerate() {
-        if i > 0 {
-            xs.extend(shape_crossings(shape, line, a, b));
-        }
-        for other in &lines[i + 1..] {
-            xs.extend(line.crossings(other, a, b));
-        }
-    }
+/// Sorted x in (a, b) closer than `tolerance` merged, with a and b at the ends.
+fn sorted_between(xs: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     let mut cuts: Vec<f64> = std::iter::once(a)
         .chain(
             xs.into_iter()
@@ -214,6 +194,64 @@ fn cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) ->
         *end = b;
     }
     cuts
+}
+
+/// Where a slice side must fall, so that each base is straight, in one soil and on one side of
+/// the water line: the surface's vertices, its crossings with layer tops, bedrock and the
+/// piezometric line, and the bedrock's kinks and crossings where the base follows it.
+fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+    let tops = section.layers.iter().filter_map(|l| l.top.as_ref());
+    let lines: Vec<&Polyline> = tops
+        .chain(section.bedrock.as_ref())
+        .chain(section.piezometric_line.as_ref())
+        .collect();
+    let mut xs: Vec<f64> = Vec::new();
+    if let SlipShape::Polyline(line) = shape {
+        xs.extend(line.xs());
+    }
+    for line in &lines {
+        xs.extend(shape_crossings(shape, line, a, b));
+    }
+    if let Some(bedrock) = &section.bedrock {
+        let on_bedrock = |x: f64| bedrock.y_at(x) >= shape_y(shape, x) - tolerance;
+        xs.extend(bedrock.xs().filter(|&x| on_bedrock(x)));
+        for line in &lines {
+            xs.extend(
+                bedrock
+                    .crossings(line, a, b)
+                    .into_iter()
+                    .filter(|&x| on_bedrock(x)),
+            );
+        }
+    }
+    sorted_between(xs, a, b, tolerance)
+}
+
+/// Where the lines above the base bend or cross (ground, layer tops, the water line, surcharge
+/// edges): the slice weights and loads are integrated piecewise between these, exactly.
+fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+    let lines: Vec<&Polyline> = std::iter::once(&section.ground)
+        .chain(section.layers.iter().filter_map(|l| l.top.as_ref()))
+        .chain(section.piezometric_line.as_ref())
+        .collect();
+    let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
+    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    for (i, line) in lines.iter().enumerate() {
+        for other in &lines[i + 1..] {
+            xs.extend(line.crossings(other, a, b));
+        }
+    }
+    sorted_between(xs, a, b, tolerance)
+}
+
+/// The pieces of [xl, xr] between the top points.
+fn pieces(points: &[f64], xl: f64, xr: f64) -> Vec<(f64, f64)> {
+    let inner = points.iter().copied().filter(|&x| x > xl && x < xr);
+    let xs: Vec<f64> = std::iter::once(xl)
+        .chain(inner)
+        .chain(std::iter::once(xr))
+        .collect();
+    xs.windows(2).map(|w| (w[0], w[1])).collect()
 }
 
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
@@ -251,6 +289,7 @@ fn slice(
     section: &Section,
     (xl, xr): (f64, f64),
     (bl, br): (f64, f64),
+    points: &[f64],
     tolerance: f64,
 ) -> BaseSlice {
     let ground = &section.ground;
@@ -258,34 +297,35 @@ fn slice(
     let xm = 0.5 * (xl + xr);
     let bm = 0.5 * (bl + br);
     let layers = &section.layers;
+    let chord = |x: f64| bl + (br - bl) * (x - xl) / width;
     // Thickness of each layer at x over the base b, and ∫y over it, by the soil rule: layer k
     // holds the points at or below its top and above every later layer's top.
-    let columns = |x: f64, b: f64| -> Vec<(f64, f64)> {
+    let columns = |x: f64| -> Vec<(f64, f64)> {
+        let b = chord(x);
         let g = ground.y_at(x);
-        let tops: Vec<f64> = layers
-            .iter()
-            .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x)))
-            .collect();
         let mut below = b;
         let mut out = vec![(0.0, 0.0); layers.len()];
         for k in (0..layers.len()).rev() {
-            let upper = g.min(tops[k]);
-            let lower = below;
-            if upper > lower {
-                out[k] = (upper - lower, 0.5 * (upper * upper - lower * lower));
+            let top = layers[k].top.as_ref().map_or(g, |t| t.y_at(x));
+            let upper = g.min(top);
+            if upper > below {
+                out[k] = (upper - below, 0.5 * (upper * upper - below * below));
             }
-            below = below.max(tops[k]);
+            below = below.max(top);
         }
         out
     };
-    let (cl, cm, cr) = (columns(xl, bl), columns(xm, bm), columns(xr, br));
     let (mut weight, mut moment) = (0.0, 0.0);
-    for (k, layer) in layers.iter().enumerate() {
-        // Simpson's rule: exact for the linear thickness and quadratic ∫y of a cut slice.
-        let area = width / 6.0 * (cl[k].0 + 4.0 * cm[k].0 + cr[k].0);
-        let first_moment = width / 6.0 * (cl[k].1 + 4.0 * cm[k].1 + cr[k].1);
-        weight += layer.soil.unit_weight * area;
-        moment += layer.soil.unit_weight * first_moment;
+    // Between the top points every line is straight: Simpson's rule is exact for the linear
+    // thickness and the quadratic ∫y of each piece.
+    for (a, b) in pieces(points, xl, xr) {
+        let (ca, cm, cb) = (columns(a), columns(0.5 * (a + b)), columns(b));
+        for (k, layer) in layers.iter().enumerate() {
+            let area = (b - a) / 6.0 * (ca[k].0 + 4.0 * cm[k].0 + cb[k].0);
+            let first_moment = (b - a) / 6.0 * (ca[k].1 + 4.0 * cm[k].1 + cb[k].1);
+            weight += layer.soil.unit_weight * area;
+            moment += layer.soil.unit_weight * first_moment;
+        }
     }
     let probe = bm + tolerance;
     let g_m = ground.y_at(xm);
@@ -295,7 +335,15 @@ fn slice(
         .unwrap_or(0);
     let soil = &layers[layer].soil;
     let pore_pressure = match (layers[layer].pore_pressure_ratio, &section.piezometric_line) {
-        (Some(ratio), _) => ratio * weight / width,
+        (Some(ratio), _) => {
+            // σ_v: the weight of the column above the base middle.
+            let stress: f64 = columns(xm)
+                .iter()
+                .zip(layers)
+                .map(|(c, l)| l.soil.unit_weight * c.0)
+                .sum();
+            ratio * stress
+        }
         (None, Some(line)) => section.water_unit_weight * (line.y_at(xm) - bm).max(0.0),
         (None, None) => 0.0,
     };
@@ -323,6 +371,7 @@ fn slice(
 fn loads(
     section: &Section,
     slices: &[BaseSlice],
+    points: &[f64],
     crack: Option<(f64, f64, f64)>,
 ) -> Vec<ExternalLoad> {
     let ground = &section.ground;
@@ -337,16 +386,17 @@ fn loads(
     };
     for (i, s) in slices.iter().enumerate() {
         let (xl, xr) = (s.x_left, s.x_right);
-        let width = xr - xl;
         if let Some(line) = &section.piezometric_line {
-            // Ponded water: pressure γ_w·d normal to the ground, d linear over the slice.
-            let (gl, gr) = (ground.y_at(xl), ground.y_at(xr));
-            let (dl, dr) = ((line.y_at(xl) - gl).max(0.0), (line.y_at(xr) - gr).max(0.0));
-            if dl + dr > 0.0 {
-                let p = section.water_unit_weight * width * 0.5 * (dl + dr);
-                let x = xl + width * (dl + 2.0 * dr) / (3.0 * (dl + dr));
-                let slope = (gr - gl) / width;
-                add(i, (x, ground.y_at(x)), (slope * p, -p), s);
+            // Ponded water: pressure γ_w·d normal to the ground, d linear on each piece.
+            for (a, b) in pieces(points, xl, xr) {
+                let (ga, gb) = (ground.y_at(a), ground.y_at(b));
+                let (da, db) = ((line.y_at(a) - ga).max(0.0), (line.y_at(b) - gb).max(0.0));
+                if da + db > 0.0 {
+                    let p = section.water_unit_weight * (b - a) * 0.5 * (da + db);
+                    let x = a + (b - a) * (da + 2.0 * db) / (3.0 * (da + db));
+                    let slope = (gb - ga) / (b - a);
+                    add(i, (x, ground.y_at(x)), (slope * p, -p), s);
+                }
             }
         }
         for sc in &section.surcharges {

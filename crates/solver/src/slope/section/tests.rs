@@ -107,7 +107,8 @@ fn a_section_and_its_mirror_image_have_the_same_answer() {
 #[test]
 fn the_simple_embankment_as_a_section_gives_spencers_answer() {
     // Spencer (1967) example circle placed absolutely: centre (9.63168, 63.76416) from the toe.
-    // The section cuts at the toe and crest, the simple form does not; both tend to the same F.
+    // One soil, no water: the same equal slices as the simple form, the kinks at the toe and
+    // the crest integrated exactly inside them — the same F to rounding, at any N.
     let mut parts = one_soil(
         &[(-100.0, 0.0), (0.0, 0.0), (60.96, 30.48), (200.0, 30.48)],
         10.0,
@@ -119,17 +120,23 @@ fn the_simple_embankment_as_a_section_gives_spencers_answer() {
         centre: (9.63168, 63.76416),
         radius: 9.63168f64.hypot(63.76416),
     };
-    let (_, section) = solve(parts, circle, 2000);
-    let simple = solve_spencer(
-        &crate::reference::spencer_1967::problem(2000).model(),
-        &SpencerSettings::default(),
-    );
-    let (a, b) = (
-        section.factor_of_safety.unwrap(),
-        simple.factor_of_safety.unwrap(),
-    );
-    assert!((a - b).abs() < 1e-5, "section {a}, simple {b}");
-    assert!((a - crate::reference::spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-5);
+    for n in [10, 100, 1000] {
+        let (_, section) = solve(parts.clone(), circle.clone(), n);
+        let simple = solve_spencer(
+            &crate::reference::spencer_1967::problem(n).model(),
+            &SpencerSettings::default(),
+        );
+        let (a, b) = (
+            section.factor_of_safety.unwrap(),
+            simple.factor_of_safety.unwrap(),
+        );
+        assert!(
+            (a - b).abs() < 1e-12 * b,
+            "N = {n}: section {a}, simple {b}"
+        );
+        let (ta, tb) = (section.theta_rad.unwrap(), simple.theta_rad.unwrap());
+        assert!((ta - tb).abs() < 1e-12, "N = {n}: θ {ta} vs {tb}");
+    }
 }
 
 /// A long planar slide parallel to a face of inclination β, at vertical depth z, entering and
@@ -297,14 +304,21 @@ fn surcharges_and_line_loads_add_their_forces() {
     let fx: f64 = loads.iter().map(|l| l.fx).sum();
     assert!((fy + 127.0).abs() < 1e-9, "Σfy = {fy}");
     assert!((fx - 5.0).abs() < 1e-12);
-    // Every load edge is a slice side.
-    let sides: Vec<f64> = p.model().slices.iter().map(|s| s.x_left).collect();
-    for edge in [22.0, 23.0, 25.0, 26.0] {
-        assert!(
-            sides.iter().any(|&x| (x - edge).abs() < 1e-9),
-            "no side at {edge}"
-        );
-    }
+    // Their moment about the origin, summed from the slices' loads (moments about the base
+    // middles), is that of the resultants by hand: the uniform one at 23.5, the linear one at
+    // 23 + 3·(10 + 2·30)/(3·40) = 24.75, the line load at (24, 10).
+    let moment: f64 = loads
+        .iter()
+        .map(|l| {
+            let (xb, yb) = p.model().slices[l.slice].base_middle;
+            l.moment + xb * l.fy - yb * l.fx
+        })
+        .sum();
+    let expected = -60.0 * 23.5 - 60.0 * 24.75 + 24.0 * -7.0 - 10.0 * 5.0;
+    assert!(
+        (moment - expected).abs() < 1e-9 * expected.abs(),
+        "{moment} vs {expected}"
+    );
 }
 
 #[test]
@@ -444,4 +458,56 @@ fn fredlund_krahn_case_1_by_every_method() {
     let constant = morgenstern_price(model, &InterSliceFunction::Constant, (spencer.0 * 1.1, 0.0));
     close("M–P constant F", constant.factor_of_safety, spencer.0, 1e-9);
     close("M–P constant λ", constant.lambda, spencer.1, 1e-9);
+}
+
+#[test]
+fn two_identical_layers_are_one_soil() {
+    // The layer top crossing the base adds slice sides, so the slicing differs: the same F to
+    // the O(N⁻²) of the slicing (1e-5 at 2000 slices).
+    let one = one_soil(&SLOPE, 20.0, 5.0, 30.0);
+    let mut two = one.clone();
+    two.layers.push(Layer {
+        top: Some(line(&[(-50.0, 3.0), (60.0, 3.0)])),
+        soil: Soil::new(20.0, 5.0, 30.0, 0.0).unwrap(),
+        pore_pressure_ratio: None,
+    });
+    let (_, a) = solve(one, slope_circle(), 2000);
+    let (p, b) = solve(two, slope_circle(), 2000);
+    assert!(p.model().slices.iter().any(|s| s.layer == 1));
+    let (fa, fb) = (a.factor_of_safety.unwrap(), b.factor_of_safety.unwrap());
+    assert!((fa - fb).abs() < 1e-5 * fa, "{fa} vs {fb}");
+}
+
+#[test]
+fn a_water_line_below_every_surface_is_dry() {
+    // Nothing changes: no pore pressure, no ponding, no extra slice sides — the same F exactly.
+    let dry = one_soil(&SLOPE, 20.0, 5.0, 30.0);
+    let mut wet = dry.clone();
+    wet.piezometric_line = Some(line(&[(-50.0, -5.0), (0.0, -4.0), (60.0, -3.0)]));
+    let (_, a) = solve(dry, slope_circle(), 100);
+    let (_, b) = solve(wet, slope_circle(), 100);
+    assert_eq!(a.factor_of_safety, b.factor_of_safety);
+}
+
+#[test]
+fn ponded_water_to_the_crest_leaves_a_frictional_slope_as_it_was() {
+    // c' = 0: F does not depend on the unit weight, and water to the crest on both sides acts
+    // on the mass as buoyancy (see the submerged test): the buoyant slope's F is the dry one's.
+    // Bishop's exactly but for the slicing's O(N⁻²): its inter-slice forces are horizontal, as
+    // the water's side pressures are. Spencer's total inter-slice forces are parallel, which
+    // the hydrostatic side pressures (horizontal) are not: its F moves by 0.2 % here.
+    let dry = one_soil(&SLOPE, 20.0, 0.0, 32.0);
+    let mut wet = dry.clone();
+    wet.water_unit_weight = 9.81;
+    wet.piezometric_line = Some(line(&[(-50.0, 10.0), (60.0, 10.0)]));
+    let circle = slope_circle();
+    let (_, a) = solve(dry, circle.clone(), 1000);
+    let (_, b) = solve(wet, circle, 1000);
+    let (ba, bb) = (
+        a.bishop_factor_of_safety.unwrap(),
+        b.bishop_factor_of_safety.unwrap(),
+    );
+    assert!((ba - bb).abs() < 1e-4 * ba, "Bishop {ba} vs {bb}");
+    let (fa, fb) = (a.factor_of_safety.unwrap(), b.factor_of_safety.unwrap());
+    assert!((fa - fb).abs() < 5e-3 * fa, "Spencer {fa} vs {fb}");
 }
