@@ -70,6 +70,7 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::CircleCentre => "circle.centre".to_owned(),
         SlopeParameter::CircleRadius => "circle.radius".to_owned(),
         SlopeParameter::Surface => "surface".to_owned(),
+        SlopeParameter::SurfaceVertex { index } => format!("surface[{index}]"),
         SlopeParameter::MomentCentre => "moment_centre".to_owned(),
     }
 }

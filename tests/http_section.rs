@@ -159,6 +159,30 @@ async fn section_errors_name_their_fields() {
             ),
             "external_loads",
         ),
+        (
+            with(
+                with(
+                    with(fredlund_krahn(), "circle", Value::Null),
+                    "surface",
+                    json!([[40, 62], [70, 38], [120, 21], [165, 21]]),
+                ),
+                "section.bedrock",
+                json!([[0, 15], [100, 25], [180, 15]]),
+            ),
+            "surface[2]",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "section.layers",
+                json!([
+                    {"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}},
+                    {"top": [[0, 30], [180, 30]], "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}},
+                    {"top": [[0, 20], [100, 35], [180, 20]], "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}
+                ]),
+            ),
+            "section.layers[2].top",
+        ),
     ];
     for (body, field) in cases {
         let (status, content_type, answer) = server.post("/slope/spencer", &body).await;

@@ -76,6 +76,11 @@ pub enum SlopeParameter {
     CircleRadius,
     /// A polyline slip surface.
     Surface,
+    /// Vertex `index` of a polyline slip surface (0-based).
+    SurfaceVertex {
+        /// Index of the vertex.
+        index: usize,
+    },
     /// The centre about which moment-only methods take moments.
     MomentCentre,
 }
@@ -110,6 +115,7 @@ impl std::fmt::Display for SlopeParameter {
             Self::CircleCentre => write!(f, "circle centre"),
             Self::CircleRadius => write!(f, "circle radius"),
             Self::Surface => write!(f, "slip surface"),
+            Self::SurfaceVertex { index } => write!(f, "slip surface vertex {index}"),
             Self::MomentCentre => write!(f, "moment centre"),
         }
     }

@@ -140,6 +140,35 @@ impl Section {
                 )?;
             }
         }
+        // Listed top-down: a layer's top may meet the one above (the upper layer pinches out)
+        // but not rise above it.
+        for index in 2..parts.layers.len() {
+            let (Some(upper), Some(top)) = (&parts.layers[index - 1].top, &parts.layers[index].top)
+            else {
+                continue;
+            };
+            let scale = upper
+                .points()
+                .iter()
+                .chain(top.points())
+                .fold(1.0f64, |m, p| m.max(p.1.abs()));
+            let rise = upper
+                .xs()
+                .chain(top.xs())
+                .map(|x| (x, top.y_at(x) - upper.y_at(x)))
+                .find(|&(_, d)| d > 1e-9 * scale);
+            if let Some((x, _)) = rise {
+                return Err(SlopeError::Conflict {
+                    parameter: SlopeParameter::LayerTop { index },
+                    reason: format!(
+                        "rises above the top of layer {} at x = {x}: layers are listed from the \
+                         top down, and a top may meet the one above (that layer pinches out) but \
+                         not cross it",
+                        index
+                    ),
+                });
+            }
+        }
         check_range(
             SlopeParameter::WaterUnitWeight,
             parts.water_unit_weight,
@@ -427,6 +456,25 @@ impl SectionProblem {
                     1e9,
                     "finite coordinates, |x|, |y| ≤ 1e9",
                 )?;
+            }
+        }
+        if let (SlipShape::Polyline(line), Some(bedrock)) = (&shape, &section.bedrock) {
+            let below = line
+                .points()
+                .iter()
+                .enumerate()
+                .find(|(_, p)| p.1 < bedrock.y_at(p.0) - 1e-9 * p.1.abs().max(1.0));
+            if let Some((index, p)) = below {
+                return Err(SlopeError::NoSlipMass {
+                    parameter: SlopeParameter::SurfaceVertex { index },
+                    reason: format!(
+                        "vertex {index} ({}, {}) lies below the bedrock (at {}): a slip surface \
+                         cannot pass through it",
+                        p.0,
+                        p.1,
+                        bedrock.y_at(p.0)
+                    ),
+                });
             }
         }
         let cut = place(&section, None, &shape, slices, seismic, moment_centre)?;
