@@ -70,8 +70,13 @@ pub struct InterfaceAffine<'a> {
 impl ChainStatics {
     /// The statics of `assembly` with dead weight γ·area and the given live loads, in the
     /// scaling of [`super::equilibrium::assemble_equilibrium`] (same W and L).
-    pub fn new(assembly: &Assembly, unit_weight: f64, live_loads: &[LiveLoad]) -> Self {
-        let force_scale = force_scale(assembly, unit_weight);
+    pub fn new(
+        assembly: &Assembly,
+        unit_weight: f64,
+        other_dead_loads: &[LiveLoad],
+        live_loads: &[LiveLoad],
+    ) -> Self {
+        let force_scale = force_scale(assembly, unit_weight, other_dead_loads);
         let length_scale = assembly.length_scale();
         let corners = assembly.blocks.len() * 4;
         let origin = assembly
@@ -94,6 +99,13 @@ impl ChainStatics {
         for (b, block) in assembly.blocks.iter().enumerate() {
             let w = unit_weight * block.area / force_scale;
             dead_loads[b] = [0.0, -w, cross(centroids[b], (0.0, -w))];
+        }
+        for load in other_dead_loads {
+            let f = (load.fx / force_scale, load.fy / force_scale);
+            let d = &mut dead_loads[load.block];
+            d[0] += f.0;
+            d[1] += f.1;
+            d[2] += cross(scaled(load.point), f) + load.moment / (force_scale * length_scale);
         }
         let mut live_loads_scaled = vec![[0.0; 3]; n];
         for load in live_loads {
@@ -218,8 +230,8 @@ mod tests {
             fy: -2.0,
             moment: 0.7,
         }];
-        let chain = ChainStatics::new(&arch, 2.0, &loads);
-        let eq = assemble_equilibrium(&arch, 2.0, &loads);
+        let chain = ChainStatics::new(&arch, 2.0, &[], &loads);
+        let eq = assemble_equilibrium(&arch, 2.0, &[], &loads);
         for x in [[0.0, 0.0, 0.0], [0.4, 0.5, -0.2], [-3.0, 1.0, 2.0]] {
             let r: Vec<f64> = chain
                 .resultants(x, 0.8, 1.7)

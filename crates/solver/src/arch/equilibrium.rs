@@ -51,19 +51,23 @@ fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
     a.0 * b.1 - a.1 * b.0
 }
 
-/// The force scale W of the non-dimensional equations: the total dead weight.
-pub(crate) fn force_scale(assembly: &Assembly, unit_weight: f64) -> f64 {
-    (unit_weight * assembly.total_area()).max(f64::MIN_POSITIVE)
+/// The force scale W of the non-dimensional equations: the total dead weight (the blocks'
+/// and any other dead loads', such as a fill's).
+pub(crate) fn force_scale(assembly: &Assembly, unit_weight: f64, dead_loads: &[LiveLoad]) -> f64 {
+    let others: f64 = dead_loads.iter().map(|l| l.fx.hypot(l.fy)).sum();
+    (unit_weight * assembly.total_area() + others).max(f64::MIN_POSITIVE)
 }
 
-/// Assembles H, w and p for `assembly` with dead weight `unit_weight`·area per block.
+/// Assembles H, w and p for `assembly` with dead weight `unit_weight`·area per block plus the
+/// other `dead_loads` (a fill's weight, say).
 pub fn assemble_equilibrium(
     assembly: &Assembly,
     unit_weight: f64,
+    dead_loads: &[LiveLoad],
     live_loads: &[LiveLoad],
 ) -> Equilibrium {
     let n = assembly.blocks.len();
-    let force_scale = force_scale(assembly, unit_weight);
+    let force_scale = force_scale(assembly, unit_weight, dead_loads);
     let length_scale = assembly.length_scale();
     let mut triplets = Vec::with_capacity(18 * n);
     for (k, interface) in assembly.interfaces.iter().enumerate() {
@@ -95,14 +99,16 @@ pub fn assemble_equilibrium(
         dead[EQUATIONS_PER_BLOCK * b + 1] = -unit_weight * block.area / force_scale;
     }
     let mut live = vec![0.0; rows];
-    for load in live_loads {
-        let g = assembly.blocks[load.block].centroid;
-        let arm = (load.point.0 - g.0, load.point.1 - g.1);
-        let row = EQUATIONS_PER_BLOCK * load.block;
-        live[row] += load.fx / force_scale;
-        live[row + 1] += load.fy / force_scale;
-        live[row + 2] +=
-            (load.moment + cross(arm, (load.fx, load.fy))) / (force_scale * length_scale);
+    for (vector, loads) in [(&mut dead, dead_loads), (&mut live, live_loads)] {
+        for load in loads {
+            let g = assembly.blocks[load.block].centroid;
+            let arm = (load.point.0 - g.0, load.point.1 - g.1);
+            let row = EQUATIONS_PER_BLOCK * load.block;
+            vector[row] += load.fx / force_scale;
+            vector[row + 1] += load.fy / force_scale;
+            vector[row + 2] +=
+                (load.moment + cross(arm, (load.fx, load.fy))) / (force_scale * length_scale);
+        }
     }
     Equilibrium {
         rows,

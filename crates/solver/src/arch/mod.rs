@@ -21,6 +21,7 @@
 pub mod chain;
 pub mod equilibrium;
 mod error;
+pub mod fill;
 pub mod geometry;
 pub mod limit;
 pub mod mechanism;

@@ -57,10 +57,11 @@ pub(super) struct Context<'a> {
 impl<'a> Context<'a> {
     pub fn new(problem: &'a ArchProblem, settings: &'a LimitSettings) -> Self {
         let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
-        let force_scale = force_scale(a, gamma);
+        let dead = &problem.dead_loads;
+        let force_scale = force_scale(a, gamma, dead);
         let model = match settings.formulation {
-            Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, loads)),
-            Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, loads)),
+            Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
+            Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, dead, loads)),
         };
         let rows = limit_rows(problem, force_scale);
         Self {

@@ -64,6 +64,7 @@ pub struct ArchProblem {
     pub(super) limits: InterfaceLimits,
     pub(super) friction: Option<f64>,
     pub(super) live_loads: Vec<LiveLoad>,
+    pub(super) dead_loads: Vec<LiveLoad>,
 }
 
 impl ArchProblem {
@@ -135,7 +136,43 @@ impl ArchProblem {
             limits,
             friction,
             live_loads,
+            dead_loads: Vec::new(),
         })
+    }
+
+    /// The same problem with other dead loads on the blocks (a fill's weight, say), carried
+    /// with the blocks' own weight and scaled with it by the dead-load factor.
+    pub fn with_dead_loads(mut self, dead_loads: Vec<LiveLoad>) -> Result<Self, ArchError> {
+        for (i, load) in dead_loads.iter().enumerate() {
+            let values = [load.point.0, load.point.1, load.fx, load.fy, load.moment];
+            if load.block >= self.assembly.blocks.len() || values.iter().any(|v| !v.is_finite()) {
+                return Err(ArchError::range(
+                    ArchParameter::Load { index: i },
+                    load.fy,
+                    "finite dead loads on existing blocks",
+                ));
+            }
+        }
+        self.dead_loads = dead_loads;
+        Ok(self)
+    }
+
+    /// The dead loads other than the blocks' own weight.
+    pub fn dead_loads(&self) -> &[LiveLoad] {
+        &self.dead_loads
+    }
+
+    /// The same problem with other live loads.
+    pub fn with_live_loads(mut self, live_loads: Vec<LiveLoad>) -> Result<Self, ArchError> {
+        let check = Self::new(
+            self.assembly.clone(),
+            self.unit_weight,
+            self.limits,
+            self.friction,
+            live_loads,
+        )?;
+        self.live_loads = check.live_loads;
+        Ok(self)
     }
 
     /// The blocks and interfaces.
