@@ -5,10 +5,12 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::arch::fill::Extrados;
 use thrustline_solver::arch::{
     ArchProblem, Assembly, CircularArch, InterfaceLimits, LimitSettings, LiveLoad, VoussoirShape,
 };
 
+use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
 use super::request::{
     DeadLoadRequest, GeometryDto, LimitFields, LiveLoadRequest, LoadDto, MaterialFields,
     VoussoirDto,
@@ -29,6 +31,18 @@ pub struct ArchInput {
     pub settings: LimitSettings,
     /// Whether the voussoirs are annular sectors (drawn with arcs).
     pub is_curved: bool,
+    /// The fill's weight, when there is a fill.
+    pub fill_weight: Option<f64>,
+    /// A rolling load's stops and loads.
+    pub rolling: Option<Rolling>,
+}
+
+/// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
+#[derive(Debug, Clone, Copy, Default)]
+struct Extras<'a> {
+    fill: Option<&'a FillDto>,
+    road_loads: &'a [RoadLoadDto],
+    rolling: Option<&'a RollingDto>,
 }
 
 /// The material part of every arch request, validated.
@@ -45,33 +59,90 @@ pub struct Material {
 impl DeadLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
-        input(self.limit_fields(), &[], time_limit_secs)
+        let extras = Extras {
+            fill: self.fill.as_ref(),
+            ..Extras::default()
+        };
+        input(self.limit_fields(), &[], extras, time_limit_secs)
     }
 }
 
 impl LiveLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
-        count("loads", self.loads.len(), 1, MAX_LOADS)?;
-        input(self.limit_fields(), &self.loads, time_limit_secs)
+        count("loads", self.loads.len(), 0, MAX_LOADS)?;
+        if self.loads.is_empty() && self.road_loads.is_empty() && self.rolling.is_none() {
+            return Err(ApiError::invalid(
+                "loads",
+                "give the live loads: loads on blocks, road_loads (with fill) or rolling",
+            ));
+        }
+        if self.rolling.is_some() && !(self.loads.is_empty() && self.road_loads.is_empty()) {
+            return Err(ApiError::invalid(
+                "rolling",
+                "rolls alone: give either rolling, or loads and road_loads",
+            ));
+        }
+        let extras = Extras {
+            fill: self.fill.as_ref(),
+            road_loads: &self.road_loads,
+            rolling: self.rolling.as_ref(),
+        };
+        input(self.limit_fields(), &self.loads, extras, time_limit_secs)
     }
 }
 
 fn input(
     fields: LimitFields,
     loads: &[LoadDto],
+    extras: Extras,
     time_limit_secs: f64,
 ) -> Result<ArchInput, ApiError> {
     let material = material(fields.material)?;
     let assembly = assembly(fields.geometry)?;
-    let live_loads = live_loads(&assembly, loads)?;
+    let is_curved = matches!(
+        fields.geometry,
+        GeometryDto::Circular {
+            voussoir: VoussoirDto::Curved,
+            ..
+        }
+    );
+    let shape = if is_curved {
+        Extrados::Arc { centre: (0.0, 0.0) }
+    } else {
+        Extrados::Straight
+    };
+    let filled = fill_loads(
+        &assembly,
+        shape,
+        extras.fill,
+        extras.road_loads,
+        extras.rolling,
+    )?;
+    let mut live_loads = live_loads(&assembly, loads)?;
+    live_loads.extend(filled.live.iter().copied());
+    if let Some(rolling) = &filled.rolling {
+        if rolling.loads.iter().all(Vec::is_empty) {
+            return Err(ApiError::invalid(
+                "rolling.x_start",
+                "the axles never stand on the arch between x_start and x_end",
+            ));
+        }
+        live_loads = rolling
+            .loads
+            .iter()
+            .find(|l| !l.is_empty())
+            .cloned()
+            .unwrap_or_default();
+    }
     let problem = ArchProblem::new(
         assembly,
         material.unit_weight,
         material.limits,
         material.friction,
         live_loads,
-    )?;
+    )?
+    .with_dead_loads(filled.dead.clone())?;
     let (min, max) = SOLVER_TOLERANCE;
     let settings = LimitSettings {
         time_limit_secs,
@@ -82,13 +153,9 @@ fn input(
     Ok(ArchInput {
         problem,
         settings,
-        is_curved: matches!(
-            fields.geometry,
-            GeometryDto::Circular {
-                voussoir: VoussoirDto::Curved,
-                ..
-            }
-        ),
+        is_curved,
+        fill_weight: extras.fill.map(|_| filled.weight),
+        rolling: filled.rolling,
     })
 }
 

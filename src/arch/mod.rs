@@ -6,14 +6,20 @@
 //! them. Angles are polar angles in degrees (for block chains: the direction of the joint from
 //! its intrados to its extrados end).
 
+pub mod codes;
 pub mod drawing;
+pub mod fill;
 pub mod input;
 pub mod minimum_thickness;
 pub mod request;
 pub mod response;
 
 use axum::extract::State;
-use thrustline_solver::arch::{solve_dead_load, solve_live_load, thrust_line};
+use fill::{Rolling, RollingOutDto};
+use thrustline_solver::arch::{
+    solve_dead_load, solve_live_load, thrust_line, ArchError, ArchProblem, LimitSolution,
+    LimitStatus, SolverFailure,
+};
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::svg::Svg;
@@ -171,14 +177,22 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
     let (solved, elapsed) = state
         .pool
         .run(move || {
-            let solution = match which {
-                Problem::DeadLoad => Ok(solve_dead_load(&input.problem, &input.settings)),
-                Problem::LiveLoad => solve_live_load(&input.problem, &input.settings),
+            let mut input = input;
+            let mut rolling = None;
+            let solution = match (which, input.rolling.take()) {
+                (Problem::DeadLoad, _) => Ok(solve_dead_load(&input.problem, &input.settings)),
+                (Problem::LiveLoad, None) => solve_live_load(&input.problem, &input.settings),
+                (Problem::LiveLoad, Some(stops)) => {
+                    roll(&mut input, &stops).map(|(solution, curve)| {
+                        rolling = Some(curve);
+                        solution
+                    })
+                }
             };
-            (input, solution)
+            (input, solution, rolling)
         })
         .await?;
-    let (input, solution) = solved;
+    let (input, solution, rolling) = solved;
     let solution = solution?;
     tracing::info!(
         problem = ?which,
@@ -199,5 +213,69 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         solution,
         status,
         thrust_line,
+        rolling,
     })
+}
+
+/// Solves the live load at every stop of a rolling load; the input's problem becomes the
+/// critical stop's, whose solution is returned with the curve. A stop whose solve fails
+/// (time) fails the whole.
+fn roll(
+    input: &mut ArchInput,
+    stops: &Rolling,
+) -> Result<(LimitSolution, RollingOutDto), ArchError> {
+    let start = std::time::Instant::now();
+    let mut factors = Vec::with_capacity(stops.positions.len());
+    let mut best: Option<(usize, LimitSolution, ArchProblem)> = None;
+    for (i, loads) in stops.loads.iter().enumerate() {
+        if loads.is_empty() {
+            factors.push(None);
+            continue;
+        }
+        let problem = input.problem.clone().with_live_loads(loads.clone())?;
+        let mut solution = solve_live_load(&problem, &input.settings)?;
+        if start.elapsed().as_secs_f64() > input.settings.time_limit_secs {
+            // Out of time: the sweep is not finished, and says so through the status.
+            solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
+            let curve = RollingOutDto {
+                positions: stops.positions.clone(),
+                load_factor: factors,
+                critical_position: None,
+                critical_load_factor: None,
+                time_per_position_ms: 0.0,
+            };
+            return Ok((solution, curve));
+        }
+        factors.push(solution.load_factor);
+        let better = match (&best, solution.load_factor) {
+            (_, None) => false,
+            (None, Some(_)) => true,
+            (Some((_, b, _)), Some(f)) => b.load_factor.is_none_or(|g| f < g),
+        };
+        if better {
+            best = Some((i, solution, problem));
+        }
+    }
+    let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
+    let critical = best
+        .as_ref()
+        .map(|(i, s, _)| (stops.positions[*i], s.load_factor));
+    let curve = RollingOutDto {
+        positions: stops.positions.clone(),
+        load_factor: factors,
+        critical_position: critical.map(|c| c.0),
+        critical_load_factor: critical.and_then(|c| c.1),
+        time_per_position_ms: elapsed_ms / stops.positions.len().max(1) as f64,
+    };
+    match best {
+        Some((_, solution, problem)) => {
+            input.problem = problem;
+            Ok((solution, curve))
+        }
+        None => {
+            // No stop collapses: answer the first loaded stop as it is.
+            let solution = solve_live_load(&input.problem, &input.settings)?;
+            Ok((solution, curve))
+        }
+    }
 }

@@ -301,7 +301,11 @@ limit_request! {
         "interface_limits": {"q_min": 0.0, "q_max": null, "s_min": 0.0, "s_max": null, "t_min": null, "t_max": null},
         "friction_coefficient": null
     })))]
-    pub struct DeadLoadRequest {}
+    pub struct DeadLoadRequest {
+        /// Fill over the arch up to a road: its weight joins the dead load.
+        #[serde(default)]
+        pub fill: Option<super::fill::FillDto>,
+    }
 }
 
 limit_request! {
@@ -314,9 +318,25 @@ limit_request! {
         "loads": [{"block": 26, "fx": 0.0, "fy": -1.0, "moment": 0.0}]
     })))]
     pub struct LiveLoadRequest {
-        /// The live loads (1 to 10000), multiplied together by the load factor.
-        #[schema(min_items = 1, max_items = 10000)]
+        /// Live loads on blocks (up to 10000), multiplied together by the load factor; give
+        /// these, `road_loads` or `rolling`.
+        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[schema(nullable)]
+        #[schema(max_items = 10000)]
         pub loads: Vec<LoadDto>,
+        /// Fill over the arch up to a road: its weight joins the dead load, and it spreads
+        /// road loads.
+        #[serde(default)]
+        pub fill: Option<super::fill::FillDto>,
+        /// Live loads on the road (with `fill`), dispersed through the fill to the extrados.
+        #[serde(default, deserialize_with = "crate::nullable::or_default")]
+        #[schema(nullable)]
+        #[schema(max_items = 10000)]
+        pub road_loads: Vec<super::fill::RoadLoadDto>,
+        /// A set of axles rolled across (on the road with `fill`, else on the extrados): the
+        /// load factor at each stop in `rolling`, the answer at the critical stop.
+        #[serde(default)]
+        pub rolling: Option<super::fill::RollingDto>,
     }
 }
 

@@ -4,69 +4,15 @@
 use serde::Serialize;
 use thrustline_solver::arch::{
     support_reactions, Assembly, Bound, HingeSide, LimitSolution, LimitStatus, Mechanism,
-    Resultant, SolverFailure, ThrustPoint,
+    SolverFailure, ThrustPoint,
 };
 use utoipa::ToSchema;
 
+use super::fill::RollingOutDto;
 use super::input::ArchInput;
 use super::request::FormulationDto;
 
-/// A resultant of an interface.
-#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum ResultantDto {
-    /// Normal force at the extrados end.
-    Q,
-    /// Normal force at the intrados end.
-    S,
-    /// Shear.
-    T,
-    /// μ(q + s) − t (friction).
-    U,
-    /// μ(q + s) + t (friction).
-    V,
-}
-
-impl From<Resultant> for ResultantDto {
-    fn from(resultant: Resultant) -> Self {
-        match resultant {
-            Resultant::Q => Self::Q,
-            Resultant::S => Self::S,
-            Resultant::T => Self::T,
-            Resultant::U => Self::U,
-            Resultant::V => Self::V,
-        }
-    }
-}
-
-/// Which limit of a resultant.
-#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum BoundDto {
-    /// The lower limit (no tension, friction).
-    Lower,
-    /// The upper limit (crushing, shear capacity).
-    Upper,
-}
-
-/// Where a hinge forms.
-#[derive(Debug, Clone, Copy, Serialize, ToSchema, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum HingeSideDto {
-    /// At the intrados end of the joint.
-    Intrados,
-    /// At the extrados end of the joint.
-    Extrados,
-}
-
-impl From<HingeSide> for HingeSideDto {
-    fn from(side: HingeSide) -> Self {
-        match side {
-            HingeSide::Intrados => Self::Intrados,
-            HingeSide::Extrados => Self::Extrados,
-        }
-    }
-}
+pub use super::codes::{BoundDto, HingeSideDto, ResultantDto};
 
 /// An active limit of the collapse mechanism.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -270,6 +216,9 @@ pub struct DeadLoadResponse {
     #[schema(examples(1.0))]
     #[schema(required = true)]
     pub dead_load_factor: Option<f64>,
+    /// With `fill`: its weight (the columns between the extrados and the road).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill_weight: Option<f64>,
     /// Details.
     #[serde(flatten)]
     pub outcome: ArchOutcomeDto,
@@ -282,6 +231,12 @@ pub struct LiveLoadResponse {
     /// finite factor causes collapse, or the solver failed.
     #[schema(required = true)]
     pub load_factor: Option<f64>,
+    /// With `fill`: its weight (the columns between the extrados and the road).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill_weight: Option<f64>,
+    /// With `rolling`: λ at each stop; the rest of the answer is the critical stop's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rolling: Option<RollingOutDto>,
     /// Details.
     #[serde(flatten)]
     pub outcome: ArchOutcomeDto,
@@ -297,6 +252,8 @@ pub struct SolvedArch {
     pub status: ArchStatusDto,
     /// The points of action at the interfaces.
     pub thrust_line: Vec<ThrustPoint>,
+    /// With `rolling`: λ at each stop.
+    pub rolling: Option<RollingOutDto>,
 }
 
 impl DeadLoadResponse {
@@ -304,6 +261,7 @@ impl DeadLoadResponse {
     pub fn new(solved: &SolvedArch) -> Self {
         Self {
             dead_load_factor: solved.solution.load_factor,
+            fill_weight: solved.input.fill_weight,
             outcome: ArchOutcomeDto::new(solved),
         }
     }
@@ -314,6 +272,8 @@ impl LiveLoadResponse {
     pub fn new(solved: &SolvedArch) -> Self {
         Self {
             load_factor: solved.solution.load_factor,
+            fill_weight: solved.input.fill_weight,
+            rolling: solved.rolling.clone(),
             outcome: ArchOutcomeDto::new(solved),
         }
     }

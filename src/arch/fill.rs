@@ -1,0 +1,283 @@
+//! Fill, road loads and rolling axles (SPEC §5.1, §5.3): the request types and their one
+//! validation into the solver's dead and live loads.
+
+use serde::{Deserialize, Serialize};
+use thrustline_solver::arch::fill::{
+    extrados_top, fill_dead_loads, road_load, Extrados, Fill, RoadLoad,
+};
+use thrustline_solver::arch::{Assembly, LiveLoad};
+use utoipa::ToSchema;
+
+use crate::error::ApiError;
+use crate::limits::{MAX_FORCE, MAX_LENGTH, MAX_LOADS, MAX_MAGNITUDE};
+use crate::validation::{count, number};
+
+/// Fill over the arch up to a road.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FillDto {
+    /// Unit weight of the fill, 0 ≤ γ_f ≤ 1e12 (0: a weightless fill that only spreads road
+    /// loads).
+    #[schema(minimum = 0.0, maximum = 1e12, examples(18.0))]
+    pub unit_weight: f64,
+    /// The road level (absolute y), above the crown's extrados. The fill's weight on each
+    /// voussoir is the column between its extrados and the road.
+    #[schema(examples(11.0))]
+    pub surface: f64,
+    /// Dispersal angle of road loads from the vertical, 0 ≤ δ ≤ 60 degrees. Defaults to 30.
+    #[serde(default)]
+    #[schema(minimum = 0.0, maximum = 60.0, default = 30.0, examples(30.0))]
+    pub dispersal_angle_deg: Option<f64>,
+    /// Passive restraint of the fill: not available yet (a request that gives it is refused
+    /// rather than answered without it).
+    #[serde(default)]
+    #[schema(value_type = Option<Object>)]
+    pub passive: Option<serde_json::Value>,
+}
+
+/// A load on the road: `fy` spread over a patch `length` wide centred at `x`, dispersed through
+/// the fill to the extrados.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RoadLoadDto {
+    /// Centre of the patch.
+    #[schema(examples(3.2))]
+    pub x: f64,
+    /// Vertical force (up positive: a wheel is negative).
+    #[schema(examples(-100.0))]
+    pub fy: f64,
+    /// Width of the patch, ≥ 0. Defaults to 0 (a line load on the road).
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(minimum = 0.0, examples(0.3))]
+    pub length: f64,
+}
+
+/// One axle of a rolling load.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AxleDto {
+    /// Position relative to the axle set's reference point.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub offset: f64,
+    /// Vertical force (up positive).
+    #[schema(examples(-100.0))]
+    pub fy: f64,
+    /// Width of the wheel's patch on the road, ≥ 0. Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(minimum = 0.0)]
+    pub length: f64,
+}
+
+/// A set of axles rolled across the arch: the live-load factor at each stop, the critical stop.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RollingDto {
+    /// The axles (1 to 20).
+    #[schema(min_items = 1, max_items = 20)]
+    pub axles: Vec<AxleDto>,
+    /// First position of the reference point.
+    pub x_start: f64,
+    /// Last position (≥ x_start).
+    pub x_end: f64,
+    /// Stops, evenly from x_start to x_end, 1 ≤ positions ≤ 1001. Defaults to 101.
+    #[serde(default)]
+    #[schema(minimum = 1, maximum = 1001, default = 101)]
+    pub positions: Option<usize>,
+}
+
+/// A validated rolling load: the live loads at each stop.
+#[derive(Debug, Clone)]
+pub struct Rolling {
+    /// The stops.
+    pub positions: Vec<f64>,
+    /// The live loads at each stop.
+    pub loads: Vec<Vec<LiveLoad>>,
+}
+
+/// Everything the fill gives a problem: its dead loads, the road loads as live loads, a
+/// rolling load's stops, and the fill's total weight.
+#[derive(Debug, Clone, Default)]
+pub struct FillLoads {
+    /// The fill's weight on the voussoirs.
+    pub dead: Vec<LiveLoad>,
+    /// The road loads dispersed to the voussoirs.
+    pub live: Vec<LiveLoad>,
+    /// A rolling load.
+    pub rolling: Option<Rolling>,
+    /// The fill's weight (0 without fill).
+    pub weight: f64,
+}
+
+/// The fill's and the road's loads on `assembly` (whose extrados is `shape`).
+pub fn fill_loads(
+    assembly: &Assembly,
+    shape: Extrados,
+    fill: Option<&FillDto>,
+    road_loads: &[RoadLoadDto],
+    rolling: Option<&RollingDto>,
+) -> Result<FillLoads, ApiError> {
+    let top = extrados_top(assembly, shape);
+    let fill = match fill {
+        Some(dto) => {
+            if dto.passive.is_some() {
+                return Err(ApiError::invalid(
+                    "fill.passive",
+                    "passive restraint of the fill is not available yet: leave it out (the \
+                     fill then gives no horizontal pressure, which is conservative)",
+                ));
+            }
+            let unit_weight = number(
+                "fill.unit_weight",
+                dto.unit_weight,
+                0.0,
+                false,
+                MAX_MAGNITUDE,
+            )?;
+            let surface = number("fill.surface", dto.surface, -MAX_LENGTH, false, MAX_LENGTH)?;
+            if surface <= top {
+                return Err(ApiError::invalid(
+                    "fill.surface",
+                    format!(
+                        "{surface} is out of range: the road must lie above the crown's extrados \
+                         (y = {top})"
+                    ),
+                ));
+            }
+            let angle = dto.dispersal_angle_deg.unwrap_or(30.0);
+            Some(Fill {
+                unit_weight,
+                road: surface,
+                dispersal_angle_deg: number("fill.dispersal_angle_deg", angle, 0.0, false, 60.0)?,
+            })
+        }
+        None => None,
+    };
+    if fill.is_none() && !road_loads.is_empty() {
+        return Err(ApiError::invalid(
+            "road_loads",
+            "need a fill to stand on (give fill, or put the loads on blocks with loads)",
+        ));
+    }
+    count("road_loads", road_loads.len(), 0, MAX_LOADS)?;
+    // Without fill, axles stand on the extrados: a weightless "fill" at the crown with no
+    // dispersal puts each on the voussoir under it.
+    let carrier = fill.unwrap_or(Fill {
+        unit_weight: 0.0,
+        road: top,
+        dispersal_angle_deg: 0.0,
+    });
+    let mut live = Vec::new();
+    for (i, load) in road_loads.iter().enumerate() {
+        let field = |name: &str| format!("road_loads[{i}].{name}");
+        let load = RoadLoad {
+            x: number(&field("x"), load.x, -MAX_LENGTH, false, MAX_LENGTH)?,
+            fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
+            length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
+        };
+        live.extend(road_load(assembly, shape, &carrier, load));
+    }
+    let rolling = rolling
+        .map(|r| rolling_loads(assembly, shape, &carrier, r))
+        .transpose()?;
+    Ok(FillLoads {
+        dead: fill.map_or(Vec::new(), |f| fill_dead_loads(assembly, shape, &f)),
+        live,
+        rolling,
+        weight: 0.0,
+    }
+    .weighed())
+}
+
+impl FillLoads {
+    fn weighed(mut self) -> Self {
+        self.weight = self.dead.iter().map(|l| -l.fy).sum();
+        self
+    }
+}
+
+fn rolling_loads(
+    assembly: &Assembly,
+    shape: Extrados,
+    carrier: &Fill,
+    dto: &RollingDto,
+) -> Result<Rolling, ApiError> {
+    count("rolling.axles", dto.axles.len(), 1, 20)?;
+    let x_start = number(
+        "rolling.x_start",
+        dto.x_start,
+        -MAX_LENGTH,
+        false,
+        MAX_LENGTH,
+    )?;
+    let x_end = number("rolling.x_end", dto.x_end, x_start, false, MAX_LENGTH)?;
+    let n = count("rolling.positions", dto.positions.unwrap_or(101), 1, 1001)?;
+    let axles = dto
+        .axles
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            let field = |name: &str| format!("rolling.axles[{i}].{name}");
+            Ok((
+                number(&field("offset"), a.offset, -MAX_LENGTH, false, MAX_LENGTH)?,
+                number(&field("fy"), a.fy, -MAX_FORCE, false, MAX_FORCE)?,
+                number(&field("length"), a.length, 0.0, false, MAX_LENGTH)?,
+            ))
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    if axles.iter().all(|a| a.1 == 0.0) {
+        return Err(ApiError::invalid(
+            "rolling.axles",
+            "every axle load is zero",
+        ));
+    }
+    let positions: Vec<f64> = (0..n)
+        .map(|i| {
+            if n == 1 {
+                x_start
+            } else {
+                x_start + (x_end - x_start) * i as f64 / (n - 1) as f64
+            }
+        })
+        .collect();
+    let loads = positions
+        .iter()
+        .map(|&x| {
+            axles
+                .iter()
+                .flat_map(|&(offset, fy, length)| {
+                    road_load(
+                        assembly,
+                        shape,
+                        carrier,
+                        RoadLoad {
+                            x: x + offset,
+                            fy,
+                            length,
+                        },
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    Ok(Rolling { positions, loads })
+}
+
+/// A rolling load's answer: λ at each stop and the critical stop.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct RollingOutDto {
+    /// The stops of the reference point.
+    pub positions: Vec<f64>,
+    /// λ at each stop; null where no axle stands on the arch or no finite λ causes collapse.
+    pub load_factor: Vec<Option<f64>>,
+    /// The critical stop (least λ); null when no stop has a λ.
+    #[schema(required = true)]
+    pub critical_position: Option<f64>,
+    /// λ there.
+    #[schema(required = true)]
+    pub critical_load_factor: Option<f64>,
+    /// Wall time per stop in milliseconds (each stop solved from scratch).
+    pub time_per_position_ms: f64,
+}

@@ -1,0 +1,129 @@
+//! Arches with fill, road loads and rolling axles over HTTP (SPEC §5.1, §5.3).
+
+mod common;
+
+use common::{assert_problem, Server};
+use serde_json::{json, Value};
+
+fn geometry() -> Value {
+    json!({"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100})
+}
+
+#[tokio::test]
+async fn fill_carries_an_arch_that_stands_alone_no_more() {
+    // R = 10, D = 1 (t/R = 0.1, below Milankovitch's 0.1075): the bare semicircle falls; with
+    // 1.8 of fill to a road at 11.5 it stands and carries a road load. The fill's weight is
+    // that of the columns over the extrados, 2·Re·y_r − π·Re²/2 times 1.8 (to the sampling).
+    let server = Server::start().await;
+    let (status, _, bare) = server
+        .post("/arch/dead-load", &json!({"geometry": geometry()}))
+        .await;
+    assert_eq!(status, 200, "{bare}");
+    assert_eq!(bare["stable"], false);
+    let fill = json!({"unit_weight": 1.8, "surface": 11.5});
+    let (status, _, filled) = server
+        .post(
+            "/arch/dead-load",
+            &json!({"geometry": geometry(), "fill": fill}),
+        )
+        .await;
+    assert_eq!(status, 200, "{filled}");
+    assert_eq!(filled["stable"], true);
+    let re: f64 = 10.5;
+    let expected = 1.8 * (2.0 * re * 11.5 - std::f64::consts::PI * re * re / 2.0);
+    let weight = filled["fill_weight"].as_f64().unwrap();
+    assert!(
+        (weight - expected).abs() < 1e-4 * expected,
+        "{weight} vs {expected}"
+    );
+    let body = json!({"geometry": geometry(), "fill": fill,
+                      "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}]});
+    let (status, _, live) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{live}");
+    assert!(live["load_factor"].as_f64().unwrap() > 0.0);
+}
+
+#[tokio::test]
+async fn a_rolling_axle_is_symmetric_and_its_worst_stop_is_the_worst_single_load() {
+    let server = Server::start().await;
+    let fill = json!({"unit_weight": 1.8, "surface": 11.5, "dispersal_angle_deg": 30.0});
+    let body = json!({"geometry": geometry(), "fill": fill,
+        "rolling": {"axles": [{"fy": -10.0, "length": 0.2}], "x_start": -8.0, "x_end": 8.0,
+                    "positions": 17}});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let rolling = &answer["rolling"];
+    let factors: Vec<f64> = rolling["load_factor"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(factors.len(), 17);
+    // The arch, the fill and the axle are symmetric about x = 0: λ(x) = λ(−x).
+    for i in 0..8 {
+        let (a, b) = (factors[i], factors[16 - i]);
+        assert!((a - b).abs() < 1e-6 * a, "stop {i}: {a} vs {b}");
+    }
+    // The critical stop is the least λ, and the answer is that stop's.
+    let least = factors.iter().copied().fold(f64::INFINITY, f64::min);
+    assert_eq!(rolling["critical_load_factor"].as_f64().unwrap(), least);
+    assert_eq!(answer["load_factor"].as_f64().unwrap(), least);
+    // The same load as a road load at the critical stop gives the same λ.
+    let x = rolling["critical_position"].as_f64().unwrap();
+    let single = json!({"geometry": geometry(), "fill": fill,
+                        "road_loads": [{"x": x, "fy": -10.0, "length": 0.2}]});
+    let (_, _, one) = server.post("/arch/live-load", &single).await;
+    let f = one["load_factor"].as_f64().unwrap();
+    assert!((f - least).abs() < 1e-9 * least, "{f} vs {least}");
+}
+
+#[tokio::test]
+async fn fill_and_road_errors_name_their_fields() {
+    let server = Server::start().await;
+    let cases = [
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1.8, "surface": 10.0}}),
+            "fill.surface",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": -1, "surface": 12.0}}),
+            "fill.unit_weight",
+        ),
+        (
+            json!({"geometry": geometry(),
+                "fill": {"unit_weight": 1, "surface": 12.0, "dispersal_angle_deg": 70}}),
+            "fill.dispersal_angle_deg",
+        ),
+        (
+            json!({"geometry": geometry(),
+                "fill": {"unit_weight": 1, "surface": 12.0, "passive": {"friction_angle_deg": 30}}}),
+            "fill.passive",
+        ),
+    ];
+    for (body, field) in cases {
+        let (status, content_type, answer) = server.post("/arch/dead-load", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+    let live = [
+        (
+            json!({"geometry": geometry(), "road_loads": [{"x": 0, "fy": -1}]}),
+            "road_loads",
+        ),
+        (json!({"geometry": geometry()}), "loads"),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
+                "rolling": {"axles": [{"fy": -1}], "x_start": 20, "x_end": 30}}),
+            "rolling.x_start",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
+                "rolling": {"axles": [{"fy": -1}], "x_start": 5, "x_end": 1}}),
+            "rolling.x_end",
+        ),
+    ];
+    for (body, field) in live {
+        let (status, content_type, answer) = server.post("/arch/live-load", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+}
