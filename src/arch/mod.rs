@@ -111,7 +111,16 @@ pub async fn dead_load_svg(
     request_body(content = LiveLoadRequest, examples(
         ("quarter_span_load" = (summary = "A unit load near the quarter span of a semicircle (λ = 22.9969)",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
-                           "loads": [{"block": 26, "fy": -1.0}]})))
+                           "loads": [{"block": 26, "fy": -1.0}]}))),
+        ("filled_bridge" = (summary = "A thin semicircle that stands only with its fill, a wheel on the road dispersed at 30°",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
+                           "fill": {"unit_weight": 1.8, "surface": 11.5, "dispersal_angle_deg": 30.0},
+                           "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}]}))),
+        ("rolling_axles" = (summary = "Two axles rolled across the filled arch: λ at 101 stops, the critical one answered",
+            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
+                           "fill": {"unit_weight": 1.8, "surface": 11.5},
+                           "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],
+                                       "x_start": -12.0, "x_end": 10.0, "positions": 101}})))
     )),
     responses(
         (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
