@@ -26,6 +26,7 @@ pub fn arch_field(parameter: ArchParameter) -> String {
                 Resultant::Q => "q",
                 Resultant::S => "s",
                 Resultant::T | Resultant::U | Resultant::V => "t",
+                Resultant::M => "compressive_strength",
             };
             let bound = match bound {
                 Bound::Lower => "min",
@@ -34,6 +35,8 @@ pub fn arch_field(parameter: ArchParameter) -> String {
             format!("interface_limits.{resultant}_{bound}")
         }
         ArchParameter::FrictionCoefficient => "friction_coefficient".to_owned(),
+        ArchParameter::CompressiveStrength => "compressive_strength".to_owned(),
+        ArchParameter::CrushingPlanes => "crushing_planes".to_owned(),
         ArchParameter::Loads => "loads".to_owned(),
         ArchParameter::Load { index } => format!("loads[{index}]"),
         ArchParameter::LoadBlock { index } => format!("loads[{index}].block"),

@@ -127,3 +127,44 @@ async fn fill_and_road_errors_name_their_fields() {
         assert_problem(status, &content_type, &answer, 422, field);
     }
 }
+
+#[tokio::test]
+async fn crushing_lowers_lambda_and_names_its_hinges() {
+    // The quarter-span load on R = 10, D = 1.5 (Heyman: λ = 22.9969). σ_c = 1e9 changes
+    // nothing; σ_c = 100 lowers λ (13.93276 by the solver's crushing tests) with hinges where
+    // the stress block reaches the faces.
+    let server = Server::start().await;
+    let body = |strength: Option<f64>| {
+        let mut b = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+                                        "voussoirs": 100},
+                           "loads": [{"block": 26, "fy": -1.0}]});
+        if let Some(s) = strength {
+            b["compressive_strength"] = json!(s);
+        }
+        b
+    };
+    let lambda = |v: &Value| v["load_factor"].as_f64().unwrap();
+    let (_, _, heyman) = server.post("/arch/live-load", &body(None)).await;
+    let (_, _, strong) = server.post("/arch/live-load", &body(Some(1e9))).await;
+    assert!((lambda(&strong) - lambda(&heyman)).abs() < 1e-7 * lambda(&heyman));
+    let (status, _, weak) = server.post("/arch/live-load", &body(Some(100.0))).await;
+    assert_eq!(status, 200, "{weak}");
+    assert!((lambda(&weak) - 13.93276).abs() < 1e-4, "{}", lambda(&weak));
+    let crushed = weak["mechanism"]["crushing_interfaces"].as_array();
+    let active = weak["active_constraints"].to_string();
+    assert!(active.contains("\"m\""), "{active}");
+    assert!(crushed.is_some_and(|c| !c.is_empty()) || active.contains("\"m\""));
+    for (value, field) in [
+        (json!(0), "compressive_strength"),
+        (json!(-5), "compressive_strength"),
+    ] {
+        let mut b = body(None);
+        b["compressive_strength"] = value;
+        let (status, content_type, answer) = server.post("/arch/live-load", &b).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+    let mut b = body(Some(100.0));
+    b["crushing_planes"] = json!(1);
+    let (status, content_type, answer) = server.post("/arch/live-load", &b).await;
+    assert_problem(status, &content_type, &answer, 422, "crushing_planes");
+}

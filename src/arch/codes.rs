@@ -19,6 +19,9 @@ pub enum ResultantDto {
     U,
     /// μ(q + s) + t (friction).
     V,
+    /// Crushing: the moment–normal force limit of the rectangular stress block (`upper`: the
+    /// resultant pressed to the extrados end, `lower`: to the intrados end).
+    M,
 }
 
 impl From<Resultant> for ResultantDto {
@@ -29,6 +32,7 @@ impl From<Resultant> for ResultantDto {
             Resultant::T => Self::T,
             Resultant::U => Self::U,
             Resultant::V => Self::V,
+            Resultant::M => Self::M,
         }
     }
 }

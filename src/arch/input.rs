@@ -7,7 +7,8 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::fill::Extrados;
 use thrustline_solver::arch::{
-    ArchProblem, Assembly, CircularArch, InterfaceLimits, LimitSettings, LiveLoad, VoussoirShape,
+    ArchProblem, Assembly, CircularArch, Crushing, InterfaceLimits, LimitSettings, LiveLoad,
+    VoussoirShape,
 };
 
 use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
@@ -143,6 +144,25 @@ fn input(
         live_loads,
     )?
     .with_dead_loads(filled.dead.clone())?;
+    let problem = match fields.compressive_strength {
+        None if fields.crushing_planes.is_some() => {
+            return Err(ApiError::invalid(
+                "crushing_planes",
+                "is for compressive_strength: give that too, or leave crushing_planes out",
+            ))
+        }
+        None => problem,
+        Some(strength) => problem.with_crushing(Crushing {
+            strength: number("compressive_strength", strength, 0.0, true, MAX_MAGNITUDE)?,
+            planes: count(
+                "crushing_planes",
+                fields.crushing_planes.unwrap_or(4),
+                2,
+                256,
+            )?,
+            cuts: Vec::new(),
+        })?,
+    };
     let (min, max) = SOLVER_TOLERANCE;
     let settings = LimitSettings {
         time_limit_secs,

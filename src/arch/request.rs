@@ -207,6 +207,10 @@ pub struct LimitFields<'a> {
     pub formulation: FormulationDto,
     /// `solver_tolerance`.
     pub solver_tolerance: f64,
+    /// `compressive_strength`.
+    pub compressive_strength: Option<f64>,
+    /// `crushing_planes`.
+    pub crushing_planes: Option<usize>,
     /// The material.
     pub material: MaterialFields<'a>,
 }
@@ -272,6 +276,19 @@ macro_rules! limit_request {
                 #[schema(nullable)]
                 #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
                 pub solver_tolerance: f64,
+                /// Compressive strength σ_c of the masonry (force per unit area, per unit
+                /// depth), 0 < σ_c ≤ 1e12: a joint of thickness t carries N ≤ σ_c·t and
+                /// |M| ≤ N·(t − N/σ_c)/2 about its middle (the rectangular stress block).
+                /// Solved to that exact curve by cutting planes. Defaults to none (no crushing).
+                #[serde(default)]
+                #[schema(exclusive_minimum = 0.0, maximum = 1e12, examples(5000.0))]
+                pub compressive_strength: Option<f64>,
+                /// With `compressive_strength`: the tangent planes the first programme starts
+                /// from, 2 ≤ planes ≤ 256 (more are added at each joint's own N until the exact
+                /// curve is met, so the answer does not depend on them). Defaults to 4.
+                #[serde(default)]
+                #[schema(minimum = 2, maximum = 256, default = 4)]
+                pub crushing_planes: Option<usize>,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }
         }
@@ -283,6 +300,8 @@ macro_rules! limit_request {
                     geometry: &self.geometry,
                     formulation: self.formulation,
                     solver_tolerance: self.solver_tolerance,
+                    compressive_strength: self.compressive_strength,
+                    crushing_planes: self.crushing_planes,
                     material: self.material(),
                 }
             }

@@ -38,6 +38,10 @@ pub enum ArchParameter {
     },
     /// The friction coefficient.
     FrictionCoefficient,
+    /// The compressive strength of the joints.
+    CompressiveStrength,
+    /// The number of crushing planes.
+    CrushingPlanes,
     /// The live loads as a whole.
     Loads,
     /// Live load `index` (0-based).
@@ -69,6 +73,8 @@ impl std::fmt::Display for ArchParameter {
                 write!(f, "{bound:?} limit of {resultant:?}")
             }
             Self::FrictionCoefficient => write!(f, "friction coefficient"),
+            Self::CompressiveStrength => write!(f, "compressive strength"),
+            Self::CrushingPlanes => write!(f, "crushing planes"),
             Self::Loads => write!(f, "loads"),
             Self::Load { index } => write!(f, "load {}", index + 1),
             Self::LoadBlock { index } => write!(f, "block of load {}", index + 1),

@@ -34,6 +34,9 @@ pub enum Resultant {
     U,
     /// μ(q + s) + t: sliding in the negative tangent direction when it vanishes.
     V,
+    /// The moment–normal force limit of crushing (the rectangular stress block): `Upper` with
+    /// the resultant pressed towards the extrados end, `Lower` towards the intrados end.
+    M,
 }
 
 /// Which limit of a resultant.
@@ -156,6 +159,8 @@ pub(crate) fn read_mechanism(
         let hinge = match (tag.resultant, tag.bound) {
             (super::Resultant::Q, Bound::Lower) => Some(HingeSide::Intrados),
             (super::Resultant::S, Bound::Lower) => Some(HingeSide::Extrados),
+            (super::Resultant::M, Bound::Upper) => Some(HingeSide::Extrados),
+            (super::Resultant::M, Bound::Lower) => Some(HingeSide::Intrados),
             _ => None,
         };
         if let Some(side) = hinge {
@@ -176,7 +181,7 @@ pub(crate) fn read_mechanism(
         }
         match (tag.resultant, tag.bound) {
             (Resultant::T | Resultant::U | Resultant::V, _) => sliding.push(k),
-            (Resultant::Q | Resultant::S, Bound::Upper) => crushing.push(k),
+            (Resultant::Q | Resultant::S, Bound::Upper) | (Resultant::M, _) => crushing.push(k),
             _ => {}
         }
         active.push(ActiveConstraint {

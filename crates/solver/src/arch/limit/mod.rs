@@ -43,8 +43,11 @@ use super::mechanism::Mechanism;
 use crate::outcome::SolverFailure;
 use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 
+mod crushing;
+
+pub use crushing::{solve_dead_load, solve_live_load};
 pub use problem::{
-    ArchProblem, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
+    ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
 
 /// The dead-load margin at full dead load, for the minimum-thickness search.
@@ -76,9 +79,8 @@ pub(crate) fn full_dead_load_margin(
     })
 }
 
-/// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
-/// carried, the mechanism in which the structure collapses under it.
-pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
+/// One dead-load solve with the crushing planes as they are.
+fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
     let full = match cx.margin(1.0) {
@@ -162,8 +164,8 @@ pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> Limit
     )
 }
 
-/// The live-load factor λ (Livesley's live-load problem), given that the dead load is carried.
-pub fn solve_live_load(
+/// One live-load solve with the crushing planes as they are.
+fn solve_live_load_once(
     problem: &ArchProblem,
     settings: &LimitSettings,
 ) -> Result<LimitSolution, ArchError> {

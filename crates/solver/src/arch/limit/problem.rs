@@ -65,6 +65,33 @@ pub struct ArchProblem {
     pub(super) friction: Option<f64>,
     pub(super) live_loads: Vec<LiveLoad>,
     pub(super) dead_loads: Vec<LiveLoad>,
+    pub(super) crushing: Option<Crushing>,
+}
+
+/// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
+/// moment about its middle |M| ≤ N·(t − N/σ_c)/2 (the rectangular stress block), linearised by
+/// the tangents to that parabola at `planes` values of N/(σ_c·t) spaced as
+/// ½(1 − cos(πk/(planes − 1))) — denser at both ends, where the curve bends; the first tangent
+/// (N = 0) is Heyman's no-tension limit, the last (N = σ_c·t) bounds N. Tangents lie outside the
+/// parabola, so λ tends to the exact value from above as the planes increase.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Crushing {
+    /// Compressive strength σ_c (force per unit area per unit depth).
+    pub strength: f64,
+    /// Number of tangent planes (≥ 2).
+    pub planes: usize,
+    /// More tangents (interface, n), added where a solution went beyond the exact curve.
+    pub cuts: Vec<(usize, f64)>,
+}
+
+impl Crushing {
+    /// The tangent points n_k = N/(σ_c·t).
+    pub fn tangent_points(&self) -> Vec<f64> {
+        let k_max = (self.planes.max(2) - 1) as f64;
+        (0..self.planes.max(2))
+            .map(|k| 0.5 * (1.0 - (std::f64::consts::PI * k as f64 / k_max).cos()))
+            .collect()
+    }
 }
 
 impl ArchProblem {
@@ -137,7 +164,33 @@ impl ArchProblem {
             friction,
             live_loads,
             dead_loads: Vec::new(),
+            crushing: None,
         })
+    }
+
+    /// The same problem with crushing of the joints.
+    pub fn with_crushing(mut self, crushing: Crushing) -> Result<Self, ArchError> {
+        if !(crushing.strength.is_finite() && crushing.strength > 0.0) {
+            return Err(ArchError::range(
+                ArchParameter::CompressiveStrength,
+                crushing.strength,
+                "a finite number > 0",
+            ));
+        }
+        if !(2..=256).contains(&crushing.planes) {
+            return Err(ArchError::range(
+                ArchParameter::CrushingPlanes,
+                crushing.planes as f64,
+                "an integer 2 ≤ planes ≤ 256",
+            ));
+        }
+        self.crushing = Some(crushing);
+        Ok(self)
+    }
+
+    /// The crushing of the joints, if any.
+    pub fn crushing(&self) -> Option<&Crushing> {
+        self.crushing.as_ref()
     }
 
     /// The same problem with other dead loads on the blocks (a fill's weight, say), carried

@@ -55,6 +55,43 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                 },
             });
         }
+        if let Some(crushing) = &problem.crushing {
+            let no_tension = problem.limits.q_min.is_some_and(|v| v >= 0.0)
+                && problem.limits.s_min.is_some_and(|v| v >= 0.0);
+            // ±(q − s) ≤ (1 − 2n)(q + s) + n²·σ_c·t: the tangent at n = N/(σ_c t) to
+            // |q − s| ≤ (q + s)(1 − (q + s)/(σ_c t)), i.e. |M| ≤ N(t − N/σ_c)/2.
+            let t = problem.assembly.interfaces[k].length();
+            let cuts = crushing.cuts.iter().filter(|c| c.0 == k).map(|c| c.1);
+            for n in crushing.tangent_points().into_iter().chain(cuts) {
+                let b = n * n * crushing.strength * t / w;
+                // A plane this far out (in units of the whole dead weight) never binds; left
+                // out, it cannot spoil the programme's scaling (σ_c → ∞ is Heyman's n = 0).
+                if n > 0.0 && b > 1e4 {
+                    continue;
+                }
+                // The tangent at N = 0 is q ≥ 0 and s ≥ 0: left out when those limits are
+                // there already (a duplicate row makes the programme degenerate).
+                if n == 0.0 && no_tension {
+                    continue;
+                }
+                for (bound, sign) in [(Bound::Upper, 1.0), (Bound::Lower, -1.0)] {
+                    rows.push(Row {
+                        entries: [
+                            (col, sign - (1.0 - 2.0 * n)),
+                            (col + 1, -sign - (1.0 - 2.0 * n)),
+                            (col, 0.0),
+                        ],
+                        len: 2,
+                        b,
+                        tag: LimitTag {
+                            interface: k,
+                            resultant: Resultant::M,
+                            bound,
+                        },
+                    });
+                }
+            }
+        }
         if let Some(mu) = problem.friction {
             // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
             // −v ≤ 0; only where friction is finite.
