@@ -6,7 +6,6 @@
 //! falls monotonically to the exact value. Without crushing, one solve.
 
 use super::problem::{ArchProblem, Crushing, LimitSettings, LimitSolution, LimitStatus};
-use super::{solve_dead_load_once, solve_live_load_once};
 use crate::arch::ArchError;
 use crate::outcome::SolverFailure;
 
@@ -16,22 +15,8 @@ const MAX_ROUNDS: usize = 30;
 /// How far beyond the curve a resultant may lie, as a fraction of σ_c·t.
 const ON_CURVE: f64 = 1e-9;
 
-/// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
-/// carried, the mechanism in which the structure collapses under it.
-pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
-    refine(problem, settings, |p, s| Ok(solve_dead_load_once(p, s)))
-        .unwrap_or_else(|_| solve_dead_load_once(problem, settings))
-}
-
-/// The live-load factor λ (Livesley's live-load problem), given that the dead load is carried.
-pub fn solve_live_load(
-    problem: &ArchProblem,
-    settings: &LimitSettings,
-) -> Result<LimitSolution, ArchError> {
-    refine(problem, settings, solve_live_load_once)
-}
-
-fn refine(
+/// Solves with `solve_once`, adding cuts until every joint lies on or inside the exact curve.
+pub(super) fn refine(
     problem: &ArchProblem,
     settings: &LimitSettings,
     solve_once: impl Fn(&ArchProblem, &LimitSettings) -> Result<LimitSolution, ArchError>,

@@ -45,7 +45,6 @@ use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 
 mod crushing;
 
-pub use crushing::{solve_dead_load, solve_live_load};
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
@@ -227,4 +226,19 @@ fn solve_live_load_once(
         },
         start,
     ))
+}
+
+/// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not
+/// carried, the mechanism in which the structure collapses under it.
+pub fn solve_dead_load(problem: &ArchProblem, settings: &LimitSettings) -> LimitSolution {
+    crushing::refine(problem, settings, |p, s| Ok(solve_dead_load_once(p, s)))
+        .unwrap_or_else(|_| solve_dead_load_once(problem, settings))
+}
+
+/// The live-load factor λ (Livesley's live-load problem), given that the dead load is carried.
+pub fn solve_live_load(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+) -> Result<LimitSolution, ArchError> {
+    crushing::refine(problem, settings, solve_live_load_once)
 }
