@@ -26,3 +26,25 @@ for n in [10, 100, 1800, 10000]:
     bench(f"arch live load, N = {n}, D = 1.5 (chain)", "/arch/live-load", {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": n}, "loads": [{"block": n // 4 + 1, "fy": -1}]}, lambda d: d["solver"]["time_ms"])
 for n in [100, 1800]:
     bench(f"minimum thickness, semicircle, N = {n}", "/arch/minimum-thickness", {"geometry": {"kind": "circular", "radius": 10, "thickness": 1, "voussoirs": n}}, lambda d: d["solve_time_ms"])
+
+# Part II scenes.
+layered = {"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+    "layers": [{"top": None, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+               {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}},
+               {"top": [[-20, -6], [40, -8]], "soil": {"unit_weight": 21, "cohesion": 20, "friction_angle_deg": 25}}],
+    "piezometric_line": [[-20, 1], [10, 3], [40, 6]]}}
+bench("section, 3 layers + water table, one circle, 100 slices", "/slope/spencer", dict(layered, circle={"centre": [12, 28], "radius": 26}, slices=100), lambda d: d["solve_time_ms"])
+bench("same, with Morgenstern–Price, Bishop, Janbu and ordinary", "/slope/spencer", dict(layered, circle={"centre": [12, 28], "radius": 26}, slices=100, methods=["morgenstern_price", "bishop", "janbu", "ordinary"]), lambda d: d["solve_time_ms"])
+fk = {"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]], "layers": [{"top": None, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]}}
+surface = [[40 + 6.5 * i, 62 - 40 * (1 - ((i - 10) / 10) ** 2) ** 0.5 if i not in (0, 20) else 62] for i in range(21)]
+surface = [[x, min(y, 61.9 if x < 60 else 62)] for x, y in surface]
+bench("F&K section, a 21-vertex polyline surface, 100 slices", "/slope/spencer", dict(fk, surface=[[40, 62], [50, 45], [70, 32], [90, 25], [110, 21], [130, 19], [150, 18], [165, 21]], slices=100), lambda d: d["solve_time_ms"])
+acads = {"section": {"ground": [[20, 25], [30, 25], [50, 35], [70, 35]], "layers": [{"top": None, "soil": {"unit_weight": 20, "cohesion": 3, "friction_angle_deg": 19.6}}]}}
+bench("ACADS 1(a) search {}: 21 × 21 centres × 10 radii + refinement, 50 slices", "/slope/spencer", dict(acads, search={}, slices=50), lambda d: d["solve_time_ms"])
+bench("3-layer section search: 50 × 50 centres × 10 radii + refinement, 50 slices", "/slope/spencer", dict(layered, search={"nx": 50, "ny": 50, "nr": 10}, slices=50), lambda d: d["solve_time_ms"])
+arch = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.0, "voussoirs": 100}, "fill": {"unit_weight": 1.8, "surface": 11.5}}
+bench("arch with fill, N = 100, a road load (chain)", "/arch/live-load", dict(arch, road_loads=[{"x": -4, "fy": -10, "length": 0.3}]), lambda d: d["solver"]["time_ms"])
+bench("arch with fill, N = 100, two axles rolled over 101 stops", "/arch/live-load", dict(arch, rolling={"axles": [{"offset": 0, "fy": -10}, {"offset": 1.8, "fy": -10}], "x_start": -12, "x_end": 10, "positions": 101}), lambda d: d["rolling"]["time_per_position_ms"] * 101)
+quarter = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 100}, "loads": [{"block": 26, "fy": -1}]}
+bench("arch live load, N = 100, crushing σ_c = 100 (cutting planes from 4)", "/arch/live-load", dict(quarter, compressive_strength=100), lambda d: d["solver"]["time_ms"])
+bench("arch live load, N = 100, crushing σ_c = 50", "/arch/live-load", dict(quarter, compressive_strength=50), lambda d: d["solver"]["time_ms"])

@@ -3,7 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::fill::{
-    extrados_top, fill_dead_loads, road_load, Extrados, Fill, RoadLoad,
+    extrados_top, fill_dead_loads, road_load, road_load_on, Extrados, ExtradosProfile, Fill,
+    RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -242,15 +243,15 @@ fn rolling_loads(
             }
         })
         .collect();
+    let profile = ExtradosProfile::new(assembly, shape);
     let loads = positions
         .iter()
         .map(|&x| {
             axles
                 .iter()
                 .flat_map(|&(offset, fy, length)| {
-                    road_load(
-                        assembly,
-                        shape,
+                    road_load_on(
+                        &profile,
                         carrier,
                         RoadLoad {
                             x: x + offset,

@@ -136,6 +136,60 @@ pub fn fill_dead_loads(assembly: &Assembly, shape: Extrados, fill: &Fill) -> Vec
         .collect()
 }
 
+/// The extrados of every voussoir, sampled once: what dispersing road loads needs.
+#[derive(Debug, Clone)]
+pub struct ExtradosProfile {
+    blocks: Vec<Vec<(f64, f64)>>,
+    /// Each block's x-range.
+    ranges: Vec<(f64, f64)>,
+    /// The upper envelope as a polyline sorted by x.
+    envelope: Vec<(f64, f64)>,
+}
+
+impl ExtradosProfile {
+    /// Samples the extrados of `assembly`.
+    pub fn new(assembly: &Assembly, shape: Extrados) -> Self {
+        let blocks: Vec<Vec<(f64, f64)>> = (0..assembly.blocks.len())
+            .map(|b| extrados_points(assembly, b, shape))
+            .collect();
+        let ranges = blocks
+            .iter()
+            .map(|p| {
+                p.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), q| {
+                        (a.min(q.0), c.max(q.0))
+                    })
+            })
+            .collect();
+        let mut envelope: Vec<(f64, f64)> = blocks.iter().flatten().copied().collect();
+        envelope.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
+        envelope.dedup_by(|next, kept| next.0 == kept.0);
+        Self {
+            blocks,
+            ranges,
+            envelope,
+        }
+    }
+
+    /// The extrados' height at x (its upper envelope); −∞ outside the arch.
+    fn surface(&self, x: f64) -> f64 {
+        let e = &self.envelope;
+        if e.is_empty() || x < e[0].0 || x > e[e.len() - 1].0 {
+            return f64::NEG_INFINITY;
+        }
+        let i = e.partition_point(|p| p.0 < x);
+        if i == 0 {
+            return e[0].1;
+        }
+        let (a, b) = (e[i - 1], e[i.min(e.len() - 1)]);
+        if b.0 > a.0 {
+            a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0)
+        } else {
+            a.1.max(b.1)
+        }
+    }
+}
+
 /// A road load dispersed through the fill: from each end of the patch a line runs down at the
 /// dispersal angle, outward, to the extrados; between the two points the load is a uniform
 /// pressure per horizontal length, shared among the voussoirs by horizontal overlap (what
@@ -147,21 +201,18 @@ pub fn road_load(
     fill: &Fill,
     load: RoadLoad,
 ) -> Vec<LiveLoad> {
-    let blocks: Vec<Vec<(f64, f64)>> = (0..assembly.blocks.len())
-        .map(|b| extrados_points(assembly, b, shape))
-        .collect();
-    // The upper envelope of the extrados at x.
-    let surface = |x: f64| {
-        blocks
-            .iter()
-            .filter_map(|p| y_at(p, x))
-            .fold(f64::NEG_INFINITY, f64::max)
-    };
-    let (x_lo, x_hi) = blocks
+    road_load_on(&ExtradosProfile::new(assembly, shape), fill, load)
+}
+
+/// [`road_load`] on an extrados sampled once (for many loads, as a rolling sweep has).
+pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> Vec<LiveLoad> {
+    let blocks = &profile.blocks;
+    let surface = |x: f64| profile.surface(x);
+    let (x_lo, x_hi) = profile
+        .ranges
         .iter()
-        .flatten()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p.0), b.max(p.0))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+            (a.min(r.0), b.max(r.1))
         });
     let tan = fill.dispersal_angle_deg.to_radians().tan();
     // Where a line from (x0, road) going down and outward (`side` −1: left, +1: right) meets
@@ -184,7 +235,7 @@ pub fn road_load(
         if ga * gb > 0.0 {
             return if side < 0.0 { a } else { b };
         }
-        for _ in 0..100 {
+        for _ in 0..60 {
             let m = 0.5 * (a + b);
             if (g(m) < 0.0) == (ga < 0.0) {
                 a = m;
@@ -199,11 +250,7 @@ pub fn road_load(
     let width = right - left;
     let mut out = Vec::new();
     for (b, points) in blocks.iter().enumerate() {
-        let (lo, hi) = points
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), p| {
-                (a.min(p.0), c.max(p.0))
-            });
+        let (lo, hi) = profile.ranges[b];
         if width <= 1e-12 * (x_hi - x_lo).max(1.0) {
             // A point load on the voussoir under it (the first one whose extrados spans x).
             if left >= lo && left <= hi && out.is_empty() {
