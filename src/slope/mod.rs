@@ -139,6 +139,10 @@ async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, Api
     Ok(solved)
 }
 
+/// With automatic search bounds, circles beyond this many times the embankment's larger
+/// dimension are not candidates.
+const MAX_RADIUS_OVER_SIZE: f64 = 50.0;
+
 /// Runs on the blocking pool: the search if asked, then the full solution of the circle (refined
 /// if asked), then the curves if asked. A solver stopped by the time limit is the 422 of the
 /// README's outcome rule, naming the field that sets the work.
@@ -157,10 +161,16 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
         match input.target {
             Target::Surface(problem) => (problem, None),
             Target::Search(grid, search_problem, hard_bounds) => {
+                let size = search_problem
+                    .embankment
+                    .height()
+                    .max(search_problem.embankment.length());
                 let settings = SearchSettings {
                     time_limit: Some(time_limit),
                     spencer,
                     hard_bounds,
+                    // Automatic bounds may move; not to circles that dwarf the embankment.
+                    max_radius: (!hard_bounds).then_some(MAX_RADIUS_OVER_SIZE * size),
                     ..SearchSettings::default()
                 };
                 let found = search_critical_circle(&search_problem, grid, &settings);

@@ -112,6 +112,9 @@ pub struct SearchSettings {
     /// Whether the grid's bounds were given: they then stay put (no regrids) and the refined
     /// centre stays inside them. Defaults to false.
     pub hard_bounds: bool,
+    /// Circles larger than this are no candidates (a radius that dwarfs the embankment is a
+    /// plane, not a slip circle of it). Defaults to none.
+    pub max_radius: Option<f64>,
 }
 
 impl Default for SearchSettings {
@@ -123,6 +126,7 @@ impl Default for SearchSettings {
             max_refine_evaluations: 300,
             time_limit: None,
             hard_bounds: false,
+            max_radius: None,
         }
     }
 }
@@ -206,6 +210,11 @@ fn outcome(
     }
 }
 
+/// Whether the circle's radius is within the limit.
+fn within_reach(circle: SlipCircle, max_radius: Option<f64>) -> bool {
+    max_radius.is_none_or(|m| circle.x.hypot(circle.y) <= m)
+}
+
 /// An optional instant after which no more circles are evaluated.
 struct Deadline(Option<std::time::Instant>);
 
@@ -230,7 +239,7 @@ type Outcomes = Vec<Vec<Result<f64, Option<Option<f64>>>>>;
 fn evaluate_grid(
     problem: &SearchProblem,
     grid: &SearchGrid,
-    settings: &SpencerSettings,
+    settings: &SearchSettings,
     deadline: &Deadline,
 ) -> (FactorGrid, Outcomes) {
     let (xs, ys) = (grid.xs(), grid.ys());
@@ -247,7 +256,10 @@ fn evaluate_grid(
                         y,
                         lower_end_factor: problem.lower_end_factor,
                     };
-                    outcome(problem, circle, settings)
+                    if !within_reach(circle, settings.max_radius) {
+                        return Err(None);
+                    }
+                    outcome(problem, circle, &settings.spencer)
                 })
                 .collect()
         })
@@ -300,7 +312,7 @@ pub fn search_critical_circle(
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let (factors, outcomes) = evaluate_grid(problem, &grid, &settings.spencer, &deadline);
+        let (factors, outcomes) = evaluate_grid(problem, &grid, settings, &deadline);
         evaluations += grid.nx * grid.ny;
         let mut points: Vec<(f64, usize, usize)> = factors
             .factors
@@ -366,6 +378,9 @@ pub fn search_critical_circle(
                         if !(0.0..=max).contains(&f_e) {
                             return f64::INFINITY;
                         }
+                    }
+                    if !within_reach(circle_at(v), settings.max_radius) {
+                        return f64::INFINITY;
                     }
                     factor_of_safety(problem, circle_at(v), &settings.spencer)
                         .unwrap_or(f64::INFINITY)
