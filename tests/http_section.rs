@@ -110,6 +110,22 @@ async fn section_errors_name_their_fields() {
         (
             with(
                 fredlund_krahn(),
+                "section.surcharges",
+                json!([{"x_start": 300, "x_end": 310, "pressure": 1}]),
+            ),
+            "section.surcharges[0]",
+        ),
+        (
+            with(
+                fredlund_krahn(),
+                "section.piezometric_line",
+                json!([[-100, 10], [-50, 12]]),
+            ),
+            "section.piezometric_line",
+        ),
+        (
+            with(
+                fredlund_krahn(),
                 "section.tension_crack",
                 json!({"depth": 2, "water_depth": 3}),
             ),

@@ -221,6 +221,33 @@ impl Section {
                 "0 ≤ water_depth ≤ depth",
             )?;
         }
+        let (g0, g1) = {
+            let p = parts.ground.points();
+            (p[0].0, p[p.len() - 1].0)
+        };
+        for (index, s) in parts.surcharges.iter().enumerate() {
+            if s.x_end < g0 || s.x_start > g1 {
+                return Err(SlopeError::Conflict {
+                    parameter: SlopeParameter::Surcharge { index },
+                    reason: format!(
+                        "lies outside the ground (which runs from x = {g0} to {g1}): a surcharge \
+                         acts on the ground"
+                    ),
+                });
+            }
+        }
+        if let Some(line) = &parts.piezometric_line {
+            let p = line.points();
+            if g1 > g0 && (p[p.len() - 1].0 < g0 || p[0].0 > g1) {
+                return Err(SlopeError::Conflict {
+                    parameter: SlopeParameter::PiezometricLine,
+                    reason: format!(
+                        "lies outside the section (the ground runs from x = {g0} to {g1}): give \
+                         it over the section"
+                    ),
+                });
+            }
+        }
         if let Some(bedrock) = &parts.bedrock {
             let above = bedrock
                 .points()
