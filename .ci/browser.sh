@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
 # loads the page from a running release server with ?run=all, which submits the Milankovitch,
-# live-load and Spencer examples; the test reads the rendered DOM for the numbers and the three
+# live-load, Spencer and section examples; the test reads the rendered DOM for the numbers and the four
 # drawings, and keeps a screenshot in target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed)
 set -euo pipefail
@@ -47,8 +47,9 @@ expect "1446 (144.5°, intrados)"
 expect "load_factor: 22.99688965"
 # SPEC §2.3 / thesis: F = 1.06958 at 100 slices.
 expect "factor_of_safety: 1.06957"
+expect "morgenstern_price: "
 drawings=$(grep -o '<img alt="drawing of the [a-z]* answer" src="blob:' <<< "$dom" | wc -l)
-if [ "$drawings" -eq 3 ]; then echo "ok: three drawings"; else echo "FAILED: $drawings drawings, expected 3" >&2; failures=$((failures + 1)); fi
+if [ "$drawings" -eq 4 ]; then echo "ok: four drawings"; else echo "FAILED: $drawings drawings, expected 4" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
 passed=$((6 - failures))
 echo "browser: $passed passed, $failures failed"
