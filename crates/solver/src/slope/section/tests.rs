@@ -511,3 +511,67 @@ fn ponded_water_to_the_crest_leaves_a_frictional_slope_as_it_was() {
     let (fa, fb) = (a.factor_of_safety.unwrap(), b.factor_of_safety.unwrap());
     assert!((fa - fb).abs() < 5e-3 * fa, "Spencer {fa} vs {fb}");
 }
+
+#[test]
+fn a_polyline_on_a_circle_gives_the_circle() {
+    // 2001 points on Fredlund & Krahn's circle (from just outside the ground at both ends):
+    // the polyline's F tends to the circle's as the chords shorten (1e-6 at 1000 slices).
+    let ground = [(0.0, 60.0), (60.0, 60.0), (140.0, 20.0), (180.0, 20.0)];
+    let parts = one_soil(&ground, 120.0, 600.0, 20.0);
+    let (centre, radius) = ((120.0, 90.0), 80.0);
+    let (_, circle) = solve(parts.clone(), SlipShape::Circle { centre, radius }, 1000);
+    let (a, b) = (45.0, 159.5);
+    let points: Vec<(f64, f64)> = (0..=2000)
+        .map(|k| {
+            let x = a + (b - a) * f64::from(k) / 2000.0;
+            (
+                x,
+                centre.1 - (radius * radius - (x - centre.0).powi(2)).sqrt(),
+            )
+        })
+        .collect();
+    let polyline = SlipShape::Polyline(line(&points));
+    let (_, poly) = solve(parts, polyline, 1000);
+    let (fc, fp) = (
+        circle.factor_of_safety.unwrap(),
+        poly.factor_of_safety.unwrap(),
+    );
+    assert!((fc - fp).abs() < 1e-5 * fc, "circle {fc}, polyline {fp}");
+}
+
+#[test]
+fn every_method_on_a_dry_cohesionless_infinite_slope() {
+    use crate::slope::spencer::methods::{
+        bishop, janbu, morgenstern_price, ordinary, InterSliceFunction,
+    };
+    // c' = 0, dry: on a surface parallel to the face every slice has N = W cos β and the
+    // inter-slice forces cancel, so every method gives tan φ'/tan β (to the ends' z/L).
+    let (beta, phi) = (25.0f64, 33.0f64);
+    let (ground, surface) = infinite_slope(beta, 2.0, 2000.0);
+    let expected = phi.to_radians().tan() / beta.to_radians().tan();
+    let problem = SectionProblem::new(
+        Section::new(one_soil(&ground, 19.0, 0.0, phi)).unwrap(),
+        SlipShape::Polyline(surface),
+        NonZeroUsize::new(400).unwrap(),
+        Seismic::default(),
+        Some((1000.0, 5000.0)),
+    )
+    .unwrap();
+    let model = problem.model();
+    let s = solve_spencer(model, &SpencerSettings::default());
+    let spencer = (s.factor_of_safety.unwrap(), s.theta_rad.unwrap().tan());
+    let mp = morgenstern_price(model, &InterSliceFunction::HalfSine, spencer);
+    for (name, f) in [
+        ("Spencer", Some(spencer.0)),
+        ("Morgenstern–Price", mp.factor_of_safety),
+        ("Bishop", bishop(model).factor_of_safety),
+        ("Janbu", janbu(model).factor_of_safety),
+        ("ordinary", ordinary(model).factor_of_safety),
+    ] {
+        let f = f.unwrap_or(f64::NAN);
+        assert!(
+            (f - expected).abs() < 5e-3 * expected,
+            "{name}: {f} vs {expected}"
+        );
+    }
+}
