@@ -2,7 +2,7 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::Serialize;
-use thrustline_solver::slope::{Sliced, SpencerStatus};
+use thrustline_solver::slope::{Sliced, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
 use super::report::SolvedSlope;
@@ -196,6 +196,9 @@ pub struct SpencerResponse {
     pub slices: Vec<SliceDto>,
     /// Line of thrust on the interior slice boundaries (empty when not converged).
     pub thrust_line: Vec<BoundaryThrustPointDto>,
+    /// Line of thrust of the effective inter-slice forces (the total less the pore water's
+    /// push on each boundary, Spencer 1973); `force` is the effective force's magnitude.
+    pub effective_thrust_line: Vec<BoundaryThrustPointDto>,
     /// Newton iterations (plus fallback evaluations).
     pub iterations: usize,
     /// Largest scaled residual of the two equations (force/ΣW, moment/(ΣW·R)).
@@ -293,6 +296,18 @@ impl SpencerResponse {
             upper_exit: point(c.upper_exit),
         });
         let surface = problem.surface();
+        let line = |points: &[ThrustPoint]| -> Vec<BoundaryThrustPointDto> {
+            points
+                .iter()
+                .map(|t| BoundaryThrustPointDto {
+                    boundary: t.boundary,
+                    x: to_x(t.x),
+                    y: t.y,
+                    force: t.force,
+                    inside_slice: t.is_inside_slice,
+                })
+                .collect()
+        };
         SpencerResponse {
             converged,
             status,
@@ -304,17 +319,8 @@ impl SpencerResponse {
             surface: surface.into_iter().map(point).collect(),
             slice_count: model.slices.len(),
             slices,
-            thrust_line: solution
-                .thrust_line
-                .iter()
-                .map(|t| BoundaryThrustPointDto {
-                    boundary: t.boundary,
-                    x: to_x(t.x),
-                    y: t.y,
-                    force: t.force,
-                    inside_slice: t.is_inside_slice,
-                })
-                .collect(),
+            thrust_line: line(&solution.thrust_line),
+            effective_thrust_line: line(&solution.effective_thrust_line),
             iterations: solution.iterations,
             residual: solution.residual,
             warnings,

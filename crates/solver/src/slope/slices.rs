@@ -42,6 +42,10 @@ pub struct BaseSlice {
     pub pore_pressure: f64,
     /// Index of the soil (layer) at the base; 0 for a single soil.
     pub layer: usize,
+    /// The pore water's force on the right side (horizontal, ∫u dy from the base to the
+    /// ground) and the height it acts at: what separates the total inter-slice force there
+    /// from the effective one (Spencer 1973).
+    pub side_water: (f64, f64),
 }
 
 impl BaseSlice {

@@ -363,6 +363,65 @@ fn slice(
         tan_phi: soil.friction_angle_rad.tan(),
         pore_pressure,
         layer,
+        side_water: side_water(section, xr, br),
+    }
+}
+
+/// The pore water's force on the vertical through x from the base at y = b up to the ground,
+/// and its height: ∫u dy by Simpson's rule on 8 panels (exact under a water line; the r_u
+/// pressures of layered soils are piecewise linear, to ~1e-4 there).
+fn side_water(section: &Section, x: f64, b: f64) -> (f64, f64) {
+    let g = section.ground.y_at(x);
+    if g <= b {
+        return (0.0, b);
+    }
+    let layers = &section.layers;
+    let u = |y: f64| -> f64 {
+        // The soil at (x, y) and the weight of the column above it.
+        let tops: Vec<f64> = layers
+            .iter()
+            .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x)))
+            .collect();
+        let k = (0..layers.len()).rev().find(|&k| tops[k] >= y).unwrap_or(0);
+        match (layers[k].pore_pressure_ratio, &section.piezometric_line) {
+            (Some(ratio), _) => {
+                let mut stress = 0.0;
+                let mut below = y;
+                for j in (0..layers.len()).rev() {
+                    let upper = g.min(tops[j]);
+                    if upper > below {
+                        stress += layers[j].soil.unit_weight * (upper - below);
+                        below = upper;
+                    }
+                }
+                ratio * stress
+            }
+            (None, Some(line)) => section.water_unit_weight * (line.y_at(x) - y).max(0.0),
+            (None, None) => 0.0,
+        }
+    };
+    const PANELS: usize = 8;
+    let h = (g - b) / PANELS as f64;
+    let (mut force, mut moment) = (0.0, 0.0);
+    for i in 0..=PANELS {
+        let y = b + h * i as f64;
+        let w = if i == 0 || i == PANELS {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        let p = u(y);
+        force += w * p;
+        moment += w * p * y;
+    }
+    force *= h / 3.0;
+    moment *= h / 3.0;
+    if force > 0.0 {
+        (force, moment / force)
+    } else {
+        (0.0, b)
     }
 }
 

@@ -23,6 +23,7 @@ pub(super) fn describe(
     let (sin_t, cos_t) = theta.sin_cos();
     let mut slice_forces = Vec::with_capacity(slices.len());
     let mut thrust_line = Vec::with_capacity(slices.len().saturating_sub(1));
+    let mut effective_thrust_line = Vec::with_capacity(slices.len().saturating_sub(1));
     let mut small_m_alpha_slices = Vec::new();
     let mut negative_effective_normal_slices = Vec::new();
     // Inter-slice force and the height of its point of action on the left boundary of the
@@ -76,6 +77,20 @@ pub(super) fn describe(
                 force: z_right,
                 is_inside_slice: y_right.is_some_and(|y| y >= slice.base_right_y && y <= top),
             });
+            // Effective: the horizontal component less the side water U at y_U, same vertical
+            // component; its point from the moments of the horizontal components.
+            let (water, y_water) = slice.side_water;
+            let horizontal = z_right * cos_t - water;
+            let y_effective = y_right
+                .map(|y| (z_right * cos_t * y - water * y_water) / horizontal)
+                .filter(|y| y.is_finite() && horizontal.abs() > f64::MIN_POSITIVE);
+            effective_thrust_line.push(ThrustPoint {
+                boundary: i + 1,
+                x: slice.x_right,
+                y: y_effective,
+                force: horizontal.hypot(z_right * sin_t),
+                is_inside_slice: y_effective.is_some_and(|y| y >= slice.base_right_y && y <= top),
+            });
             (z_left, y_left) = (z_right, y_right.unwrap_or(yb));
         }
     }
@@ -88,6 +103,7 @@ pub(super) fn describe(
         used_fallback: solved.used_fallback,
         slice_forces,
         thrust_line,
+        effective_thrust_line,
         small_m_alpha_slices,
         negative_effective_normal_slices,
         unphysical_root: None,

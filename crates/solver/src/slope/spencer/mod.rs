@@ -205,6 +205,7 @@ fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolut
                 theta_rad: None,
                 unphysical_root: Some(f),
                 thrust_line: Vec::new(),
+                effective_thrust_line: Vec::new(),
                 ..s
             }
         }
@@ -214,6 +215,7 @@ fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolut
             s.status = SpencerStatus::MomentOnly;
             s.theta_rad = None;
             s.thrust_line.clear();
+            s.effective_thrust_line.clear();
             s
         }
         (None, _) => no_solution(model, &solved),
@@ -230,6 +232,7 @@ fn no_solution(model: &SliceModel, solved: &newton::EquationsSolution) -> Spence
         used_fallback: solved.used_fallback,
         slice_forces: vec![SliceForces::default(); model.slices.len()],
         thrust_line: Vec::new(),
+        effective_thrust_line: Vec::new(),
         small_m_alpha_slices: Vec::new(),
         negative_effective_normal_slices: Vec::new(),
         unphysical_root: None,

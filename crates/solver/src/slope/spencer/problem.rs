@@ -221,6 +221,14 @@ impl SlopeProblem {
                 tan_phi,
                 pore_pressure: soil.pore_pressure_ratio * soil.unit_weight * s.height_middle,
                 layer: 0,
+                side_water: {
+                    // u = r_u·γ·(ground − y): ½·r_u·γ·h² at h/3 above the base.
+                    let h = (g.embankment.ground(s.x_right) - s.base_right_y).max(0.0);
+                    (
+                        0.5 * soil.pore_pressure_ratio * soil.unit_weight * h * h,
+                        s.base_right_y + h / 3.0,
+                    )
+                },
             })
             .collect();
         SliceModel {

@@ -115,6 +115,9 @@ pub struct SpencerSolution {
     pub slice_forces: Vec<SliceForces>,
     /// The line of thrust on the interior slice boundaries (empty when not converged).
     pub thrust_line: Vec<ThrustPoint>,
+    /// The line of thrust of the effective inter-slice forces: the total force less the pore
+    /// water's push on the boundary (Spencer 1973); empty when not converged.
+    pub effective_thrust_line: Vec<ThrustPoint>,
     /// Slices whose m_α is below [`SMALL_DENOMINATOR`] at the solution.
     pub small_m_alpha_slices: Vec<usize>,
     /// Slices whose effective normal force is negative at the solution.

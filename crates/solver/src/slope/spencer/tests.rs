@@ -265,3 +265,37 @@ fn dropping_friction_in_tension_gives_the_cohesive_answer() {
     );
     assert!((classic.factor_of_safety.unwrap() - 1.06958).abs() < 5e-6);
 }
+
+#[test]
+fn the_effective_line_of_thrust_is_the_total_less_the_side_water() {
+    // Dry (r_u = 0): no water on the boundaries, the two lines coincide. With r_u = 0.5 the
+    // side water is ½·r_u·γ·h² at h/3 above the base (by hand at one boundary) and the effective
+    // point balances the horizontal moments: Z cos θ·y = E'·y' + U·y_U.
+    let dry = solve_spencer(
+        &spencer_example(100, 10.0, 1.0).model(),
+        &SpencerSettings::default(),
+    );
+    let mut wet_problem = spencer_example(100, 10.0, 1.0);
+    wet_problem.soil = Soil::new(10.0, 6.096, 40.0, 0.0).unwrap();
+    let dry_no_water = solve_spencer(&wet_problem.model(), &SpencerSettings::default());
+    for (t, e) in dry_no_water
+        .thrust_line
+        .iter()
+        .zip(&dry_no_water.effective_thrust_line)
+    {
+        let (a, b) = (t.y.unwrap(), e.y.unwrap());
+        assert!((a - b).abs() <= 1e-12 * a.abs().max(1.0), "{a} vs {b}");
+    }
+    let p = spencer_example(100, 10.0, 1.0);
+    let g = &p.geometry;
+    let cos_t = dry.theta_rad.unwrap().cos();
+    let i = 40;
+    let (t, e) = (&dry.thrust_line[i], &dry.effective_thrust_line[i]);
+    let slice = &g.slices[i];
+    let h = g.embankment.ground(slice.x_right) - slice.base_right_y;
+    let water = 0.5 * 0.5 * 10.0 * h * h;
+    let y_water = slice.base_right_y + h / 3.0;
+    let horizontal = t.force * cos_t - water;
+    let by_hand = (t.force * cos_t * t.y.unwrap() - water * y_water) / horizontal;
+    assert!((e.y.unwrap() - by_hand).abs() < 1e-9 * by_hand.abs().max(1.0));
+}
