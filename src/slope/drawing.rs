@@ -264,6 +264,26 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         .map(|t| (solved.problem.request_x(t.x), t.y.unwrap_or(f64::NAN)))
         .collect();
     canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
+    let has_water = solution
+        .thrust_line
+        .iter()
+        .zip(&solution.effective_thrust_line)
+        .any(|(t, e)| t.y != e.y);
+    if has_water {
+        let effective: Vec<(f64, f64)> = solution
+            .effective_thrust_line
+            .iter()
+            .map(|t| (solved.problem.request_x(t.x), t.y.unwrap_or(f64::NAN)))
+            .collect();
+        canvas.polyline(
+            &effective,
+            "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
+        );
+        legend.push((
+            &"#c62828",
+            "line of thrust of the effective forces (dashed)".to_owned(),
+        ));
+    }
     let caption = match (solution.factor_of_safety, solution.theta_rad) {
         (Some(f), Some(theta)) => {
             let bishop = solution

@@ -38,7 +38,7 @@ pub struct CircleDto {
     pub lower_end_factor: Option<f64>,
     /// Absolute form: the centre [x, y] in the section's coordinates.
     #[serde(default)]
-    #[schema(value_type = Option<Vec<f64>>, min_items = 2, max_items = 2, examples(json!([120.0, 90.0])))]
+    #[schema(value_type = Option<Vec<f64>>, min_items = 2, max_items = 2)]
     pub centre: Option<[f64; 2]>,
     /// Absolute form: the radius, 0 < R ≤ 1e9. The sliding mass lies above the arc between
     /// the two crossings of the ground that bound the deepest part of the arc.
@@ -129,7 +129,7 @@ pub struct SpencerRequest {
     /// Any slip surface: a polyline [[x, y], ...] running left to right, its first and last
     /// points at or above the ground (the surface starts and ends where it crosses the ground).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 10000, examples(json!([[40.0, 62.0], [70.0, 38.0], [130.0, 22.0], [165.0, 21.0]])))]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 10000)]
     pub surface: Option<Vec<[f64; 2]>>,
     /// The centre [x, y] about which moment-only methods (Bishop's) take moments for a `surface`;
     /// without it they are not reported for a surface (a circle uses its centre).
@@ -148,7 +148,7 @@ pub struct SpencerRequest {
     /// Morgenstern–Price's inter-slice function as points [ξ, f], ξ from 0 (toe end) to 1
     /// (crest end); defaults to the half-sine sin(π·ξ).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000, examples(json!([[0.0, 0.0], [0.5, 1.0], [1.0, 0.0]])))]
+    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
     pub interslice_function: Option<Vec<[f64; 2]>>,
     /// Where a slice base comes out in tension (negative effective normal force): `keep` the
     /// classic equations (the default: Spencer's and the thesis' published numbers; a root
@@ -271,7 +271,7 @@ pub type Coordinates = [f64; 2];
 #[serde(deny_unknown_fields)]
 pub struct SectionDto {
     /// The ground surface, 1 to 1000 points.
-    #[schema(value_type = Vec<Vec<f64>>, min_items = 1, max_items = 1000, examples(json!([[-20.0, 0.0], [0.0, 0.0], [20.0, 10.0], [40.0, 10.0]])))]
+    #[schema(value_type = Vec<Vec<f64>>, min_items = 1, max_items = 1000)]
     pub ground: Vec<Coordinates>,
     /// Soil layers from the top down (1 to 50): the soil at a point is that of the last layer
     /// whose top is at or above it. The first layer's top is the ground (`null`).
