@@ -287,7 +287,7 @@ macro_rules! limit_request {
                 /// from, 2 ≤ planes ≤ 256 (more are added at each joint's own N until the exact
                 /// curve is met, so the answer does not depend on them). Defaults to 4.
                 #[serde(default)]
-                #[schema(minimum = 2, maximum = 256, default = 4)]
+                #[schema(minimum = 2, maximum = 256)]
                 pub crushing_planes: Option<usize>,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }

@@ -222,7 +222,7 @@ pub struct SearchDto {
     pub radius_max: Option<f64>,
     /// Section only: radii per centre, 1 ≤ nr ≤ 101. Defaults to 10.
     #[serde(default)]
-    #[schema(minimum = 1, maximum = 101, default = 10)]
+    #[schema(minimum = 1, maximum = 101)]
     pub nr: Option<usize>,
     /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
     /// range; at most 101.
