@@ -108,6 +108,19 @@ async fn section_errors_name_their_fields() {
             "section.water_unit_weight",
         ),
         (
+            // Two hills, the circle's bottom over the valley between: two equal pieces.
+            with(
+                with(
+                    fredlund_krahn(),
+                    "section.ground",
+                    json!([[-20, 0], [-10, 10], [0, -10], [10, 10], [20, 0]]),
+                ),
+                "circle",
+                json!({"centre": [0, 30], "radius": 25}),
+            ),
+            "circle.centre",
+        ),
+        (
             with(
                 fredlund_krahn(),
                 "section.surcharges",

@@ -300,32 +300,38 @@ fn slice(
     let chord = |x: f64| bl + (br - bl) * (x - xl) / width;
     // Thickness of each layer at x over the base b, and ∫y over it, by the soil rule: layer k
     // holds the points at or below its top and above every later layer's top.
-    let columns = |x: f64| -> Vec<(f64, f64)> {
+    // The weight of the column over the base at x and its first moment ∫γ·y dy, by the soil
+    // rule: layer k holds the points at or below its top and above every later layer's top.
+    let column = |x: f64| -> (f64, f64) {
         let b = chord(x);
         let g = ground.y_at(x);
         let mut below = b;
-        let mut out = vec![(0.0, 0.0); layers.len()];
-        for k in (0..layers.len()).rev() {
-            let top = layers[k].top.as_ref().map_or(g, |t| t.y_at(x));
+        let (mut w, mut m) = (0.0, 0.0);
+        for layer in layers.iter().rev() {
+            let top = layer.top.as_ref().map_or(g, |t| t.y_at(x));
             let upper = g.min(top);
             if upper > below {
-                out[k] = (upper - below, 0.5 * (upper * upper - below * below));
+                let gamma = layer.soil.unit_weight;
+                w += gamma * (upper - below);
+                m += gamma * 0.5 * (upper * upper - below * below);
             }
             below = below.max(top);
         }
-        out
+        (w, m)
     };
     let (mut weight, mut moment) = (0.0, 0.0);
     // Between the top points every line is straight: Simpson's rule is exact for the linear
     // thickness and the quadratic ∫y of each piece.
-    for (a, b) in pieces(points, xl, xr) {
-        let (ca, cm, cb) = (columns(a), columns(0.5 * (a + b)), columns(b));
-        for (k, layer) in layers.iter().enumerate() {
-            let area = (b - a) / 6.0 * (ca[k].0 + 4.0 * cm[k].0 + cb[k].0);
-            let first_moment = (b - a) / 6.0 * (ca[k].1 + 4.0 * cm[k].1 + cb[k].1);
-            weight += layer.soil.unit_weight * area;
-            moment += layer.soil.unit_weight * first_moment;
-        }
+    let first = points.partition_point(|&p| p <= xl);
+    let last = points.partition_point(|&p| p < xr);
+    let inner = points[first..last.max(first)].iter().copied();
+    let mut a = xl;
+    let mut ca = column(a);
+    for b in inner.chain(std::iter::once(xr)) {
+        let (cm, cb) = (column(0.5 * (a + b)), column(b));
+        weight += (b - a) / 6.0 * (ca.0 + 4.0 * cm.0 + cb.0);
+        moment += (b - a) / 6.0 * (ca.1 + 4.0 * cm.1 + cb.1);
+        (a, ca) = (b, cb);
     }
     let probe = bm + tolerance;
     let g_m = ground.y_at(xm);
@@ -337,12 +343,7 @@ fn slice(
     let pore_pressure = match (layers[layer].pore_pressure_ratio, &section.piezometric_line) {
         (Some(ratio), _) => {
             // σ_v: the weight of the column above the base middle.
-            let stress: f64 = columns(xm)
-                .iter()
-                .zip(layers)
-                .map(|(c, l)| l.soil.unit_weight * c.0)
-                .sum();
-            ratio * stress
+            ratio * column(xm).0
         }
         (None, Some(line)) => section.water_unit_weight * (line.y_at(xm) - bm).max(0.0),
         (None, None) => 0.0,

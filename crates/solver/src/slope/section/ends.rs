@@ -58,7 +58,25 @@ fn circle_ends(
                 .fold(f64::NEG_INFINITY, f64::max);
             (a, b, deepest)
         })
-        .max_by(|a, b| a.2.total_cmp(&b.2));
+        .collect::<Vec<_>>();
+    let deepest_depth = deepest
+        .iter()
+        .map(|p| p.2)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let ties = deepest
+        .iter()
+        .filter(|p| p.2 >= deepest_depth - 1e-9 * deepest_depth.abs().max(radius))
+        .count();
+    if ties > 1 {
+        return Err(SlopeError::NoSlipMass {
+            parameter: SlopeParameter::CircleCentre,
+            reason: format!(
+                "the circle cuts the ground into {ties} pieces that reach equally deep below it: \
+                 which one slides is ambiguous — move the centre or change the radius"
+            ),
+        });
+    }
+    let deepest = deepest.into_iter().max_by(|a, b| a.2.total_cmp(&b.2));
     let Some((entry, exit, _)) = deepest else {
         return Err(SlopeError::NoSlipMass {
             parameter: SlopeParameter::CircleCentre,
