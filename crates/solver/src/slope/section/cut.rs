@@ -377,19 +377,39 @@ fn side_water(section: &Section, x: f64, b: f64) -> (f64, f64) {
         return (0.0, b);
     }
     let layers = &section.layers;
+    if layers.iter().all(|l| l.pore_pressure_ratio.is_none()) {
+        // Water line only (or none): u = γ_w·(y_p − y) below it, closed form.
+        let Some(line) = &section.piezometric_line else {
+            return (0.0, b);
+        };
+        let yp = line.y_at(x);
+        let top = yp.min(g);
+        if top <= b {
+            return (0.0, b);
+        }
+        let gw = section.water_unit_weight;
+        // ∫_b^top γ_w (y_p − y) dy and its moment ∫ γ_w (y_p − y)·y dy.
+        let force = gw * ((yp - b).powi(2) - (yp - top).powi(2)) / 2.0;
+        let moment = gw * (yp * (top * top - b * b) / 2.0 - (top.powi(3) - b.powi(3)) / 3.0);
+        return if force > 0.0 {
+            (force, moment / force)
+        } else {
+            (0.0, b)
+        };
+    }
+    let top_of = |k: usize| layers[k].top.as_ref().map_or(g, |t| t.y_at(x));
     let u = |y: f64| -> f64 {
         // The soil at (x, y) and the weight of the column above it.
-        let tops: Vec<f64> = layers
-            .iter()
-            .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x)))
-            .collect();
-        let k = (0..layers.len()).rev().find(|&k| tops[k] >= y).unwrap_or(0);
+        let k = (0..layers.len())
+            .rev()
+            .find(|&k| top_of(k) >= y)
+            .unwrap_or(0);
         match (layers[k].pore_pressure_ratio, &section.piezometric_line) {
             (Some(ratio), _) => {
                 let mut stress = 0.0;
                 let mut below = y;
                 for j in (0..layers.len()).rev() {
-                    let upper = g.min(tops[j]);
+                    let upper = g.min(top_of(j));
                     if upper > below {
                         stress += layers[j].soil.unit_weight * (upper - below);
                         below = upper;
