@@ -9,6 +9,8 @@
 
 mod cut;
 mod ends;
+#[cfg(test)]
+mod method_tests;
 pub mod polyline;
 pub mod search;
 #[cfg(test)]
