@@ -402,3 +402,41 @@ async fn methods_side_by_side() {
     let (status, _, _) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 422);
 }
+
+#[tokio::test]
+async fn a_noncircular_search_follows_a_weak_layer() {
+    // See the solver's noncircular test: the polyline from the critical circle runs along the
+    // thin weak layer at a much lower F; the path starts at the circle's polyline.
+    let server = Server::start().await;
+    let soil =
+        |c: f64, phi: f64| json!({"unit_weight": 19, "cohesion": c, "friction_angle_deg": phi});
+    let section = json!({
+        "ground": [[0, 0], [20, 0], [40, 10], [80, 10]],
+        "layers": [{"top": null, "soil": soil(10.0, 30.0)},
+                   {"top": [[0, 1], [80, 1]], "soil": soil(1.0, 8.0)},
+                   {"top": [[0, 0.5], [80, 0.5]], "soil": soil(10.0, 30.0)}]});
+    let (status, _, circle) = server
+        .post(
+            "/slope/spencer",
+            &json!({"section": section, "search": {}, "slices": 50}),
+        )
+        .await;
+    assert_eq!(status, 200, "{circle}");
+    let body = json!({"section": section, "search": {"shape": "noncircular"}, "slices": 50});
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let (fc, f) = (
+        circle["factor_of_safety"].as_f64().unwrap(),
+        answer["factor_of_safety"].as_f64().unwrap(),
+    );
+    assert!(f < 0.9 * fc, "non-circular {f} vs circular {fc}");
+    assert!(answer["circle"].is_null());
+    assert!(answer["search"]["path"].as_array().unwrap().len() >= 2);
+    let (status, content_type, answer) = server
+        .post(
+            "/slope/spencer",
+            &json!({"section": section, "search": {"vertices": 8}}),
+        )
+        .await;
+    assert_problem(status, &content_type, &answer, 422, "search.vertices");
+}

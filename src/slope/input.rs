@@ -15,7 +15,7 @@ use thrustline_solver::slope::{
 
 use super::analysed::Analysed;
 use super::methods::{interslice_function, MethodName};
-use super::request::{CircleDto, SearchDto, SpencerRequest};
+use super::request::{CircleDto, SearchDto, SearchShapeDto, SpencerRequest};
 use super::section::{polyline, search_region, section_from, soil as soil_from};
 use crate::error::ApiError;
 use crate::limits::{
@@ -68,6 +68,8 @@ pub struct SectionSearch {
     pub slices: NonZeroUsize,
     /// Seismic coefficients.
     pub seismic: Seismic,
+    /// With a non-circular search: the polyline's vertices.
+    pub noncircular: Option<usize>,
 }
 
 /// The ground and soil: a section, or the simple slope with its soil.
@@ -154,12 +156,28 @@ impl SpencerRequest {
                 }
                 Ground::Section(section) => {
                     let (region, hard) = search_region(search, &section, parts.slices.get())?;
+                    let noncircular = match search.shape.unwrap_or_default() {
+                        SearchShapeDto::Circular if search.vertices.is_some() => {
+                            return Err(ApiError::invalid(
+                                "search.vertices",
+                                "is for shape: noncircular",
+                            ))
+                        }
+                        SearchShapeDto::Circular => None,
+                        SearchShapeDto::Noncircular => Some(count(
+                            "search.vertices",
+                            search.vertices.unwrap_or(12),
+                            4,
+                            40,
+                        )?),
+                    };
                     Target::SectionSearch(Box::new(SectionSearch {
                         section,
                         region,
                         hard,
                         slices: parts.slices,
                         seismic: parts.seismic,
+                        noncircular,
                     }))
                 }
             }

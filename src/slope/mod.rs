@@ -34,8 +34,9 @@ use report::SearchReport;
 use report::{Refinement, SolvedSlope};
 use request::SpencerRequest;
 use response::SpencerResponse;
+use thrustline_solver::slope::section::noncircular::search_noncircular;
 use thrustline_solver::slope::section::search::{search_circles, CircleSearchSettings};
-use thrustline_solver::slope::section::{SectionProblem, SlipShape};
+use thrustline_solver::slope::section::{Polyline, SectionProblem, SlipShape};
 
 /// Spencer's method for one slip surface, or the critical circle.
 ///
@@ -218,6 +219,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                     hard,
                     slices,
                     seismic,
+                    noncircular,
                 } = *search;
                 let found = search_circles(&section, region, hard, slices, seismic, &settings);
                 let circle = match (found.status, found.circle) {
@@ -238,8 +240,32 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                     centre: circle.0,
                     radius: circle.1,
                 };
-                let problem = SectionProblem::new(section, shape, slices, seismic, None)?;
-                let report = SearchReport::of_section(&found, hard);
+                let mut problem = SectionProblem::new(section, shape, slices, seismic, None)?;
+                let mut report = SearchReport::of_section(&found, hard);
+                if let Some(vertices) = noncircular {
+                    let better = search_noncircular(
+                        problem.section(),
+                        &problem.surface(),
+                        vertices,
+                        slices,
+                        seismic,
+                        &spencer,
+                        Some(deadline),
+                    );
+                    if let Some(better) = better {
+                        let line = Polyline::new(better.surface.clone())
+                            .map_err(|e| ApiError::invalid("search", e.to_string()))?;
+                        problem = SectionProblem::new(
+                            problem.section().clone(),
+                            SlipShape::Polyline(line),
+                            slices,
+                            seismic,
+                            None,
+                        )?;
+                        report.evaluations += better.evaluations;
+                        report.path = Some(better.path);
+                    }
+                }
                 (Analysed::Section(Box::new(problem)), Some(report))
             }
         };

@@ -31,6 +31,8 @@ pub struct SearchReport {
     pub unsolved_bishop_minimum: Option<f64>,
     /// Whether unsolved circles lie at or next to the grid centre of the minimum.
     pub unsolved_near_minimum: bool,
+    /// A non-circular search's F after each round, the critical circle's polyline first.
+    pub path: Option<Vec<f64>>,
 }
 
 impl SearchReport {
@@ -46,6 +48,7 @@ impl SearchReport {
             unsolved: s.unsolved,
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
+            path: None,
         }
     }
 
@@ -61,6 +64,7 @@ impl SearchReport {
             unsolved: s.unsolved,
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
+            path: None,
         }
     }
 }

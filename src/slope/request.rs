@@ -224,6 +224,16 @@ pub struct SearchDto {
     #[serde(default)]
     #[schema(minimum = 1, maximum = 101)]
     pub nr: Option<usize>,
+    /// Section only: `noncircular` continues from the critical circle with a polyline whose
+    /// vertices move to lower F (`vertices` of them; kinematically admissible, within the time
+    /// limit). Defaults to `circular`.
+    #[serde(default)]
+    pub shape: Option<SearchShapeDto>,
+    /// Section only, with `shape: noncircular`: vertices of the polyline, 4 ≤ n ≤ 40. Defaults
+    /// to 12.
+    #[serde(default)]
+    #[schema(minimum = 4, maximum = 40)]
+    pub vertices: Option<usize>,
     /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
     /// range; at most 101.
     #[serde(default)]
@@ -395,4 +405,15 @@ impl From<NegativeEffectiveStressDto>
             NegativeEffectiveStressDto::DropStrength => Self::DropStrength,
         }
     }
+}
+
+/// The shape of the surfaces a search looks among.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SearchShapeDto {
+    /// Circles.
+    #[default]
+    Circular,
+    /// The critical circle, then a polyline whose vertices move to lower F.
+    Noncircular,
 }

@@ -41,6 +41,10 @@ pub struct SearchOutDto {
     /// Whether circles without a solution lie at or next to the grid centre of the minimum
     /// (the least F found may then not be the least F there is).
     pub unsolved_near_minimum: bool,
+    /// With `shape: noncircular`: F after each round of the polyline search, starting from the
+    /// critical circle's polyline.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path: Option<Vec<f64>>,
 }
 
 /// Spencer's figure: F from each equation alone against θ; they cross at the answer.
@@ -332,6 +336,7 @@ impl SpencerResponse {
                 unsolved: search.unsolved,
                 unsolved_bishop_minimum: search.unsolved_bishop_minimum,
                 unsolved_near_minimum: search.unsolved_near_minimum,
+                path: search.path.clone(),
             }),
             grid: solved.search.as_ref().map(|search| GridDto {
                 xs: search.grid.xs.clone(),

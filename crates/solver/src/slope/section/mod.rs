@@ -11,6 +11,7 @@ mod cut;
 mod ends;
 #[cfg(test)]
 mod method_tests;
+pub mod noncircular;
 pub mod polyline;
 pub mod search;
 #[cfg(test)]

@@ -34,7 +34,7 @@ pub(super) fn solve_equations(
     let mut iterations = 0;
     let mut used_fallback = false;
     let mut root = newton(equations, start, settings, &mut iterations);
-    if root.is_none() {
+    if root.is_none() && settings.fallback {
         used_fallback = true;
         root = fallback(equations, settings, &mut iterations);
     }

@@ -11,6 +11,10 @@ pub struct SpencerSettings {
     /// What to do where the effective normal force on a base comes out negative. Defaults to
     /// [`NegativeEffectiveStress::Keep`].
     pub negative_effective_stress: NegativeEffectiveStress,
+    /// Whether Spencer's own F_f/F_m construction is tried when Newton's method fails (slow
+    /// where there is no solution; a search over many trial surfaces may go without it).
+    /// Defaults to true.
+    pub fallback: bool,
 }
 
 /// The treatment of a negative effective normal force N' on a slice base (tension, which soil
@@ -35,6 +39,7 @@ impl Default for SpencerSettings {
             tolerance: 1e-12,
             max_iterations: 50,
             negative_effective_stress: NegativeEffectiveStress::Keep,
+            fallback: true,
         }
     }
 }
