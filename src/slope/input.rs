@@ -15,7 +15,7 @@ use thrustline_solver::slope::{
 
 use super::analysed::Analysed;
 use super::methods::{interslice_function, MethodName};
-use super::request::{CircleDto, SearchDto, SearchShapeDto, SpencerRequest};
+use super::request::{CircleDto, SearchDto, SpencerRequest};
 use super::section::{polyline, search_region, section_from, soil as soil_from};
 use crate::error::ApiError;
 use crate::limits::{
@@ -155,22 +155,8 @@ impl SpencerRequest {
                     search_from(search, embankment, soil, parts.slices, parts.seismic)?
                 }
                 Ground::Section(section) => {
-                    let (region, hard) = search_region(search, &section, parts.slices.get())?;
-                    let noncircular = match search.shape.unwrap_or_default() {
-                        SearchShapeDto::Circular if search.vertices.is_some() => {
-                            return Err(ApiError::invalid(
-                                "search.vertices",
-                                "is for shape: noncircular",
-                            ))
-                        }
-                        SearchShapeDto::Circular => None,
-                        SearchShapeDto::Noncircular => Some(count(
-                            "search.vertices",
-                            search.vertices.unwrap_or(12),
-                            4,
-                            40,
-                        )?),
-                    };
+                    let (region, hard, noncircular) =
+                        search_region(search, &section, parts.slices.get())?;
                     Target::SectionSearch(Box::new(SectionSearch {
                         section,
                         region,

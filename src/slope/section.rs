@@ -7,7 +7,7 @@ use thrustline_solver::slope::section::{
 };
 use thrustline_solver::slope::Soil;
 
-use super::request::{Coordinates, SearchDto, SectionDto, SoilDto};
+use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto, SoilDto};
 use crate::error::ApiError;
 use crate::limits::{
     DEFAULT_WATER_UNIT_WEIGHT, MAX_GRID, MAX_GRID_SLICES, MAX_LAYERS, MAX_MAGNITUDE,
@@ -18,12 +18,28 @@ use crate::validation::{count, number};
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
 
-/// The region of a search over a section, and whether its bounds were given (hard).
+/// The region of a search over a section, whether its bounds were given (hard), and with a
+/// non-circular search its polyline's vertices.
 pub fn search_region(
     search: &SearchDto,
     section: &Section,
     slices: usize,
-) -> Result<(CircleRegion, bool), ApiError> {
+) -> Result<(CircleRegion, bool, Option<usize>), ApiError> {
+    let noncircular = match search.shape.unwrap_or_default() {
+        SearchShapeDto::Circular if search.vertices.is_some() => {
+            return Err(ApiError::invalid(
+                "search.vertices",
+                "is for shape: noncircular",
+            ))
+        }
+        SearchShapeDto::Circular => None,
+        SearchShapeDto::Noncircular => Some(count(
+            "search.vertices",
+            search.vertices.unwrap_or(12),
+            4,
+            40,
+        )?),
+    };
     if search.lower_end_factor != 0.0 || search.lower_end_factor_max.is_some() {
         return Err(ApiError::invalid(
             "search.lower_end_factor",
@@ -130,7 +146,7 @@ pub fn search_region(
             format!("must be greater than search.y_min ({})", region.y_min),
         ));
     }
-    Ok((region, hard))
+    Ok((region, hard, noncircular))
 }
 
 /// A polyline from its points, at `field`.

@@ -34,7 +34,7 @@ pub struct NoncircularSearch {
 /// The surface of `v`: entry x, exit x, then the interior heights as depths below the ground.
 fn surface_of(section: &Section, v: &[f64]) -> Option<Vec<(f64, f64)>> {
     let (a, b) = (v[0], v[1]);
-    if !(b > a) {
+    if b <= a || b.is_nan() || a.is_nan() {
         return None;
     }
     let n = v.len();
@@ -137,7 +137,7 @@ pub fn search_noncircular(
         if late() {
             timed_out = true;
         }
-        if !(found.value < best) {
+        if found.value >= best || found.value.is_nan() {
             break;
         }
         let settled = found.value >= best * (1.0 - 1e-3);
