@@ -264,6 +264,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                         )?;
                         report.evaluations += better.evaluations;
                         report.path = Some(better.path);
+                        report.timed_out = better.timed_out;
                     }
                 }
                 (Analysed::Section(Box::new(problem)), Some(report))

@@ -33,6 +33,8 @@ pub struct SearchReport {
     pub unsolved_near_minimum: bool,
     /// A non-circular search's F after each round, the critical circle's polyline first.
     pub path: Option<Vec<f64>>,
+    /// Whether the time limit ended a non-circular search (its answer is the best so far).
+    pub timed_out: bool,
 }
 
 impl SearchReport {
@@ -49,6 +51,7 @@ impl SearchReport {
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
+            timed_out: false,
         }
     }
 
@@ -65,6 +68,7 @@ impl SearchReport {
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
+            timed_out: false,
         }
     }
 }

@@ -92,6 +92,13 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
                     .to_owned(),
             );
         }
+        if search.timed_out {
+            warnings.push(
+                "the non-circular search ran out of time: the surface is the best found so far, \
+                 a lower F may exist (fewer vertices or slices, or a longer time limit)"
+                    .to_owned(),
+            );
+        }
         let below = search
             .unsolved_bishop_minimum
             .zip(solution.factor_of_safety)
