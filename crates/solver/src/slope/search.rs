@@ -71,7 +71,11 @@ impl SearchGrid {
     }
 }
 
-fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+/// `n` values evenly from `a` to `b` (just `a` when n < 2).
+pub(crate) fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
+    if n < 2 {
+        return vec![a];
+    }
     (0..n)
         .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
         .collect()

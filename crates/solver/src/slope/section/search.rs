@@ -15,7 +15,7 @@ use rayon::prelude::*;
 use super::{place, Section, SlipShape};
 use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
-use crate::slope::search::{FactorGrid, SearchStatus};
+use crate::slope::search::{spaced, FactorGrid, SearchStatus};
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
@@ -109,15 +109,6 @@ impl CircleRegion {
     fn ys(&self) -> Vec<f64> {
         spaced(self.y_min, self.y_max, self.ny)
     }
-}
-
-fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
-    if n < 2 {
-        return vec![a];
-    }
-    (0..n)
-        .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
-        .collect()
 }
 
 /// Settings of the search.
