@@ -300,25 +300,7 @@ fn slice(
     let chord = |x: f64| bl + (br - bl) * (x - xl) / width;
     // Thickness of each layer at x over the base b, and ∫y over it, by the soil rule: layer k
     // holds the points at or below its top and above every later layer's top.
-    // The weight of the column over the base at x and its first moment ∫γ·y dy, by the soil
-    // rule: layer k holds the points at or below its top and above every later layer's top.
-    let column = |x: f64| -> (f64, f64) {
-        let b = chord(x);
-        let g = ground.y_at(x);
-        let mut below = b;
-        let (mut w, mut m) = (0.0, 0.0);
-        for layer in layers.iter().rev() {
-            let top = layer.top.as_ref().map_or(g, |t| t.y_at(x));
-            let upper = g.min(top);
-            if upper > below {
-                let gamma = layer.soil.unit_weight;
-                w += gamma * (upper - below);
-                m += gamma * 0.5 * (upper * upper - below * below);
-            }
-            below = below.max(top);
-        }
-        (w, m)
-    };
+    let column = |x: f64| column(section, x, chord(x));
     let (mut weight, mut moment) = (0.0, 0.0);
     // Between the top points every line is straight: Simpson's rule is exact for the linear
     // thickness and the quadratic ∫y of each piece.
@@ -335,10 +317,7 @@ fn slice(
     }
     let probe = bm + tolerance;
     let g_m = ground.y_at(xm);
-    let layer = (0..layers.len())
-        .rev()
-        .find(|&k| layers[k].top.as_ref().map_or(g_m, |t| t.y_at(xm)) >= probe)
-        .unwrap_or(0);
+    let layer = soil_at(section, xm, probe);
     let soil = &layers[layer].soil;
     let pore_pressure = match (layers[layer].pore_pressure_ratio, &section.piezometric_line) {
         (Some(ratio), _) => {
@@ -366,6 +345,36 @@ fn slice(
         layer,
         side_water: side_water(section, xr, br),
     }
+}
+
+/// The weight of the column over y at x and its first moment ∫γ·y dy, by the soil rule: layer k
+/// holds the points at or below its top and above every later layer's top.
+fn column(section: &Section, x: f64, y: f64) -> (f64, f64) {
+    let g = section.ground.y_at(x);
+    let mut below = y;
+    let (mut w, mut m) = (0.0, 0.0);
+    for layer in section.layers.iter().rev() {
+        let top = layer.top.as_ref().map_or(g, |t| t.y_at(x));
+        let upper = g.min(top);
+        if upper > below {
+            let gamma = layer.soil.unit_weight;
+            w += gamma * (upper - below);
+            m += gamma * 0.5 * (upper * upper - below * below);
+        }
+        below = below.max(top);
+    }
+    (w, m)
+}
+
+/// The layer whose soil is at (x, y): the last one whose top is at or above y (the first at
+/// the ground).
+fn soil_at(section: &Section, x: f64, y: f64) -> usize {
+    let g = section.ground.y_at(x);
+    let layers = &section.layers;
+    (0..layers.len())
+        .rev()
+        .find(|&k| layers[k].top.as_ref().map_or(g, |t| t.y_at(x)) >= y)
+        .unwrap_or(0)
 }
 
 /// The pore water's force on the vertical through x from the base at y = b up to the ground,
@@ -397,26 +406,12 @@ fn side_water(section: &Section, x: f64, b: f64) -> (f64, f64) {
             (0.0, b)
         };
     }
-    let top_of = |k: usize| layers[k].top.as_ref().map_or(g, |t| t.y_at(x));
     let u = |y: f64| -> f64 {
-        // The soil at (x, y) and the weight of the column above it.
-        let k = (0..layers.len())
-            .rev()
-            .find(|&k| top_of(k) >= y)
-            .unwrap_or(0);
-        match (layers[k].pore_pressure_ratio, &section.piezometric_line) {
-            (Some(ratio), _) => {
-                let mut stress = 0.0;
-                let mut below = y;
-                for j in (0..layers.len()).rev() {
-                    let upper = g.min(top_of(j));
-                    if upper > below {
-                        stress += layers[j].soil.unit_weight * (upper - below);
-                        below = upper;
-                    }
-                }
-                ratio * stress
-            }
+        match (
+            layers[soil_at(section, x, y)].pore_pressure_ratio,
+            &section.piezometric_line,
+        ) {
+            (Some(ratio), _) => ratio * column(section, x, y).0,
             (None, Some(line)) => section.water_unit_weight * (line.y_at(x) - y).max(0.0),
             (None, None) => 0.0,
         }
