@@ -100,20 +100,18 @@ impl ChainStatics {
             let w = unit_weight * block.area / force_scale;
             dead_loads[b] = [0.0, -w, cross(centroids[b], (0.0, -w))];
         }
-        for load in other_dead_loads {
-            let f = (load.fx / force_scale, load.fy / force_scale);
-            let d = &mut dead_loads[load.block];
-            d[0] += f.0;
-            d[1] += f.1;
-            d[2] += cross(scaled(load.point), f) + load.moment / (force_scale * length_scale);
-        }
         let mut live_loads_scaled = vec![[0.0; 3]; n];
-        for load in live_loads {
-            let f = (load.fx / force_scale, load.fy / force_scale);
-            let l = &mut live_loads_scaled[load.block];
-            l[0] += f.0;
-            l[1] += f.1;
-            l[2] += cross(scaled(load.point), f) + load.moment / (force_scale * length_scale);
+        for (sums, loads) in [
+            (&mut dead_loads, other_dead_loads),
+            (&mut live_loads_scaled, live_loads),
+        ] {
+            for load in loads {
+                let f = (load.fx / force_scale, load.fy / force_scale);
+                let l = &mut sums[load.block];
+                l[0] += f.0;
+                l[1] += f.1;
+                l[2] += cross(scaled(load.point), f) + load.moment / (force_scale * length_scale);
+            }
         }
         let live_scale = live_loads_scaled
             .iter()
