@@ -66,6 +66,7 @@ fn violations(
     crushing: &Crushing,
     solution: &LimitSolution,
 ) -> Vec<(usize, f64)> {
+    let tangent_points = crushing.tangent_points();
     solution
         .resultants
         .iter()
@@ -75,9 +76,9 @@ fn violations(
             let n = ((q + s) / capacity).clamp(0.0, 1.0);
             let beyond = (q - s).abs() - (q + s) * (1.0 - n);
             // A tangent next to one already there adds nothing but degeneracy.
-            let known = crushing
-                .tangent_points()
-                .into_iter()
+            let known = tangent_points
+                .iter()
+                .copied()
                 .chain(crushing.cuts.iter().filter(|c| c.0 == k).map(|c| c.1))
                 .any(|m| (m - n).abs() < 1e-9);
             (beyond > ON_CURVE * capacity && !known).then_some((k, n))

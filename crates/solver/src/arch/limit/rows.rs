@@ -30,6 +30,11 @@ impl Row {
 pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
     let w = force_scale;
     let mut rows = Vec::new();
+    // The starting tangents are the same at every interface.
+    let tangent_points = problem
+        .crushing
+        .as_ref()
+        .map_or(Vec::new(), |c| c.tangent_points());
     for k in 0..problem.assembly.interfaces.len() {
         let col = RESULTANTS_PER_INTERFACE * k;
         for (resultant, bound, value) in problem.limits.bounds() {
@@ -62,7 +67,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
             // |q − s| ≤ (q + s)(1 − (q + s)/(σ_c t)), i.e. |M| ≤ N(t − N/σ_c)/2.
             let t = problem.assembly.interfaces[k].length();
             let cuts = crushing.cuts.iter().filter(|c| c.0 == k).map(|c| c.1);
-            for n in crushing.tangent_points().into_iter().chain(cuts) {
+            for n in tangent_points.iter().copied().chain(cuts) {
                 let b = n * n * crushing.strength * t / w;
                 // A plane this far out (in units of the whole dead weight) never binds; left
                 // out, it cannot spoil the programme's scaling (σ_c → ∞ is Heyman's n = 0).
