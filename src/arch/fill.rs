@@ -183,20 +183,13 @@ pub fn fill_loads(
     let rolling = rolling
         .map(|r| rolling_loads(assembly, shape, &carrier, r))
         .transpose()?;
+    let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(assembly, shape, &f));
     Ok(FillLoads {
-        dead: fill.map_or(Vec::new(), |f| fill_dead_loads(assembly, shape, &f)),
+        weight: dead.iter().map(|l| -l.fy).sum(),
+        dead,
         live,
         rolling,
-        weight: 0.0,
-    }
-    .weighed())
-}
-
-impl FillLoads {
-    fn weighed(mut self) -> Self {
-        self.weight = self.dead.iter().map(|l| -l.fy).sum();
-        self
-    }
+    })
 }
 
 fn rolling_loads(
