@@ -114,9 +114,16 @@ impl Canvas {
                 runs.push(String::new());
             }
         }
+        // Unfilled unless the style says otherwise: an attribute written twice makes the whole
+        // picture invalid XML (browsers then show nothing).
+        let fill = if style.contains("fill=") {
+            ""
+        } else {
+            "fill=\"none\" "
+        };
         for run in runs.into_iter().filter(|r| r.contains(' ')) {
             self.raw(&format!(
-                "<polyline points=\"{}\" fill=\"none\" {style}/>",
+                "<polyline points=\"{}\" {fill}{style}/>",
                 run.trim_end()
             ));
         }
