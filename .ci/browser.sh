@@ -48,9 +48,12 @@ expect "load_factor: 22.99688965"
 # SPEC §2.3 / thesis: F = 1.06958 at 100 slices.
 expect "factor_of_safety: 1.06957"
 expect "morgenstern_price: "
-drawings=$(grep -o '<img alt="drawing of the [a-z]* answer" src="blob:' <<< "$dom" | wc -l)
+drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer" src="blob:' <<< "$dom" || true) | wc -l)
 if [ "$drawings" -eq 4 ]; then echo "ok: four drawings"; else echo "FAILED: $drawings drawings, expected 4" >&2; failures=$((failures + 1)); fi
+# Each drawing decoded: its onload recorded a non-zero naturalWidth (a broken SVG stays at 0).
+decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
+if [ "$decoded" -eq 4 ]; then echo "ok: four drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 4" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
-passed=$((6 - failures))
+passed=$((8 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]
