@@ -1,6 +1,9 @@
 //! Every drawing is well-formed XML (an attribute written twice, for one, makes browsers show
 //! nothing): the Part II scenes and arches on both sides of N = 60, parsed with an XML parser.
 
+// Test scaffolding: a failed request should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
 mod common;
 
 use common::Server;
