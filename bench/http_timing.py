@@ -45,6 +45,9 @@ bench("3-layer section search: 50 × 50 centres × 10 radii + refinement, 50 sli
 arch = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.0, "voussoirs": 100}, "fill": {"unit_weight": 1.8, "surface": 11.5}}
 bench("arch with fill, N = 100, a road load (chain)", "/arch/live-load", dict(arch, road_loads=[{"x": -4, "fy": -10, "length": 0.3}]), lambda d: d["solver"]["time_ms"])
 bench("arch with fill, N = 100, two axles rolled over 101 stops", "/arch/live-load", dict(arch, rolling={"axles": [{"offset": 0, "fy": -10}, {"offset": 1.8, "fy": -10}], "x_start": -12, "x_end": 10, "positions": 101}), lambda d: d["rolling"]["time_per_position_ms"] * 101)
+passive = dict(arch, fill=dict(arch["fill"], passive={"friction_angle_deg": 30, "mobilisation": 0.5}))
+bench("arch with fill and passive restraint (m = 0.5), N = 100, a road load (assembly)", "/arch/live-load", dict(passive, road_loads=[{"x": -4, "fy": -10, "length": 0.3}]), lambda d: d["solver"]["time_ms"])
+bench("same, two axles rolled over 101 stops", "/arch/live-load", dict(passive, rolling={"axles": [{"offset": 0, "fy": -10}, {"offset": 1.8, "fy": -10}], "x_start": -12, "x_end": 10, "positions": 101}), lambda d: d["rolling"]["time_per_position_ms"] * 101)
 quarter = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 100}, "loads": [{"block": 26, "fy": -1}]}
 bench("arch live load, N = 100, crushing σ_c = 100 (cutting planes from 4)", "/arch/live-load", dict(quarter, compressive_strength=100), lambda d: d["solver"]["time_ms"])
 bench("arch live load, N = 100, crushing σ_c = 50", "/arch/live-load", dict(quarter, compressive_strength=50), lambda d: d["solver"]["time_ms"])

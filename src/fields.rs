@@ -27,6 +27,7 @@ pub fn arch_field(parameter: ArchParameter) -> String {
                 Resultant::S => "s",
                 Resultant::T | Resultant::U | Resultant::V => "t",
                 Resultant::M => "compressive_strength",
+                Resultant::Passive => "passive",
             };
             let bound = match bound {
                 Bound::Lower => "min",
@@ -40,6 +41,7 @@ pub fn arch_field(parameter: ArchParameter) -> String {
         ArchParameter::Loads => "loads".to_owned(),
         ArchParameter::Load { index } => format!("loads[{index}]"),
         ArchParameter::LoadBlock { index } => format!("loads[{index}].block"),
+        ArchParameter::Passive => "fill.passive".to_owned(),
     }
 }
 

@@ -44,6 +44,48 @@ async fn fill_carries_an_arch_that_stands_alone_no_more() {
 }
 
 #[tokio::test]
+async fn passive_restraint_raises_the_wheel_load_and_reports_what_it_mobilises() {
+    // The filled bridge of the test above, its wheel at x = −4: with half the passive pressure
+    // of a 30° fill the arch carries more (never less), each force stays within its capacity,
+    // and the capacities on the two halves are equal (a symmetric arch and fill, 1e-9).
+    let server = Server::start().await;
+    let body = |passive: Value| {
+        json!({"geometry": geometry(),
+               "fill": {"unit_weight": 1.8, "surface": 11.5, "passive": passive},
+               "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}]})
+    };
+    let (status, _, without) = server.post("/arch/live-load", &body(Value::Null)).await;
+    assert_eq!(status, 200, "{without}");
+    assert!(without.get("passive").is_none(), "{without}");
+    let passive = json!({"friction_angle_deg": 30, "mobilisation": 0.5});
+    let (status, _, with) = server.post("/arch/live-load", &body(passive)).await;
+    assert_eq!(status, 200, "{with}");
+    let (bare, restrained) = (
+        without["load_factor"].as_f64().unwrap(),
+        with["load_factor"].as_f64().unwrap(),
+    );
+    assert!(restrained > bare * 1.1, "{restrained} vs {bare}");
+    assert_eq!(with["solver"]["formulation"], "assembly");
+    let forces = with["passive"].as_array().unwrap();
+    let mut sides = [0.0, 0.0];
+    let mut mobilised = 0.0;
+    for f in forces {
+        let (capacity, force) = (
+            f["capacity"].as_f64().unwrap(),
+            f["force"].as_f64().unwrap(),
+        );
+        assert!(
+            force >= -1e-6 && force <= capacity * (1.0 + 1e-6) + 1e-9,
+            "{f}"
+        );
+        mobilised += force;
+        sides[usize::from(f["direction"].as_f64().unwrap() > 0.0)] += capacity;
+    }
+    assert!(mobilised > 0.0);
+    assert!((sides[0] - sides[1]).abs() < 1e-9 * sides[0], "{sides:?}");
+}
+
+#[tokio::test]
 async fn a_rolling_axle_is_symmetric_and_its_worst_stop_is_the_worst_single_load() {
     let server = Server::start().await;
     let fill = json!({"unit_weight": 1.8, "surface": 11.5, "dispersal_angle_deg": 30.0});
@@ -97,8 +139,19 @@ async fn fill_and_road_errors_name_their_fields() {
         ),
         (
             json!({"geometry": geometry(),
-                "fill": {"unit_weight": 1, "surface": 12.0, "passive": {"friction_angle_deg": 30}}}),
-            "fill.passive",
+                "fill": {"unit_weight": 1, "surface": 12.0,
+                "passive": {"friction_angle_deg": 30, "mobilisation": -0.1}}}),
+            "fill.passive.mobilisation",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0,
+                "passive": {"friction_angle_deg": 75, "mobilisation": 0.5}}}),
+            "fill.passive.friction_angle_deg",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0,
+                "passive": {"friction_angle_deg": 30, "mobilisation": 1.5}}}),
+            "fill.passive.mobilisation",
         ),
     ];
     for (body, field) in cases {

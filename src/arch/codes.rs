@@ -22,6 +22,9 @@ pub enum ResultantDto {
     /// Crushing: the moment–normal force limit of the rectangular stress block (`upper`: the
     /// resultant pressed to the extrados end, `lower`: to the intrados end).
     M,
+    /// A passive force of the fill at its bound. Not an interface limit: the solver keeps it out
+    /// of a mechanism's active limits, so answers do not contain it today.
+    Passive,
 }
 
 impl From<Resultant> for ResultantDto {
@@ -33,6 +36,7 @@ impl From<Resultant> for ResultantDto {
             Resultant::U => Self::U,
             Resultant::V => Self::V,
             Resultant::M => Self::M,
+            Resultant::Passive => Self::Passive,
         }
     }
 }

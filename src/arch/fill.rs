@@ -3,8 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::fill::{
-    extrados_top, fill_dead_loads, road_load, road_load_on, Extrados, ExtradosProfile, Fill,
-    RoadLoad,
+    extrados_top, fill_dead_loads, passive_forces, road_load, road_load_on, Extrados,
+    ExtradosProfile, Fill, Passive, PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -29,11 +29,59 @@ pub struct FillDto {
     #[serde(default)]
     #[schema(minimum = 0.0, maximum = 60.0, default = 30.0, examples(30.0))]
     pub dispersal_angle_deg: Option<f64>,
-    /// Passive restraint of the fill: not available yet (a request that gives it is refused
-    /// rather than answered without it).
+    /// Passive restraint: where the arch sways into the fill, horizontal pressure on the
+    /// extrados of up to `mobilisation`·K_p·σ_v. Without it the fill gives no horizontal
+    /// pressure (conservative). Solved on the general assembly formulation.
     #[serde(default)]
-    #[schema(value_type = Option<Object>)]
-    pub passive: Option<serde_json::Value>,
+    #[schema(nullable)]
+    pub passive: Option<PassiveDto>,
+}
+
+/// Passive restraint of the fill (SPEC §5.1).
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PassiveDto {
+    /// Friction angle φ of the fill, 0 ≤ φ ≤ 60 degrees: K_p = (1 + sin φ)/(1 − sin φ).
+    #[schema(minimum = 0.0, maximum = 60.0, examples(30.0))]
+    pub friction_angle_deg: f64,
+    /// Fraction of the full passive pressure that may be mobilised, 0 ≤ m ≤ 1.
+    #[schema(minimum = 0.0, maximum = 1.0, examples(0.5))]
+    pub mobilisation: f64,
+}
+
+/// A passive force of the fill on one voussoir: its capacity and what the answer mobilises.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PassiveOutDto {
+    /// The voussoir (1-based).
+    pub block: usize,
+    /// Point of application on the extrados (the centroid of the largest pressure).
+    pub x: f64,
+    /// Its y.
+    pub y: f64,
+    /// +1: pushes the voussoir towards +x; −1: towards −x.
+    pub direction: f64,
+    /// The largest force: ∫ mobilisation·K_p·γ_f·(road − y)·|dy| over the extrados.
+    pub capacity: f64,
+    /// The force in the answer's admissible state, 0 ≤ force ≤ capacity; null without one.
+    #[schema(required = true)]
+    pub force: Option<f64>,
+}
+
+/// The passive forces of an answer: capacities with the mobilised forces (null without a
+/// state).
+pub fn passive_out(forces: &[PassiveForce], mobilised: &[f64]) -> Vec<PassiveOutDto> {
+    forces
+        .iter()
+        .enumerate()
+        .map(|(i, f)| PassiveOutDto {
+            block: f.block + 1,
+            x: f.point.0,
+            y: f.point.1,
+            direction: f.direction,
+            capacity: f.capacity,
+            force: mobilised.get(i).copied(),
+        })
+        .collect()
 }
 
 /// A load on the road: `fy` spread over a patch `length` wide centred at `x`, dispersed through
@@ -110,6 +158,8 @@ pub struct FillLoads {
     pub rolling: Option<Rolling>,
     /// The fill's weight (0 without fill).
     pub weight: f64,
+    /// With `fill.passive`: the horizontal forces the fill can exert.
+    pub passive: Option<Vec<PassiveForce>>,
 }
 
 /// The fill's and the road's loads on `assembly` (whose extrados is `shape`).
@@ -121,15 +171,9 @@ pub fn fill_loads(
     rolling: Option<&RollingDto>,
 ) -> Result<FillLoads, ApiError> {
     let top = extrados_top(assembly, shape);
+    let dto_passive = fill.and_then(|f| f.passive.as_ref());
     let fill = match fill {
         Some(dto) => {
-            if dto.passive.is_some() {
-                return Err(ApiError::invalid(
-                    "fill.passive",
-                    "passive restraint of the fill is not available yet: leave it out (the \
-                     fill then gives no horizontal pressure, which is conservative)",
-                ));
-            }
             let unit_weight = number(
                 "fill.unit_weight",
                 dto.unit_weight,
@@ -184,11 +228,28 @@ pub fn fill_loads(
         .map(|r| rolling_loads(assembly, shape, &carrier, r))
         .transpose()?;
     let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(assembly, shape, &f));
+    let passive = match (fill, dto_passive) {
+        (Some(fill), Some(p)) => {
+            let passive = Passive {
+                friction_angle_deg: number(
+                    "fill.passive.friction_angle_deg",
+                    p.friction_angle_deg,
+                    0.0,
+                    false,
+                    60.0,
+                )?,
+                mobilisation: number("fill.passive.mobilisation", p.mobilisation, 0.0, false, 1.0)?,
+            };
+            Some(passive_forces(assembly, shape, &fill, &passive))
+        }
+        _ => None,
+    };
     Ok(FillLoads {
         weight: dead.iter().map(|l| -l.fy).sum(),
         dead,
         live,
         rolling,
+        passive,
     })
 }
 
@@ -272,6 +333,11 @@ pub struct RollingOutDto {
     /// λ there.
     #[schema(required = true)]
     pub critical_load_factor: Option<f64>,
-    /// Wall time per stop in milliseconds (each stop solved from scratch).
+    /// Wall time per stop in milliseconds, over the whole sweep. Only the live loads move, so
+    /// the first stop's dead-load check serves every later stop (which then solve one
+    /// programme, not two; with crushing each stop checks again).
     pub time_per_position_ms: f64,
+    /// Wall time of the first loaded stop in milliseconds: a cold start, dead-load check
+    /// included, to compare with `time_per_position_ms`.
+    pub first_position_ms: f64,
 }

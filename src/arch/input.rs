@@ -7,8 +7,8 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::fill::Extrados;
 use thrustline_solver::arch::{
-    ArchProblem, Assembly, CircularArch, Crushing, InterfaceLimits, LimitSettings, LiveLoad,
-    VoussoirShape,
+    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceLimits, LimitSettings,
+    LiveLoad, VoussoirShape,
 };
 
 use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
@@ -36,6 +36,9 @@ pub struct ArchInput {
     pub fill_weight: Option<f64>,
     /// A rolling load's stops and loads.
     pub rolling: Option<Rolling>,
+    /// With `fill.passive`: whether passive restraint was asked for (its forces are the
+    /// problem's).
+    pub has_passive: bool,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -143,7 +146,8 @@ fn input(
         material.friction,
         live_loads,
     )?
-    .with_dead_loads(filled.dead.clone())?;
+    .with_dead_loads(filled.dead.clone())?
+    .with_passive(filled.passive.clone().unwrap_or_default())?;
     let problem = match fields.compressive_strength {
         None if fields.crushing_planes.is_some() => {
             return Err(ApiError::invalid(
@@ -164,9 +168,14 @@ fn input(
         })?,
     };
     let (min, max) = SOLVER_TOLERANCE;
+    // Passive forces are variables of their own: the general assembly carries them.
+    let formulation = match filled.passive {
+        Some(_) => Formulation::Assembly,
+        None => fields.formulation.solver(),
+    };
     let settings = LimitSettings {
         time_limit_secs,
-        formulation: fields.formulation.solver(),
+        formulation,
         tolerance: number("solver_tolerance", fields.solver_tolerance, min, false, max)?,
         ..LimitSettings::default()
     };
@@ -176,6 +185,7 @@ fn input(
         is_curved,
         fill_weight: extras.fill.map(|_| filled.weight),
         rolling: filled.rolling,
+        has_passive: filled.passive.is_some(),
     })
 }
 

@@ -17,8 +17,8 @@ pub mod response;
 use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::{
-    solve_dead_load, solve_live_load, thrust_line, ArchError, ArchProblem, LimitSolution,
-    LimitStatus, SolverFailure,
+    solve_dead_load, solve_live_load, solve_live_load_after, thrust_line, ArchError, ArchProblem,
+    LimitSolution, LimitStatus, SolverFailure,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -236,13 +236,26 @@ fn roll(
     let start = std::time::Instant::now();
     let mut factors = Vec::with_capacity(stops.positions.len());
     let mut best: Option<(usize, LimitSolution, ArchProblem)> = None;
+    let mut known_margin: Option<f64> = None;
+    let mut first_position_ms = 0.0;
     for (i, loads) in stops.loads.iter().enumerate() {
         if loads.is_empty() {
             factors.push(None);
             continue;
         }
+        let stop_start = std::time::Instant::now();
         let problem = input.problem.clone().with_live_loads(loads.clone())?;
-        let mut solution = solve_live_load(&problem, &input.settings)?;
+        // Only the live loads move: the dead-load check of the first stop holds for all.
+        let mut solution = match known_margin {
+            Some(margin) => solve_live_load_after(&problem, &input.settings, margin)?,
+            None => solve_live_load(&problem, &input.settings)?,
+        };
+        if known_margin.is_none() {
+            first_position_ms = stop_start.elapsed().as_secs_f64() * 1e3;
+            if solution.dead_load_carried == Some(true) {
+                known_margin = solution.dead_load_margin;
+            }
+        }
         if start.elapsed().as_secs_f64() > input.settings.time_limit_secs {
             // Out of time: the sweep is not finished, and says so through the status.
             solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
@@ -252,6 +265,7 @@ fn roll(
                 critical_position: None,
                 critical_load_factor: None,
                 time_per_position_ms: 0.0,
+                first_position_ms,
             };
             return Ok((solution, curve));
         }
@@ -275,6 +289,7 @@ fn roll(
         critical_position: critical.map(|c| c.0),
         critical_load_factor: critical.and_then(|c| c.1),
         time_per_position_ms: elapsed_ms / stops.positions.len().max(1) as f64,
+        first_position_ms,
     };
     match best {
         Some((_, solution, problem)) => {

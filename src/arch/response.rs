@@ -8,7 +8,7 @@ use thrustline_solver::arch::{
 };
 use utoipa::ToSchema;
 
-use super::fill::RollingOutDto;
+use super::fill::{passive_out, PassiveOutDto, RollingOutDto};
 use super::input::ArchInput;
 use super::request::FormulationDto;
 
@@ -219,6 +219,9 @@ pub struct DeadLoadResponse {
     /// With `fill`: its weight (the columns between the extrados and the road).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fill_weight: Option<f64>,
+    /// With `fill.passive`: each passive force's capacity and the force mobilised.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub passive: Option<Vec<PassiveOutDto>>,
     /// Details.
     #[serde(flatten)]
     pub outcome: ArchOutcomeDto,
@@ -234,6 +237,9 @@ pub struct LiveLoadResponse {
     /// With `fill`: its weight (the columns between the extrados and the road).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fill_weight: Option<f64>,
+    /// With `fill.passive`: each passive force's capacity and the force mobilised.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub passive: Option<Vec<PassiveOutDto>>,
     /// With `rolling`: λ at each stop; the rest of the answer is the critical stop's.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rolling: Option<RollingOutDto>,
@@ -262,6 +268,7 @@ impl DeadLoadResponse {
         Self {
             dead_load_factor: solved.solution.load_factor,
             fill_weight: solved.input.fill_weight,
+            passive: passive(solved),
             outcome: ArchOutcomeDto::new(solved),
         }
     }
@@ -273,10 +280,20 @@ impl LiveLoadResponse {
         Self {
             load_factor: solved.solution.load_factor,
             fill_weight: solved.input.fill_weight,
+            passive: passive(solved),
             rolling: solved.rolling.clone(),
             outcome: ArchOutcomeDto::new(solved),
         }
     }
+}
+
+/// The passive forces of a solved request with `fill.passive`.
+fn passive(solved: &SolvedArch) -> Option<Vec<PassiveOutDto>> {
+    let forces = solved.input.problem.passive();
+    solved
+        .input
+        .has_passive
+        .then(|| passive_out(forces, &solved.solution.passive))
 }
 
 impl ArchOutcomeDto {

@@ -28,13 +28,30 @@ pub struct LiveLoad {
     pub moment: f64,
 }
 
+/// One horizontal passive force of a fill on a voussoir (see [`super::fill::passive_forces`]): `direction`·p with 0 ≤ p ≤ `capacity`, acting
+/// at `point` (the centroid of the largest pressure over the part of the extrados it covers).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PassiveForce {
+    /// Index of the voussoir (0-based).
+    pub block: usize,
+    /// Point of application on the extrados.
+    pub point: (f64, f64),
+    /// +1: pushes the voussoir towards +x; −1: towards −x (always into the arch, away from the
+    /// fill).
+    pub direction: f64,
+    /// The largest force: ∫ mobilisation·K_p·γ_f·(road − y) |dy| over that part of the extrados.
+    pub capacity: f64,
+}
+
 /// The assembled, scaled equilibrium equations.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Equilibrium {
     /// Number of rows (3 per block).
     pub rows: usize,
-    /// Number of resultant columns (3 per interface).
+    /// Number of columns: 3 per interface (q, s, t), then one per passive force.
     pub columns: usize,
+    /// Number of resultant columns (3 per interface); the passive forces follow them.
+    pub resultant_columns: usize,
     /// Non-zeros of H as (row, column, value).
     pub triplets: Vec<(usize, usize, f64)>,
     /// Dead-load vector w, scaled by the total weight.
@@ -110,9 +127,11 @@ pub fn assemble_equilibrium(
                 (load.moment + cross(arm, (load.fx, load.fy))) / (force_scale * length_scale);
         }
     }
+    let resultant_columns = RESULTANTS_PER_INTERFACE * assembly.interfaces.len();
     Equilibrium {
         rows,
-        columns: RESULTANTS_PER_INTERFACE * assembly.interfaces.len(),
+        columns: resultant_columns,
+        resultant_columns,
         triplets,
         dead,
         live,
@@ -122,6 +141,26 @@ pub fn assemble_equilibrium(
 }
 
 impl Equilibrium {
+    /// Adds one column per passive force (in units of the force scale W): a horizontal force
+    /// `direction`·p at `point` of its block.
+    pub fn add_passive(&mut self, assembly: &Assembly, passive: &[PassiveForce]) {
+        for force in passive {
+            let column = self.columns;
+            self.columns += 1;
+            let g = assembly.blocks[force.block].centroid;
+            let arm = (force.point.0 - g.0, force.point.1 - g.1);
+            let row = EQUATIONS_PER_BLOCK * force.block;
+            self.triplets.extend([
+                (row, column, force.direction),
+                (
+                    row + 2,
+                    column,
+                    cross(arm, (force.direction, 0.0)) / self.length_scale,
+                ),
+            ]);
+        }
+    }
+
     /// The residual H r + λ₀·w + λ·p for resultants `r` in the scaled units.
     pub fn residual(&self, r: &[f64], dead_factor: f64, live_factor: f64) -> Vec<f64> {
         let mut out: Vec<f64> = self

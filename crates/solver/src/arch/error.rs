@@ -49,6 +49,8 @@ pub enum ArchParameter {
         /// Index of the load.
         index: usize,
     },
+    /// The passive restraint of a fill.
+    Passive,
     /// The block of live load `index` (0-based).
     LoadBlock {
         /// Index of the load.
@@ -78,6 +80,7 @@ impl std::fmt::Display for ArchParameter {
             Self::Loads => write!(f, "loads"),
             Self::Load { index } => write!(f, "load {}", index + 1),
             Self::LoadBlock { index } => write!(f, "block of load {}", index + 1),
+            Self::Passive => write!(f, "passive restraint"),
         }
     }
 }

@@ -8,6 +8,7 @@
 //! arches and far better on fine ones.
 
 use super::equilibrium::LiveLoad;
+pub use super::equilibrium::PassiveForce;
 use super::geometry::Assembly;
 
 /// Samples of each voussoir's extrados.
@@ -274,6 +275,86 @@ pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> V
                 fy: load.fy * (c - a) / width,
                 moment: 0.0,
             });
+        }
+    }
+    out
+}
+
+/// Passive restraint of the fill (SPEC §5.1): where the arch sways into the fill, a horizontal
+/// pressure on the extrados of up to `mobilisation`·K_p·σ_v, K_p = (1 + sin φ)/(1 − sin φ) and
+/// σ_v = γ_f·(road − y) the fill's vertical stress.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Passive {
+    /// Friction angle φ of the fill, in degrees (0 ≤ φ < 90).
+    pub friction_angle_deg: f64,
+    /// Fraction of the full passive pressure that may be mobilised (0 ≤ m ≤ 1).
+    pub mobilisation: f64,
+}
+
+impl Passive {
+    /// Rankine's passive coefficient K_p = (1 + sin φ)/(1 − sin φ).
+    pub fn coefficient(&self) -> f64 {
+        let s = self.friction_angle_deg.to_radians().sin();
+        (1.0 + s) / (1.0 - s)
+    }
+}
+
+/// The passive forces the fill can exert on each voussoir: the extrados is sampled as for the
+/// fill's weight; each piece facing the fill sideways contributes m·K_p·σ_v·|Δy| (trapezoidal
+/// rule) towards the arch. A voussoir whose extrados faces both ways (at the crown) gets one
+/// force per direction. Pieces above the road carry nothing.
+pub fn passive_forces(
+    assembly: &Assembly,
+    shape: Extrados,
+    fill: &Fill,
+    passive: &Passive,
+) -> Vec<PassiveForce> {
+    let scale = passive.mobilisation * passive.coefficient() * fill.unit_weight;
+    if scale <= 0.0 {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for (b, block) in assembly.blocks.iter().enumerate() {
+        let points = extrados_points(assembly, b, shape);
+        // (force, Σ force·x, Σ force·y) per direction: index 0 towards −x, 1 towards +x.
+        let mut sums = [[0.0f64; 3]; 2];
+        for w in points.windows(2) {
+            let (dx, dy) = (w[1].0 - w[0].0, w[1].1 - w[0].1);
+            let middle = (0.5 * (w[0].0 + w[1].0), 0.5 * (w[0].1 + w[1].1));
+            // The normal of the piece pointing out of the block (into the fill).
+            let mut normal = (-dy, dx);
+            let away = (middle.0 - block.centroid.0, middle.1 - block.centroid.1);
+            if normal.0 * away.0 + normal.1 * away.1 < 0.0 {
+                normal = (dy, -dx);
+            }
+            if normal.0 == 0.0 {
+                continue;
+            }
+            let (s0, s1) = (
+                scale * (fill.road - w[0].1).max(0.0),
+                scale * (fill.road - w[1].1).max(0.0),
+            );
+            let force = 0.5 * (s0 + s1) * dy.abs();
+            if force <= 0.0 {
+                continue;
+            }
+            // Centroid of the trapezoidal load along the piece.
+            let t = (s0 + 2.0 * s1) / (3.0 * (s0 + s1));
+            let at = (w[0].0 + t * dx, w[0].1 + t * dy);
+            let side = usize::from(normal.0 < 0.0);
+            sums[side][0] += force;
+            sums[side][1] += force * at.0;
+            sums[side][2] += force * at.1;
+        }
+        for (side, s) in sums.iter().enumerate() {
+            if s[0] > 0.0 {
+                out.push(PassiveForce {
+                    block: b,
+                    point: (s[1] / s[0], s[2] / s[0]),
+                    direction: if side == 1 { 1.0 } else { -1.0 },
+                    capacity: s[0],
+                });
+            }
         }
     }
     out

@@ -37,6 +37,9 @@ pub enum Resultant {
     /// The moment–normal force limit of crushing (the rectangular stress block): `Upper` with
     /// the resultant pressed towards the extrados end, `Lower` towards the intrados end.
     M,
+    /// A passive force of a fill at its bound (not a limit of an interface: it makes no hinge,
+    /// and it is not listed among a mechanism's active limits).
+    Passive,
 }
 
 /// Which limit of a resultant.
@@ -144,14 +147,20 @@ pub(crate) fn read_mechanism(
         .iter()
         .map(|v| [v[0] / speed, v[1] / speed, v[2] / speed])
         .collect();
-    let largest = z.iter().fold(0.0f64, |m, v| m.max(*v));
+    let largest = tags
+        .iter()
+        .zip(z)
+        .filter(|(tag, _)| tag.resultant != Resultant::Passive)
+        .fold(0.0f64, |m, (_, v)| m.max(*v));
     let mut active = Vec::new();
     let mut hinges = Vec::new();
     let mut sliding = Vec::new();
     let mut crushing = Vec::new();
     let n = velocities.len();
     for (tag, &multiplier) in tags.iter().zip(z) {
-        if !(largest > 0.0 && multiplier >= ACTIVE_FRACTION * largest) {
+        if !(largest > 0.0 && multiplier >= ACTIVE_FRACTION * largest)
+            || tag.resultant == Resultant::Passive
+        {
             continue;
         }
         let k = tag.interface;

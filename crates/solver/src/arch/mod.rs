@@ -33,8 +33,8 @@ pub use equilibrium::LiveLoad;
 pub use error::{ArchError, ArchParameter};
 pub use geometry::{Assembly, Block, CircularArch, Interface, VoussoirShape};
 pub use limit::{
-    solve_dead_load, solve_live_load, ArchProblem, Crushing, Formulation, InterfaceLimits,
-    LimitSettings, LimitSolution, LimitStatus,
+    solve_dead_load, solve_live_load, solve_live_load_after, ArchProblem, Crushing, Formulation,
+    InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{

@@ -26,6 +26,7 @@ pub(super) struct Found {
     pub dead_load_carried: Option<bool>,
     pub dead_load_margin: Option<f64>,
     pub resultants: Vec<[f64; 3]>,
+    pub passive: Vec<f64>,
     pub mechanism: Option<Mechanism>,
 }
 
@@ -59,9 +60,14 @@ impl<'a> Context<'a> {
         let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
         let dead = &problem.dead_loads;
         let force_scale = force_scale(a, gamma, dead);
-        let model = match settings.formulation {
-            Formulation::Chain => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
-            Formulation::Assembly => Model::Assembly(assemble_equilibrium(a, gamma, dead, loads)),
+        // Passive forces are variables of their own: only the general assembly has room for them.
+        let model = match (settings.formulation, problem.passive.is_empty()) {
+            (Formulation::Chain, true) => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
+            _ => {
+                let mut eq = assemble_equilibrium(a, gamma, dead, loads);
+                eq.add_passive(a, &problem.passive);
+                Model::Assembly(eq)
+            }
         };
         let rows = limit_rows(problem, force_scale);
         Self {
@@ -188,7 +194,7 @@ impl<'a> Context<'a> {
     pub fn resultants(&self, x: &[f64], dead_factor: f64, live_factor: f64) -> Vec<[f64; 3]> {
         let w = self.force_scale;
         match &self.model {
-            Model::Assembly(eq) => x[..eq.columns]
+            Model::Assembly(eq) => x[..eq.resultant_columns]
                 .chunks_exact(RESULTANTS_PER_INTERFACE)
                 .map(|r| [r[0] * w, r[1] * w, r[2] * w])
                 .collect(),
@@ -197,6 +203,17 @@ impl<'a> Context<'a> {
                 .into_iter()
                 .map(|r| [r[0] * w, r[1] * w, r[2] * w])
                 .collect(),
+        }
+    }
+
+    /// The passive forces in force units from a programme's x (empty without them).
+    pub fn passive(&self, x: &[f64]) -> Vec<f64> {
+        match &self.model {
+            Model::Assembly(eq) if x.len() >= eq.columns => x[eq.resultant_columns..eq.columns]
+                .iter()
+                .map(|p| p * self.force_scale)
+                .collect(),
+            _ => Vec::new(),
         }
     }
 
@@ -239,6 +256,7 @@ impl<'a> Context<'a> {
             dead_load_carried,
             dead_load_margin,
             resultants,
+            passive,
             mechanism,
         } = found;
         LimitSolution {
@@ -247,6 +265,7 @@ impl<'a> Context<'a> {
             dead_load_carried,
             dead_load_margin,
             resultants,
+            passive,
             mechanism,
             iterations: self.iterations,
             programmes: self.programmes,
@@ -262,6 +281,7 @@ impl<'a> Context<'a> {
                 dead_load_carried: None,
                 dead_load_margin: None,
                 resultants: Vec::new(),
+                passive: Vec::new(),
                 mechanism: None,
             },
             start,

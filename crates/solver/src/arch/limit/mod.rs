@@ -96,13 +96,15 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
                 dead_load_carried: Some(true),
                 dead_load_margin: Some(full.value),
                 resultants,
+                passive: cx.passive(&full.programme.x),
                 mechanism: None,
             },
             start,
         );
     }
-    if problem.limits.is_homogeneous() {
-        // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0.
+    if problem.limits.is_homogeneous() && problem.passive.is_empty() {
+        // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0 (passive
+        // capacities are fixed forces, not scaled with λ: with them it is not a cone).
         let mechanism = cx.mechanism(&full.programme);
         return cx.finish(
             Found {
@@ -111,6 +113,7 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
                 dead_load_carried: Some(false),
                 dead_load_margin: Some(full.value),
                 resultants: Vec::new(),
+                passive: Vec::new(),
                 mechanism,
             },
             start,
@@ -146,8 +149,11 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
             break;
         }
     }
-    let resultants = carried
-        .map(|e| cx.resultants(&e.programme.x, e.lambda, 0.0))
+    let (resultants, passive) = carried
+        .map(|e| {
+            let x = &e.programme.x;
+            (cx.resultants(x, e.lambda, 0.0), cx.passive(x))
+        })
         .unwrap_or_default();
     let mechanism = cx.mechanism(&hi.programme);
     cx.finish(
@@ -157,6 +163,7 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
             dead_load_carried: Some(false),
             dead_load_margin: Some(full_margin),
             resultants,
+            passive,
             mechanism,
         },
         start,
@@ -167,6 +174,7 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
 fn solve_live_load_once(
     problem: &ArchProblem,
     settings: &LimitSettings,
+    known_margin: Option<f64>,
 ) -> Result<LimitSolution, ArchError> {
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
@@ -177,24 +185,31 @@ fn solve_live_load_once(
             "at least one load with a non-zero force or moment",
         ));
     }
-    let full = match cx.margin(1.0) {
-        Ok(e) => e,
-        Err(f) => return Ok(cx.failed(f, start)),
+    let margin = match known_margin {
+        Some(margin) => margin,
+        None => {
+            let full = match cx.margin(1.0) {
+                Ok(e) => e,
+                Err(f) => return Ok(cx.failed(f, start)),
+            };
+            if full.value > settings.margin_tolerance {
+                let mechanism = cx.mechanism(&full.programme);
+                return Ok(cx.finish(
+                    Found {
+                        status: LimitStatus::DeadLoadNotCarried,
+                        load_factor: None,
+                        dead_load_carried: Some(false),
+                        dead_load_margin: Some(full.value),
+                        resultants: Vec::new(),
+                        passive: Vec::new(),
+                        mechanism,
+                    },
+                    start,
+                ));
+            }
+            full.value
+        }
     };
-    if full.value > settings.margin_tolerance {
-        let mechanism = cx.mechanism(&full.programme);
-        return Ok(cx.finish(
-            Found {
-                status: LimitStatus::DeadLoadNotCarried,
-                load_factor: None,
-                dead_load_carried: Some(false),
-                dead_load_margin: Some(full.value),
-                resultants: Vec::new(),
-                mechanism,
-            },
-            start,
-        ));
-    }
     let (programme, scale) = match cx.live() {
         Ok(p) => p,
         Err(f) => return Ok(cx.failed(f, start)),
@@ -206,22 +221,25 @@ fn solve_live_load_once(
                 status: LimitStatus::Unbounded,
                 load_factor: None,
                 dead_load_carried: Some(true),
-                dead_load_margin: Some(full.value),
+                dead_load_margin: Some(margin),
                 resultants: Vec::new(),
+                passive: Vec::new(),
                 mechanism: None,
             },
             start,
         ));
     }
     let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
+    let passive = cx.passive(&programme.x);
     let mechanism = cx.mechanism(&programme);
     Ok(cx.finish(
         Found {
             status: LimitStatus::Solved,
             load_factor: Some(lambda_scaled / scale),
             dead_load_carried: Some(true),
-            dead_load_margin: Some(full.value),
+            dead_load_margin: Some(margin),
             resultants,
+            passive,
             mechanism,
         },
         start,
@@ -240,5 +258,20 @@ pub fn solve_live_load(
     problem: &ArchProblem,
     settings: &LimitSettings,
 ) -> Result<LimitSolution, ArchError> {
-    crushing::refine(problem, settings, solve_live_load_once)
+    crushing::refine(problem, settings, |p, s| solve_live_load_once(p, s, None))
+}
+
+/// [`solve_live_load`] for a structure whose dead load is known to be carried with margin
+/// `dead_load_margin` (≤ the margin tolerance): an earlier solve of the same blocks, limits and
+/// dead loads — the previous stop of a rolling load, where only the live loads move. Skips the
+/// dead-load programme, half the work of each stop. With crushing the dead load is checked
+/// again (the cutting planes differ from stop to stop).
+pub fn solve_live_load_after(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    dead_load_margin: f64,
+) -> Result<LimitSolution, ArchError> {
+    let carried = dead_load_margin <= settings.margin_tolerance;
+    let known = (carried && problem.crushing.is_none()).then_some(dead_load_margin);
+    crushing::refine(problem, settings, |p, s| solve_live_load_once(p, s, known))
 }

@@ -3,6 +3,7 @@
 
 use crate::arch::equilibrium::LiveLoad;
 use crate::arch::error::{ArchError, ArchParameter};
+use crate::arch::fill::PassiveForce;
 use crate::arch::geometry::Assembly;
 use crate::arch::mechanism::{Bound, Mechanism, Resultant};
 use crate::outcome::SolverFailure;
@@ -66,6 +67,7 @@ pub struct ArchProblem {
     pub(super) live_loads: Vec<LiveLoad>,
     pub(super) dead_loads: Vec<LiveLoad>,
     pub(super) crushing: Option<Crushing>,
+    pub(super) passive: Vec<PassiveForce>,
 }
 
 /// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
@@ -165,6 +167,7 @@ impl ArchProblem {
             live_loads,
             dead_loads: Vec::new(),
             crushing: None,
+            passive: Vec::new(),
         })
     }
 
@@ -186,6 +189,33 @@ impl ArchProblem {
         }
         self.crushing = Some(crushing);
         Ok(self)
+    }
+
+    /// The same problem with passive restraint of a fill: horizontal forces 0 ≤ p ≤ capacity on
+    /// the voussoirs, new variables of the programmes (which are then written on the general
+    /// assembly: each force enters one block's equilibrium).
+    pub fn with_passive(mut self, passive: Vec<PassiveForce>) -> Result<Self, ArchError> {
+        for force in &passive {
+            let values = [force.point.0, force.point.1, force.capacity];
+            let ok = force.block < self.assembly.blocks.len()
+                && values.iter().all(|v| v.is_finite())
+                && force.capacity >= 0.0
+                && force.direction.abs() == 1.0;
+            if !ok {
+                return Err(ArchError::range(
+                    ArchParameter::Passive,
+                    force.capacity,
+                    "finite passive capacities ≥ 0 on existing blocks, direction ±1",
+                ));
+            }
+        }
+        self.passive = passive;
+        Ok(self)
+    }
+
+    /// The passive forces the fill can exert.
+    pub fn passive(&self) -> &[PassiveForce] {
+        &self.passive
     }
 
     /// The crushing of the joints, if any.
@@ -316,6 +346,9 @@ pub struct LimitSolution {
     pub iterations: u32,
     /// Linear programmes solved.
     pub programmes: usize,
+    /// The passive force mobilised on each of the problem's [`PassiveForce`]s, in force units
+    /// (empty without passive restraint or without an admissible state).
+    pub passive: Vec<f64>,
     /// Wall time of the solves in seconds.
     pub solve_time_secs: f64,
 }

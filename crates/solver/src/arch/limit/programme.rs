@@ -12,6 +12,7 @@ use super::problem::LimitSettings;
 use super::rows::Row;
 use crate::arch::chain::ChainStatics;
 use crate::arch::equilibrium::Equilibrium;
+use crate::arch::mechanism::Resultant;
 use crate::outcome::SolverFailure;
 
 /// Outcome of one programme.
@@ -72,7 +73,9 @@ pub(super) fn solve_programme(
             tj.push(j);
             tv.push(v);
         }
-        if let Some(coefficient) = row_extra {
+        // Passive bounds are hard: a margin relaxes the yield limits only.
+        let relaxed = row.tag.resultant != Resultant::Passive;
+        if let (Some(coefficient), true) = (row_extra, relaxed) {
             ti.push(m_eq + r);
             tj.push(extra);
             tv.push(coefficient);

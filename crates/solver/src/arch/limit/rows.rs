@@ -1,6 +1,7 @@
 //! The yield rows of the programmes: each finite limit r⁻ ≤ r ≤ r⁺ of an interface resultant as
-//! an inequality a·x ≤ b, and Livesley's friction rows μ(q + s) ∓ t ≥ 0 (§2.7) where friction is
-//! finite. Forces are scaled by the total weight.
+//! an inequality a·x ≤ b, Livesley's friction rows μ(q + s) ∓ t ≥ 0 (§2.7) where friction is
+//! finite, and the bounds 0 ≤ p ≤ capacity of a fill's passive forces (their tag's `interface`
+//! is the force's index). Forces are scaled by the total weight.
 
 use super::problem::ArchProblem;
 use crate::arch::equilibrium::RESULTANTS_PER_INTERFACE;
@@ -112,6 +113,25 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                     },
                 });
             }
+        }
+    }
+    let first_passive = RESULTANTS_PER_INTERFACE * problem.assembly.interfaces.len();
+    for (j, force) in problem.passive.iter().enumerate() {
+        // 0 ≤ p ≤ capacity: −p ≤ 0 and p ≤ capacity/W.
+        for (bound, sign, b) in [
+            (Bound::Lower, -1.0, 0.0),
+            (Bound::Upper, 1.0, force.capacity / w),
+        ] {
+            rows.push(Row {
+                entries: [(first_passive + j, sign), (0, 0.0), (0, 0.0)],
+                len: 1,
+                b,
+                tag: LimitTag {
+                    interface: j,
+                    resultant: Resultant::Passive,
+                    bound,
+                },
+            });
         }
     }
     rows
