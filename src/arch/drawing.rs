@@ -7,8 +7,8 @@ use super::response::SolvedArch;
 use crate::svg::Canvas;
 
 /// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
-fn outline(corners: &[(f64, f64); 4], curved: bool) -> Vec<(f64, f64)> {
-    if !curved {
+fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
+    if !curved || corners.len() != 4 {
         return corners.to_vec();
     }
     // Intrados-start → extrados-start (straight), along the extrados, extrados-end →
@@ -41,6 +41,9 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     let curved = solved.input.is_curved;
     let loads = solved.input.problem.live_loads();
     let mechanism = solved.solution.mechanism.as_ref();
+    // A chain is drawn with its line of thrust and, when long, its displaced faces; other
+    // assemblies block by block, with the points of action at their contacts.
+    let chain = assembly.is_chain();
     let corners = assembly
         .blocks
         .iter()
@@ -73,7 +76,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             .zip(&mechanism.velocities)
             .map(|(block, &[u, v, rotation])| {
                 let g = block.centroid;
-                let corners = if assembly.blocks.len() > 60 {
+                let corners = if chain && assembly.blocks.len() > 60 {
                     block.corners.to_vec()
                 } else {
                     outline(&block.corners, curved)
@@ -91,7 +94,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             .collect();
         let style =
             "fill=\"none\" stroke=\"#546e7a\" stroke-width=\"0.9\" stroke-dasharray=\"4 3\"";
-        if assembly.blocks.len() > 60 {
+        if chain && assembly.blocks.len() > 60 {
             let intrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[0], c[3]]).collect();
             let extrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[1], c[2]]).collect();
             canvas.polyline(&intrados, style);
@@ -108,7 +111,13 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         .iter()
         .map(|t| t.point.unwrap_or((f64::NAN, f64::NAN)))
         .collect();
-    canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
+    if chain {
+        canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
+    } else {
+        for point in thrust.iter().filter(|p| p.0.is_finite()) {
+            canvas.dot(*point, 2.5, "fill=\"#c62828\"");
+        }
+    }
     // Hinges at the intrados or extrados end of their interface, with their polar angle.
     for hinge in mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default() {
         let Some(interface) = assembly.interfaces.get(hinge.interface) else {

@@ -378,7 +378,11 @@ mod live_load {
     #[test]
     fn quadrilateral_chain_reproduces_the_generator() {
         let arch = circular_arch(30, 10.0, 1.5, 0.0, VoussoirShape::Quadrilateral).assembly();
-        let corners: Vec<_> = arch.blocks.iter().map(|b| b.corners).collect();
+        let corners: Vec<[(f64, f64); 4]> = arch
+            .blocks
+            .iter()
+            .map(|b| std::array::from_fn(|i| b.corners[i]))
+            .collect();
         let chain = Assembly::from_quadrilaterals(&corners).unwrap();
         let a = live(&heyman(arch.clone(), point_load(&arch, 7, -1.0)))
             .load_factor

@@ -78,7 +78,7 @@ impl ChainStatics {
     ) -> Self {
         let force_scale = force_scale(assembly, unit_weight, other_dead_loads);
         let length_scale = assembly.length_scale();
-        let corners = assembly.blocks.len() * 4;
+        let corners: usize = assembly.blocks.iter().map(|b| b.corners.len()).sum();
         let origin = assembly
             .blocks
             .iter()

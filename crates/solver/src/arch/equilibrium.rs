@@ -88,8 +88,11 @@ pub fn assemble_equilibrium(
     let length_scale = assembly.length_scale();
     let mut triplets = Vec::with_capacity(18 * n);
     for (k, interface) in assembly.interfaces.iter().enumerate() {
-        // Interface k pushes block k along +ν and block k−1 along −ν.
-        let neighbours = [(k < n).then_some((k, 1.0)), (k >= 1).then(|| (k - 1, -1.0))];
+        // The interface pushes its upper block along +ν and its lower block along −ν.
+        let neighbours = [
+            interface.upper.map(|b| (b, 1.0)),
+            interface.lower.map(|b| (b, -1.0)),
+        ];
         for (block, sign) in neighbours.into_iter().flatten() {
             let g = assembly.blocks[block].centroid;
             let arm_q = (interface.extrados.0 - g.0, interface.extrados.1 - g.1);

@@ -18,8 +18,9 @@ const SHARED_FACE_TOLERANCE: f64 = 1e-9;
 /// One rigid block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Block {
-    /// Corners: intrados-start, extrados-start, extrados-end, intrados-end.
-    pub corners: [(f64, f64); 4],
+    /// Corners of the polygon. A chain's blocks have four: intrados-start, extrados-start,
+    /// extrados-end, intrados-end; an assembly's block any number, counter-clockwise.
+    pub corners: Vec<(f64, f64)>,
     /// Cross-section area (per unit depth).
     pub area: f64,
     /// Centroid.
@@ -39,6 +40,23 @@ pub struct Interface {
     pub tangent: (f64, f64),
     /// Direction of the joint in degrees (its polar angle, for a circular arch).
     pub angle_deg: f64,
+    /// The block the normal points out of (`None`: a support).
+    pub lower: Option<usize>,
+    /// The block the normal points into (`None`: a support). The resultant acts on it as
+    /// (q + s)·ν + t·τ, and oppositely on `lower`.
+    pub upper: Option<usize>,
+    /// What kind of contact this is (its limits and friction may differ).
+    pub kind: InterfaceKind,
+}
+
+/// Kinds of interfaces whose limits and friction may be given apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum InterfaceKind {
+    /// A joint between voussoirs, or any contact of an assembly (the problem's limits).
+    #[default]
+    Joint,
+    /// The interface between two rings of a multi-ring arch.
+    Ring,
 }
 
 impl Interface {
@@ -56,13 +74,14 @@ impl Interface {
     }
 }
 
-/// A chain of blocks: block b lies between interfaces b and b+1; the first and last interfaces
-/// are supports.
+/// Rigid blocks and the interfaces between them and the supports. In a chain, block b lies
+/// between interfaces b and b+1 and the first and last interfaces are supports; an assembly's
+/// interfaces name their blocks (`lower`, `upper`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Assembly {
-    /// The blocks, in order.
+    /// The blocks.
     pub blocks: Vec<Block>,
-    /// The interfaces, one more than the blocks.
+    /// The interfaces.
     pub interfaces: Vec<Interface>,
 }
 
@@ -197,7 +216,7 @@ impl CircularArch {
                     }
                 };
                 Block {
-                    corners,
+                    corners: corners.to_vec(),
                     area,
                     centroid,
                 }
@@ -215,6 +234,9 @@ impl CircularArch {
                     normal: (-s, c),
                     tangent: (c, s),
                     angle_deg: self.interface_angle_deg(k),
+                    lower: k.checked_sub(1),
+                    upper: (k < n).then_some(k),
+                    kind: InterfaceKind::Joint,
                 }
             })
             .collect();
@@ -291,7 +313,7 @@ impl Assembly {
                 }
             }
             blocks.push(Block {
-                corners: *c,
+                corners: c.to_vec(),
                 area: signed_area.abs(),
                 centroid,
             });
@@ -348,9 +370,24 @@ impl Assembly {
                 normal,
                 tangent,
                 angle_deg,
+                lower: k.checked_sub(1),
+                upper: (k < n).then_some(k),
+                kind: InterfaceKind::Joint,
             });
         }
         Ok(Self { blocks, interfaces })
+    }
+
+    /// Whether the assembly is a chain: interface k between blocks k−1 and k, the first and
+    /// last on supports (what the chain formulation needs).
+    pub fn is_chain(&self) -> bool {
+        let n = self.blocks.len();
+        self.interfaces.len() == n + 1
+            && self
+                .interfaces
+                .iter()
+                .enumerate()
+                .all(|(k, i)| i.lower == k.checked_sub(1) && i.upper == (k < n).then_some(k))
     }
 
     /// Total area of the blocks.
@@ -436,7 +473,11 @@ mod tests {
     #[test]
     fn quadrilateral_chain_matches_the_generator() {
         let arch = semicircle(12, VoussoirShape::Quadrilateral).assembly();
-        let corners: Vec<_> = arch.blocks.iter().map(|b| b.corners).collect();
+        let corners: Vec<[(f64, f64); 4]> = arch
+            .blocks
+            .iter()
+            .map(|b| std::array::from_fn(|i| b.corners[i]))
+            .collect();
         let chain = Assembly::from_quadrilaterals(&corners).unwrap();
         for (a, b) in arch.blocks.iter().zip(&chain.blocks) {
             assert!((a.area - b.area).abs() < 1e-12 * a.area);

@@ -156,7 +156,6 @@ pub(crate) fn read_mechanism(
     let mut hinges = Vec::new();
     let mut sliding = Vec::new();
     let mut crushing = Vec::new();
-    let n = velocities.len();
     for (tag, &multiplier) in tags.iter().zip(z) {
         if !(largest > 0.0 && multiplier >= ACTIVE_FRACTION * largest)
             || tag.resultant == Resultant::Passive
@@ -174,8 +173,7 @@ pub(crate) fn read_mechanism(
         };
         if let Some(side) = hinge {
             let rotation = |b: Option<usize>| b.map_or(0.0, |b| velocities[b][2]);
-            let higher = (k < n).then_some(k);
-            let lower = k.checked_sub(1);
+            let (higher, lower) = (assembly.interfaces[k].upper, assembly.interfaces[k].lower);
             if !hinges
                 .iter()
                 .any(|h: &Hinge| h.interface == k && h.side == side)

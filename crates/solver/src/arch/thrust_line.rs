@@ -34,7 +34,7 @@ impl ThrustPoint {
 /// The force a support exerts on the structure, in the section's axes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SupportReaction {
-    /// Interface index of the support (0 or n).
+    /// Interface index of the support contact (0 or n for a chain).
     pub interface: usize,
     /// Horizontal component (+x).
     pub horizontal: f64,
@@ -42,25 +42,33 @@ pub struct SupportReaction {
     pub vertical: f64,
 }
 
-/// The reactions of the two supports (the first and the last interface) for the resultants `r`;
-/// `None` when there are none. Interface k acts on the higher-numbered block with
-/// (q + s)·ν + t·τ, so the first support pushes the structure with that force and the last
-/// with its opposite.
-pub fn support_reactions(assembly: &Assembly, r: &[[f64; 3]]) -> Option<[SupportReaction; 2]> {
-    let last = assembly.interfaces.len().checked_sub(1)?;
-    if r.len() != assembly.interfaces.len() {
+/// The reactions of the supports for the resultants `r`, one per support contact (the first
+/// and the last interface of a chain), in interface order; `None` when there are no
+/// resultants. An interface acts on its upper block with (q + s)·ν + t·τ: a support below the
+/// normal pushes the structure with that force, one above it with its opposite.
+pub fn support_reactions(assembly: &Assembly, r: &[[f64; 3]]) -> Option<Vec<SupportReaction>> {
+    if r.len() != assembly.interfaces.len() || r.is_empty() {
         return None;
     }
-    let force = |k: usize, sign: f64| {
-        let interface = &assembly.interfaces[k];
-        let [q, s, t] = r[k];
-        SupportReaction {
-            interface: k,
-            horizontal: sign * ((q + s) * interface.normal.0 + t * interface.tangent.0),
-            vertical: sign * ((q + s) * interface.normal.1 + t * interface.tangent.1),
-        }
-    };
-    Some([force(0, 1.0), force(last, -1.0)])
+    let reactions = assembly
+        .interfaces
+        .iter()
+        .zip(r)
+        .enumerate()
+        .filter_map(|(k, (interface, &[q, s, t]))| {
+            let sign = match (interface.lower, interface.upper) {
+                (None, Some(_)) => 1.0,
+                (Some(_), None) => -1.0,
+                _ => return None,
+            };
+            Some(SupportReaction {
+                interface: k,
+                horizontal: sign * ((q + s) * interface.normal.0 + t * interface.tangent.0),
+                vertical: sign * ((q + s) * interface.normal.1 + t * interface.tangent.1),
+            })
+        })
+        .collect();
+    Some(reactions)
 }
 
 /// The thrust line of the resultants `r` (q, s, t per interface).
@@ -118,7 +126,9 @@ mod tests {
         .unwrap();
         let solution = solve_dead_load(&problem, &LimitSettings::default());
         assert_eq!(solution.load_factor, Some(1.0));
-        let [a, b] = support_reactions(problem.assembly(), &solution.resultants).unwrap();
+        let reactions = support_reactions(problem.assembly(), &solution.resultants).unwrap();
+        let [a, b] = [reactions[0], reactions[1]];
+        assert_eq!(reactions.len(), 2);
         let weight = 2.0 * std::f64::consts::PI * 10.0 * 1.5;
         assert!(((a.vertical + b.vertical) - weight).abs() < 1e-8 * weight);
         assert!((a.horizontal + b.horizontal).abs() < 1e-8 * weight);

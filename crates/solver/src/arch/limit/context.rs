@@ -61,7 +61,9 @@ impl<'a> Context<'a> {
         let dead = &problem.dead_loads;
         let force_scale = force_scale(a, gamma, dead);
         // Passive forces are variables of their own: only the general assembly has room for them.
-        let model = match (settings.formulation, problem.passive.is_empty()) {
+        // and only a chain has the chain's three redundants.
+        let chain = problem.passive.is_empty() && a.is_chain();
+        let model = match (settings.formulation, chain) {
             (Formulation::Chain, true) => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
             _ => {
                 let mut eq = assemble_equilibrium(a, gamma, dead, loads);
