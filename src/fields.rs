@@ -20,6 +20,15 @@ pub fn arch_field(parameter: ArchParameter) -> String {
         ArchParameter::BlockCorner { block, corner } => {
             format!("geometry.blocks[{block}].corners[{corner}]")
         }
+        ArchParameter::BlockPolygon { block } => format!("geometry.blocks[{block}].polygon"),
+        ArchParameter::Supports => "geometry.supports".to_owned(),
+        ArchParameter::SupportPolygon { support } => {
+            format!("geometry.supports[{support}].polygon")
+        }
+        ArchParameter::Rings => "geometry.rings".to_owned(),
+        ArchParameter::Spans => "geometry.spans".to_owned(),
+        ArchParameter::PierWidth => "geometry.pier_width".to_owned(),
+        ArchParameter::PierHeight => "geometry.pier_height".to_owned(),
         ArchParameter::UnitWeight => "unit_weight".to_owned(),
         ArchParameter::InterfaceLimit { resultant, bound } => {
             let resultant = match resultant {

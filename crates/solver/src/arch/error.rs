@@ -27,6 +27,26 @@ pub enum ArchParameter {
         /// Index of the corner.
         corner: usize,
     },
+    /// The polygon of block `block` (0-based) of an assembly.
+    BlockPolygon {
+        /// Index of the block.
+        block: usize,
+    },
+    /// The supports of an assembly.
+    Supports,
+    /// The polygon of support `support` (0-based) of an assembly.
+    SupportPolygon {
+        /// Index of the support.
+        support: usize,
+    },
+    /// The number of rings of a circular arch.
+    Rings,
+    /// The number of spans.
+    Spans,
+    /// The width of the piers.
+    PierWidth,
+    /// The height of the piers.
+    PierHeight,
     /// The unit weight.
     UnitWeight,
     /// One limit of the interface resultants.
@@ -70,6 +90,13 @@ impl std::fmt::Display for ArchParameter {
             Self::BlockCorner { block, corner } => {
                 write!(f, "corner {} of block {}", corner + 1, block + 1)
             }
+            Self::BlockPolygon { block } => write!(f, "polygon of block {}", block + 1),
+            Self::Supports => write!(f, "supports"),
+            Self::SupportPolygon { support } => write!(f, "polygon of support {}", support + 1),
+            Self::Rings => write!(f, "rings"),
+            Self::Spans => write!(f, "spans"),
+            Self::PierWidth => write!(f, "pier width"),
+            Self::PierHeight => write!(f, "pier height"),
             Self::UnitWeight => write!(f, "unit weight"),
             Self::InterfaceLimit { resultant, bound } => {
                 write!(f, "{bound:?} limit of {resultant:?}")

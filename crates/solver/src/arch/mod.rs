@@ -19,9 +19,11 @@
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
 pub mod chain;
+pub mod contacts;
 pub mod equilibrium;
 mod error;
 pub mod fill;
+pub mod generators;
 pub mod geometry;
 pub mod limit;
 pub mod mechanism;
@@ -31,7 +33,7 @@ pub mod thrust_line;
 pub use crate::outcome::SolverFailure;
 pub use equilibrium::LiveLoad;
 pub use error::{ArchError, ArchParameter};
-pub use geometry::{Assembly, Block, CircularArch, Interface, VoussoirShape};
+pub use geometry::{Assembly, Block, CircularArch, Interface, InterfaceKind, VoussoirShape};
 pub use limit::{
     solve_dead_load, solve_live_load, solve_live_load_after, ArchProblem, Crushing, Formulation,
     InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,

@@ -102,7 +102,7 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
             start,
         );
     }
-    if problem.limits.is_homogeneous() && problem.passive.is_empty() {
+    if problem.is_homogeneous() && problem.passive.is_empty() {
         // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0 (passive
         // capacities are fixed forces, not scaled with λ: with them it is not a cone).
         let mechanism = cx.mechanism(&full.programme);

@@ -4,7 +4,7 @@
 use crate::arch::equilibrium::LiveLoad;
 use crate::arch::error::{ArchError, ArchParameter};
 use crate::arch::fill::PassiveForce;
-use crate::arch::geometry::Assembly;
+use crate::arch::geometry::{Assembly, InterfaceKind};
 use crate::arch::mechanism::{Bound, Mechanism, Resultant};
 use crate::outcome::SolverFailure;
 
@@ -68,6 +68,8 @@ pub struct ArchProblem {
     pub(super) dead_loads: Vec<LiveLoad>,
     pub(super) crushing: Option<Crushing>,
     pub(super) passive: Vec<PassiveForce>,
+    /// Limits and friction of the ring interfaces of a multi-ring arch, when they differ.
+    pub(super) ring: Option<(InterfaceLimits, Option<f64>)>,
 }
 
 /// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
@@ -168,6 +170,7 @@ impl ArchProblem {
             dead_loads: Vec::new(),
             crushing: None,
             passive: Vec::new(),
+            ring: None,
         })
     }
 
@@ -211,6 +214,38 @@ impl ArchProblem {
         }
         self.passive = passive;
         Ok(self)
+    }
+
+    /// The same problem with other limits and friction on the interfaces of
+    /// [`InterfaceKind::Ring`] (between the rings of a multi-ring arch); checked as the
+    /// problem's own.
+    pub fn with_ring_interfaces(
+        mut self,
+        limits: InterfaceLimits,
+        friction: Option<f64>,
+    ) -> Result<Self, ArchError> {
+        let check = Self::new(
+            self.assembly.clone(),
+            self.unit_weight,
+            limits,
+            friction,
+            Vec::new(),
+        )?;
+        self.ring = Some((check.limits, check.friction));
+        Ok(self)
+    }
+
+    /// The limits and friction of interface `k`.
+    pub(crate) fn material(&self, k: usize) -> (InterfaceLimits, Option<f64>) {
+        match (self.assembly.interfaces[k].kind, self.ring) {
+            (InterfaceKind::Ring, Some(ring)) => ring,
+            _ => (self.limits, self.friction),
+        }
+    }
+
+    /// Whether every finite limit of every interface is zero (the admissible set a cone).
+    pub(crate) fn is_homogeneous(&self) -> bool {
+        self.limits.is_homogeneous() && self.ring.is_none_or(|(l, _)| l.is_homogeneous())
     }
 
     /// The passive forces the fill can exert.

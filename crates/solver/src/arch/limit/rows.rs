@@ -38,7 +38,8 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
         .map_or(Vec::new(), |c| c.tangent_points());
     for k in 0..problem.assembly.interfaces.len() {
         let col = RESULTANTS_PER_INTERFACE * k;
-        for (resultant, bound, value) in problem.limits.bounds() {
+        let (limits, friction) = problem.material(k);
+        for (resultant, bound, value) in limits.bounds() {
             let Some(value) = value else { continue };
             let offset = match resultant {
                 Resultant::Q => 0,
@@ -62,8 +63,8 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
             });
         }
         if let Some(crushing) = &problem.crushing {
-            let no_tension = problem.limits.q_min.is_some_and(|v| v >= 0.0)
-                && problem.limits.s_min.is_some_and(|v| v >= 0.0);
+            let no_tension =
+                limits.q_min.is_some_and(|v| v >= 0.0) && limits.s_min.is_some_and(|v| v >= 0.0);
             // ±(q − s) ≤ (1 − 2n)(q + s) + n²·σ_c·t: the tangent at n = N/(σ_c t) to
             // |q − s| ≤ (q + s)(1 − (q + s)/(σ_c t)), i.e. |M| ≤ N(t − N/σ_c)/2.
             let t = problem.assembly.interfaces[k].length();
@@ -98,7 +99,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                 }
             }
         }
-        if let Some(mu) = problem.friction {
+        if let Some(mu) = friction {
             // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
             // −v ≤ 0; only where friction is finite.
             for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
