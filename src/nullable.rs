@@ -53,6 +53,11 @@ pub fn integer<'de, D: Deserializer<'de>>(deserializer: D) -> Result<usize, D::E
     Integer::deserialize(deserializer).map(|i| i.0)
 }
 
+/// An integer field that defaults to 1 (`null` too).
+pub fn integer_or_one<'de, D: Deserializer<'de>>(deserializer: D) -> Result<usize, D::Error> {
+    Ok(Option::<Integer>::deserialize(deserializer)?.map_or(1, |i| i.0))
+}
+
 /// A field whose `null` is its type's default.
 pub fn or_default<'de, D, T>(deserializer: D) -> Result<T, D::Error>
 where

@@ -7,14 +7,15 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::fill::Extrados;
 use thrustline_solver::arch::{
-    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceLimits, LimitSettings,
-    LiveLoad, VoussoirShape,
+    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, InterfaceLimits,
+    LimitSettings, LiveLoad, VoussoirShape,
 };
 
+use super::assembly::Generated;
 use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
 use super::request::{
-    DeadLoadRequest, GeometryDto, LimitFields, LiveLoadRequest, LoadDto, MaterialFields,
-    VoussoirDto,
+    DeadLoadRequest, GeometryDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest, LoadDto,
+    MaterialFields, VoussoirDto,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -108,9 +109,22 @@ fn input(
         fields.geometry,
         GeometryDto::Circular {
             voussoir: VoussoirDto::Curved,
+            rings: 1,
+            spans: 1,
             ..
         }
     );
+    if !assembly.is_chain() && (extras.fill.is_some() || extras.rolling.is_some()) {
+        return Err(ApiError::invalid(
+            if extras.fill.is_some() {
+                "fill"
+            } else {
+                "rolling"
+            },
+            "fill and rolling loads are for one-ring, one-span circular arches and block chains \
+             (an assembly has no single extrados): put loads on its blocks with loads",
+        ));
+    }
     let shape = if is_curved {
         Extrados::Arc { centre: (0.0, 0.0) }
     } else {
@@ -148,6 +162,22 @@ fn input(
     )?
     .with_dead_loads(filled.dead.clone())?
     .with_passive(filled.passive.clone().unwrap_or_default())?;
+    let has_rings = problem
+        .assembly()
+        .interfaces
+        .iter()
+        .any(|i| i.kind == InterfaceKind::Ring);
+    let problem = if has_rings {
+        let (limits, friction) = ring_material(fields.material)?;
+        problem.with_ring_interfaces(limits, friction)?
+    } else if fields.material.ring_friction_coefficient.is_some() {
+        return Err(ApiError::invalid(
+            "ring_friction_coefficient",
+            "is for arches of more than one ring (geometry.rings > 1): leave it out",
+        ));
+    } else {
+        problem
+    };
     let problem = match fields.compressive_strength {
         None if fields.crushing_planes.is_some() => {
             return Err(ApiError::invalid(
@@ -169,9 +199,11 @@ fn input(
     };
     let (min, max) = SOLVER_TOLERANCE;
     // Passive forces are variables of their own: the general assembly carries them.
-    let formulation = match filled.passive {
-        Some(_) => Formulation::Assembly,
-        None => fields.formulation.solver(),
+    // So do assemblies that are not chains: the answer names what was used.
+    let formulation = if filled.passive.is_some() || !problem.assembly().is_chain() {
+        Formulation::Assembly
+    } else {
+        fields.formulation.solver()
     };
     let settings = LimitSettings {
         time_limit_secs,
@@ -193,41 +225,49 @@ fn input(
 /// is unbounded) and `friction_coefficient` (null: no sliding).
 pub fn material(fields: MaterialFields) -> Result<Material, ApiError> {
     let unit_weight = number("unit_weight", fields.unit_weight, 0.0, true, MAX_MAGNITUDE)?;
-    let limits = fields.interface_limits;
+    Ok(Material {
+        unit_weight,
+        limits: limits("interface_limits", fields.interface_limits)?,
+        friction: friction("friction_coefficient", fields.friction_coefficient)?,
+    })
+}
+
+/// `ring_interface_limits` and `ring_friction_coefficient`, validated like their one-ring twins.
+fn ring_material(fields: MaterialFields) -> Result<(InterfaceLimits, Option<f64>), ApiError> {
+    Ok((
+        limits("ring_interface_limits", fields.ring_interface_limits)?,
+        friction(
+            "ring_friction_coefficient",
+            fields.ring_friction_coefficient,
+        )?,
+    ))
+}
+
+/// Interface limits: missing fields take Heyman's values, `null` is unbounded.
+fn limits(name: &str, given: &InterfaceLimitsDto) -> Result<InterfaceLimits, ApiError> {
     let heyman = InterfaceLimits::heyman();
     let limit = |field: &str, given: Option<Option<f64>>, default: Option<f64>, lower: bool| {
-        let field = format!("interface_limits.{field}");
+        let field = format!("{name}.{field}");
         match given.unwrap_or(default) {
             None => Ok(None),
             Some(v) if lower => number(&field, v, -MAX_FORCE, false, 0.0).map(Some),
             Some(v) => number(&field, v, 0.0, false, MAX_FORCE).map(Some),
         }
     };
-    let limits = InterfaceLimits {
-        q_min: limit("q_min", limits.q_min, heyman.q_min, true)?,
-        q_max: limit("q_max", limits.q_max, heyman.q_max, false)?,
-        s_min: limit("s_min", limits.s_min, heyman.s_min, true)?,
-        s_max: limit("s_max", limits.s_max, heyman.s_max, false)?,
-        t_min: limit("t_min", limits.t_min, heyman.t_min, true)?,
-        t_max: limit("t_max", limits.t_max, heyman.t_max, false)?,
-    };
-    let friction = fields
-        .friction_coefficient
-        .map(|mu| {
-            number(
-                "friction_coefficient",
-                mu,
-                0.0,
-                false,
-                MAX_FRICTION_COEFFICIENT,
-            )
-        })
-        .transpose()?;
-    Ok(Material {
-        unit_weight,
-        limits,
-        friction,
+    Ok(InterfaceLimits {
+        q_min: limit("q_min", given.q_min, heyman.q_min, true)?,
+        q_max: limit("q_max", given.q_max, heyman.q_max, false)?,
+        s_min: limit("s_min", given.s_min, heyman.s_min, true)?,
+        s_max: limit("s_max", given.s_max, heyman.s_max, false)?,
+        t_min: limit("t_min", given.t_min, heyman.t_min, true)?,
+        t_max: limit("t_max", given.t_max, heyman.t_max, false)?,
     })
+}
+
+/// A friction coefficient: null is no sliding.
+fn friction(field: &str, mu: Option<f64>) -> Result<Option<f64>, ApiError> {
+    mu.map(|mu| number(field, mu, 0.0, false, MAX_FRICTION_COEFFICIENT))
+        .transpose()
 }
 
 /// The fields of a circular arch (`geometry.kind = circular`) as the request gives them.
@@ -285,15 +325,33 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
             left_base_angle_deg,
             right_base_angle_deg,
             voussoir,
-        } => Ok(circular_arch(CircularFields {
-            radius,
-            thickness,
-            voussoirs,
-            left_base_angle_deg,
-            right_base_angle_deg,
-            voussoir,
-        })?
-        .assembly()),
+            rings,
+            ring_joints,
+            spans,
+            pier_width,
+            pier_height,
+        } => {
+            let arch = circular_arch(CircularFields {
+                radius,
+                thickness,
+                voussoirs,
+                left_base_angle_deg,
+                right_base_angle_deg,
+                voussoir,
+            })?;
+            let generated = Generated {
+                rings,
+                ring_joints,
+                spans,
+                pier_width,
+                pier_height,
+            };
+            if generated.is_plain() {
+                Ok(arch.assembly())
+            } else {
+                super::assembly::generated(&arch, generated)
+            }
+        }
         GeometryDto::Blocks { blocks } => {
             count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
             for (b, block) in blocks.iter().enumerate() {
@@ -309,6 +367,7 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
                 .collect();
             Ok(Assembly::from_quadrilaterals(&corners)?)
         }
+        GeometryDto::Assembly { blocks, supports } => super::assembly::assembly(blocks, supports),
     }
 }
 

@@ -169,6 +169,13 @@ pub async fn minimum_thickness(
         voussoir: g.voussoir,
     })?;
     let material = material(request.material())?;
+    if request.ring_friction_coefficient.is_some() {
+        return Err(ApiError::invalid(
+            "ring_friction_coefficient",
+            "is for arches of more than one ring, which the minimum-thickness search does not \
+             take: leave it out",
+        ));
+    }
     let (min, max) = THICKNESS_TOLERANCE;
     let settings = MinimumThicknessSettings {
         tolerance: number("tolerance", request.tolerance, min, false, max)?,

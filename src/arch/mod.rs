@@ -6,6 +6,7 @@
 //! them. Angles are polar angles in degrees (for block chains: the direction of the joint from
 //! its intrados to its extrados end).
 
+pub mod assembly;
 pub mod codes;
 pub mod drawing;
 pub mod fill;

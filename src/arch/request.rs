@@ -111,6 +111,30 @@ pub enum GeometryDto {
         #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
         #[schema(nullable)]
         voussoir: VoussoirDto,
+        /// Rings the thickness is split into, 1 ≤ rings ≤ 16 (ring 1 innermost; blocks are
+        /// numbered ring by ring). More than one makes the arch an assembly of polygonal
+        /// voussoirs, solved on the general formulation. Defaults to 1.
+        #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+        #[schema(nullable)]
+        #[schema(minimum = 1, maximum = 16, default = 1)]
+        rings: usize,
+        /// How the joints of neighbouring rings lie. Defaults to `staggered`.
+        #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
+        #[schema(nullable)]
+        ring_joints: super::assembly::RingJointsDto,
+        /// Spans, 1 ≤ spans ≤ 20: the arch repeated on piers (`pier_width`, `pier_height`).
+        /// Defaults to 1.
+        #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+        #[schema(nullable)]
+        #[schema(minimum = 1, maximum = 20, default = 1)]
+        spans: usize,
+        /// With `spans` > 1: each pier's width between the intrados springings of its two
+        /// spans (more than D·(cos B + cos C), so the springings do not overlap).
+        #[serde(default)]
+        pier_width: Option<f64>,
+        /// With `spans` > 1: each pier's height below its lower springing, > 0.
+        #[serde(default)]
+        pier_height: Option<f64>,
     },
     /// A chain of quadrilateral blocks; the first block's start face and the last block's end
     /// face rest on supports.
@@ -120,6 +144,21 @@ pub enum GeometryDto {
         #[schema(min_items = 1, max_items = 10000)]
         blocks: Vec<BlockCornersDto>,
     },
+    /// Any polygonal blocks on fixed supports (SPEC §5.4): contacts are found where edges of
+    /// two blocks, or of a block and a support, run along each other.
+    #[schema(title = "AssemblyGeometry")]
+    Assembly {
+        /// The blocks, 1 to 10000 of them.
+        #[schema(min_items = 1, max_items = 10000)]
+        blocks: Vec<super::assembly::PolygonDto>,
+        /// The fixed supports, 1 to 1000 of them.
+        #[schema(min_items = 1, max_items = 1000)]
+        supports: Vec<super::assembly::PolygonDto>,
+    },
+}
+
+fn one() -> usize {
+    1
 }
 
 /// Limits on the interface resultants (absolute forces). A missing field takes Heyman's value
@@ -196,6 +235,10 @@ pub struct MaterialFields<'a> {
     pub interface_limits: &'a InterfaceLimitsDto,
     /// `friction_coefficient`.
     pub friction_coefficient: Option<f64>,
+    /// `ring_interface_limits`.
+    pub ring_interface_limits: &'a InterfaceLimitsDto,
+    /// `ring_friction_coefficient`.
+    pub ring_friction_coefficient: Option<f64>,
 }
 
 /// What the dead- and live-load requests share, borrowed from them for validation.
@@ -237,6 +280,17 @@ macro_rules! arch_request {
             #[serde(default)]
             #[schema(minimum = 0.0, maximum = 1000000.0)]
             pub friction_coefficient: Option<f64>,
+            /// Multi-ring arches: friction coefficient μ ≥ 0 between the rings; null = no
+            /// sliding between them. Defaults to null.
+            #[serde(default)]
+            #[schema(minimum = 0.0, maximum = 1000000.0)]
+            pub ring_friction_coefficient: Option<f64>,
+            /// Multi-ring arches: limits on the resultants between the rings (as
+            /// `interface_limits`; `{"q_min": null, "s_min": null}` bonds the rings). Defaults
+            /// to Heyman's.
+            #[serde(default, deserialize_with = "crate::nullable::or_default")]
+            #[schema(nullable)]
+            pub ring_interface_limits: InterfaceLimitsDto,
         }
 
         impl $name {
@@ -246,6 +300,8 @@ macro_rules! arch_request {
                     unit_weight: self.unit_weight,
                     interface_limits: &self.interface_limits,
                     friction_coefficient: self.friction_coefficient,
+                    ring_interface_limits: &self.ring_interface_limits,
+                    ring_friction_coefficient: self.ring_friction_coefficient,
                 }
             }
         }

@@ -1,0 +1,155 @@
+//! Assemblies, multi-ring arches and spans on piers over HTTP (SPEC §5.4, §5.6).
+
+// Test scaffolding: a malformed answer should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{assert_problem, Server};
+use serde_json::{json, Value};
+
+fn circular(extra: Value) -> Value {
+    let mut g = json!({"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 40});
+    for (k, v) in extra.as_object().unwrap() {
+        g[k] = v.clone();
+    }
+    g
+}
+
+#[tokio::test]
+async fn a_wall_panel_tips_or_slides_at_the_hand_computed_push() {
+    // A 2 × 1 block on the ground with a 1 × 1 block centred on it, pushed at the top-left
+    // corner: the top block tips at P = W_top/2 = 0.5 (γ = 1, P = 1), or slides first at
+    // μ·W_top = 0.3 with μ = 0.3. Contacts are reported with the blocks they join.
+    let server = Server::start().await;
+    let geometry = json!({"kind": "assembly",
+        "blocks": [{"polygon": [[-1, 0], [1, 0], [1, 1], [-1, 1]]},
+                   {"polygon": [[-0.5, 1], [0.5, 1], [0.5, 2], [-0.5, 2]]}],
+        "supports": [{"polygon": [[-3, -1], [3, -1], [3, 0], [-3, 0]]}]});
+    let body = json!({"geometry": geometry, "loads": [{"block": 2, "x": -0.5, "y": 2, "fx": 1}]});
+    let (status, _, tipping) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{tipping}");
+    let lambda = tipping["load_factor"].as_f64().unwrap();
+    assert!((lambda - 0.5).abs() < 1e-8, "{lambda}");
+    assert_eq!(tipping["solver"]["formulation"], "assembly");
+    assert_eq!(tipping["thrust_line"].as_array().unwrap().len(), 2);
+    let mut sliding = body.clone();
+    sliding["friction_coefficient"] = json!(0.3);
+    let (status, _, sliding) = server.post("/arch/live-load", &sliding).await;
+    assert_eq!(status, 200, "{sliding}");
+    let lambda = sliding["load_factor"].as_f64().unwrap();
+    assert!((lambda - 0.3).abs() < 1e-8, "{lambda}");
+    assert!(!sliding["sliding_interfaces"].as_array().unwrap().is_empty());
+    // The drawing of an assembly is well-formed SVG.
+    let svg = server
+        .client
+        .post(format!("{}/arch/live-load/svg", server.base))
+        .json(&body)
+        .send()
+        .await
+        .unwrap()
+        .text()
+        .await
+        .unwrap();
+    assert!(roxmltree::Document::parse(&svg).is_ok(), "{svg}");
+}
+
+#[tokio::test]
+async fn two_rings_stand_where_one_ring_of_their_thickness_falls() {
+    // t/R = 0.10 < Milankovitch's 0.1075: one ring falls; two staggered rings that cannot slide
+    // on each other stand; frictionless ring interfaces let each thin ring fall alone.
+    let server = Server::start().await;
+    let dead = |body: Value| {
+        let server = &server;
+        async move {
+            let (status, _, answer) = server.post("/arch/dead-load", &body).await;
+            assert_eq!(status, 200, "{answer}");
+            answer["stable"].as_bool().unwrap()
+        }
+    };
+    assert!(!dead(json!({"geometry": circular(json!({}))})).await);
+    assert!(dead(json!({"geometry": circular(json!({"rings": 2}))})).await);
+    assert!(
+        !dead(json!({"geometry": circular(json!({"rings": 2})), "ring_friction_coefficient": 0}))
+            .await
+    );
+    // Aligned joints with bonded rings are the one ring again.
+    let bonded = json!({"geometry": circular(json!({"rings": 2, "ring_joints": "aligned"})),
+                        "ring_interface_limits": {"q_min": null, "s_min": null}});
+    assert!(!dead(bonded).await);
+}
+
+#[tokio::test]
+async fn three_spans_on_piers_carry_a_load_on_the_first_span() {
+    let server = Server::start().await;
+    let body = json!({"geometry": circular(json!({"thickness": 1.5, "voussoirs": 30, "spans": 3,
+                                                  "pier_width": 4, "pier_height": 6})),
+                      "loads": [{"block": 8, "fy": -1}]});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    assert!(answer["load_factor"].as_f64().unwrap() > 0.0);
+    // Reactions: two abutments and two pier footings, carrying the weight and the load.
+    let reactions = answer["reactions"].as_array().unwrap();
+    assert_eq!(reactions.len(), 4, "{reactions:?}");
+}
+
+#[tokio::test]
+async fn bad_assemblies_name_their_field() {
+    let server = Server::start().await;
+    let square = |x: f64, y: f64| json!({"polygon": [[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]]});
+    let ground = json!([{"polygon": [[-5, -1], [5, -1], [5, 0], [-5, 0]]}]);
+    let cases = [
+        (
+            json!({"kind": "assembly", "blocks": [square(0.0, 0.0), square(0.5, 0.0)], "supports": ground}),
+            "geometry.blocks[0].polygon",
+        ),
+        (
+            json!({"kind": "assembly", "blocks": [square(0.0, 0.0), square(0.0, 3.0)], "supports": ground}),
+            "geometry.blocks[1].polygon",
+        ),
+        (
+            json!({"kind": "assembly", "blocks": [square(0.0, 0.0)], "supports": []}),
+            "geometry.supports",
+        ),
+        (
+            json!({"kind": "assembly", "blocks": [{"polygon": [[0, 0], [1, 0]]}], "supports": ground}),
+            "geometry.blocks[0].polygon",
+        ),
+        (circular(json!({"rings": 17})), "geometry.rings"),
+        (circular(json!({"spans": 2})), "geometry.pier_width"),
+        (
+            circular(json!({"spans": 2, "pier_width": 1.0, "pier_height": 3})),
+            "geometry.pier_width",
+        ),
+        (
+            circular(json!({"spans": 2, "pier_width": 4.0, "pier_height": -3})),
+            "geometry.pier_height",
+        ),
+    ];
+    for (geometry, field) in cases {
+        let (status, content_type, answer) = server
+            .post("/arch/dead-load", &json!({"geometry": geometry}))
+            .await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+    let (status, content_type, answer) = server
+        .post(
+            "/arch/dead-load",
+            &json!({"geometry": circular(json!({})), "ring_friction_coefficient": 0.5}),
+        )
+        .await;
+    assert_problem(
+        status,
+        &content_type,
+        &answer,
+        422,
+        "ring_friction_coefficient",
+    );
+    let (status, content_type, answer) = server
+        .post(
+            "/arch/dead-load",
+            &json!({"geometry": circular(json!({"rings": 2})), "fill": {"unit_weight": 1, "surface": 12}}),
+        )
+        .await;
+    assert_problem(status, &content_type, &answer, 422, "fill");
+}
