@@ -153,3 +153,42 @@ async fn bad_assemblies_name_their_field() {
         .await;
     assert_problem(status, &content_type, &answer, 422, "fill");
 }
+
+#[tokio::test]
+async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_matters() {
+    let server = Server::start().await;
+    // An arch that slides at a joint and a springing: the check finds the same λ, so the flag
+    // that used to cry wolf stays down, and the corrected mechanism is answered.
+    let arch = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 2.0, "voussoirs": 20},
+                      "friction_coefficient": 0.4, "loads": [{"block": 6, "fy": -1}]});
+    let (status, _, answer) = server.post("/arch/live-load", &arch).await;
+    assert_eq!(status, 200, "{answer}");
+    assert!(!answer["sliding_interfaces"].as_array().unwrap().is_empty());
+    assert_eq!(answer["friction_may_overestimate"], false);
+    let check = &answer["non_associative"];
+    assert_eq!(check["settled"], true, "{check}");
+    assert!(check["corrected_mechanism"].is_object());
+    // Two leaves under a cap: the associative 0.25 over-estimates; non_associative answers less.
+    let wall = json!({"geometry": {"kind": "assembly",
+        "blocks": [{"polygon": [[0, 0], [0.5, 0], [0.5, 2], [0, 2]]},
+                   {"polygon": [[0.5, 0], [1, 0], [1, 2], [0.5, 2]]},
+                   {"polygon": [[0, 2], [1, 2], [1, 2.5], [0, 2.5]]}],
+        "supports": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]},
+        "friction_coefficient": 0.5, "loads": [{"block": 3, "x": 0, "y": 2.5, "fx": 1}]});
+    let (status, _, associative) = server.post("/arch/live-load", &wall).await;
+    assert_eq!(status, 200, "{associative}");
+    assert_eq!(associative["friction_may_overestimate"], true);
+    let assoc = associative["load_factor"].as_f64().unwrap();
+    let mut body = wall.clone();
+    body["friction"] = json!("non_associative");
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let na = answer["load_factor"].as_f64().unwrap();
+    assert!(na < assoc, "{na} vs {assoc}");
+    assert_eq!(answer["non_associative"]["settled"], true);
+    assert_eq!(
+        answer["non_associative"]["load_factor"].as_f64().unwrap(),
+        na
+    );
+    assert_eq!(answer["friction_may_overestimate"], false);
+}

@@ -14,8 +14,8 @@ use thrustline_solver::arch::{
 use super::assembly::Generated;
 use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
 use super::request::{
-    DeadLoadRequest, GeometryDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest, LoadDto,
-    MaterialFields, VoussoirDto,
+    DeadLoadRequest, FrictionDto, GeometryDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest,
+    LoadDto, MaterialFields, VoussoirDto,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -40,6 +40,8 @@ pub struct ArchInput {
     /// With `fill.passive`: whether passive restraint was asked for (its forces are the
     /// problem's).
     pub has_passive: bool,
+    /// `friction: non_associative`.
+    pub non_associative: bool,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -162,6 +164,13 @@ fn input(
     )?
     .with_dead_loads(filled.dead.clone())?
     .with_passive(filled.passive.clone().unwrap_or_default())?;
+    if fields.friction == FrictionDto::NonAssociative && extras.rolling.is_some() {
+        return Err(ApiError::invalid(
+            "friction",
+            "non_associative is not available with rolling (each stop would iterate): roll with \
+             the associative rule, then check the critical stop with loads",
+        ));
+    }
     let has_rings = problem
         .assembly()
         .interfaces
@@ -218,6 +227,7 @@ fn input(
         fill_weight: extras.fill.map(|_| filled.weight),
         rolling: filled.rolling,
         has_passive: filled.passive.is_some(),
+        non_associative: fields.friction == FrictionDto::NonAssociative,
     })
 }
 

@@ -11,15 +11,18 @@ pub mod codes;
 pub mod drawing;
 pub mod fill;
 pub mod input;
+pub mod mechanism;
 pub mod minimum_thickness;
 pub mod request;
 pub mod response;
 
 use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
+use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    solve_dead_load, solve_live_load, solve_live_load_after, thrust_line, ArchError, ArchProblem,
-    LimitSolution, LimitStatus, SolverFailure,
+    solve_dead_load, solve_dead_load_non_associative, solve_live_load, solve_live_load_after,
+    solve_live_load_non_associative, thrust_line, ArchError, ArchProblem, LimitSolution,
+    LimitStatus, SolverFailure,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -189,21 +192,34 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         .run(move || {
             let mut input = input;
             let mut rolling = None;
-            let solution = match (which, input.rolling.take()) {
-                (Problem::DeadLoad, _) => Ok(solve_dead_load(&input.problem, &input.settings)),
-                (Problem::LiveLoad, None) => solve_live_load(&input.problem, &input.settings),
-                (Problem::LiveLoad, Some(stops)) => {
-                    roll(&mut input, &stops).map(|(solution, curve)| {
+            let (solution, friction) = match (which, input.rolling.take()) {
+                (Problem::LiveLoad, Some(stops)) => match roll(&mut input, &stops) {
+                    Ok((solution, curve)) => {
                         rolling = Some(curve);
-                        solution
-                    })
-                }
+                        // The friction check at the critical stop, when it slides.
+                        let check = solution
+                            .mechanism
+                            .as_ref()
+                            .is_some_and(|m| m.involves_friction())
+                            .then(|| {
+                                solve_live_load_non_associative(
+                                    &input.problem,
+                                    &input.settings,
+                                    true,
+                                )
+                            })
+                            .and_then(Result::ok);
+                        (Ok(solution), check)
+                    }
+                    Err(e) => (Err(e), None),
+                },
+                _ => solve_with_friction(which, &input),
             };
-            (input, solution, rolling)
+            (input, solution, rolling, friction)
         })
         .await?;
-    let (input, solution, rolling) = solved;
-    let solution = solution?;
+    let (input, solution, rolling, friction) = solved;
+    let mut solution = solution?;
     tracing::info!(
         problem = ?which,
         blocks = input.problem.assembly().blocks.len(),
@@ -212,11 +228,17 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         load_factor = solution.load_factor,
         "arch solved"
     );
-    let status = ArchStatusDto::try_from(solution.status).map_err(|_| ApiError::OverTimeLimit {
-        field: "geometry".to_owned(),
-        seconds: state.solve_time_limit_secs(),
-        advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
-    })?;
+    let mut status =
+        ArchStatusDto::try_from(solution.status).map_err(|_| ApiError::OverTimeLimit {
+            field: "geometry".to_owned(),
+            seconds: state.solve_time_limit_secs(),
+            advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
+        })?;
+    if input.non_associative && friction.as_ref().is_some_and(|f| !f.settled) {
+        // No factor the iteration cannot vouch for; its steps are in `non_associative`.
+        status = ArchStatusDto::NotSettled;
+        solution.load_factor = None;
+    }
     let thrust_line = thrust_line(input.problem.assembly(), &solution.resultants);
     Ok(SolvedArch {
         input,
@@ -224,7 +246,40 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         status,
         thrust_line,
         rolling,
+        friction,
     })
+}
+
+/// One dead- or live-load solve; with friction, the non-associative iteration too (all of it
+/// for `friction: non_associative`, whose answer it then is; otherwise only when the
+/// associative mechanism slides, for `friction_may_overestimate`).
+fn solve_with_friction(
+    which: Problem,
+    input: &ArchInput,
+) -> (Result<LimitSolution, ArchError>, Option<NonAssociative>) {
+    let (problem, settings) = (&input.problem, &input.settings);
+    let check_only = !input.non_associative;
+    let pick = |o: &NonAssociative| {
+        if input.non_associative {
+            o.solution.clone()
+        } else {
+            o.associative.clone()
+        }
+    };
+    match (which, problem.has_friction()) {
+        (Problem::DeadLoad, true) => {
+            let o = solve_dead_load_non_associative(problem, settings, check_only);
+            (Ok(pick(&o)), Some(o))
+        }
+        (Problem::DeadLoad, false) => (Ok(solve_dead_load(problem, settings)), None),
+        (Problem::LiveLoad, true) => {
+            match solve_live_load_non_associative(problem, settings, check_only) {
+                Ok(o) => (Ok(pick(&o)), Some(o)),
+                Err(e) => (Err(e), None),
+            }
+        }
+        (Problem::LiveLoad, false) => (solve_live_load(problem, settings), None),
+    }
 }
 
 /// Solves the live load at every stop of a rolling load; the input's problem becomes the

@@ -40,6 +40,19 @@ impl FormulationDto {
     }
 }
 
+/// How Coulomb friction acts at sliding joints.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum FrictionDto {
+    /// The associated flow rule of the linear programme (sliding joints dilate); where the
+    /// mechanism slides, the non-associative check runs too and sets
+    /// `friction_may_overestimate`.
+    #[default]
+    Associative,
+    /// No dilatancy: the iteration of Gilbert, Casapulla & Ahmed (2006) gives the answer.
+    NonAssociative,
+}
+
 /// One block of an explicit chain.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -254,6 +267,8 @@ pub struct LimitFields<'a> {
     pub compressive_strength: Option<f64>,
     /// `crushing_planes`.
     pub crushing_planes: Option<usize>,
+    /// `friction`.
+    pub friction: FrictionDto,
     /// The material.
     pub material: MaterialFields<'a>,
 }
@@ -345,6 +360,11 @@ macro_rules! limit_request {
                 #[serde(default)]
                 #[schema(minimum = 2, maximum = 256)]
                 pub crushing_planes: Option<usize>,
+                /// With friction: `associative` (the linear programme's flow rule, the default)
+                /// or `non_associative` (sliding without dilatancy, by iterated programmes).
+                #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
+                #[schema(nullable)]
+                pub friction: FrictionDto,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }
         }
@@ -358,6 +378,7 @@ macro_rules! limit_request {
                     solver_tolerance: self.solver_tolerance,
                     compressive_strength: self.compressive_strength,
                     crushing_planes: self.crushing_planes,
+                    friction: self.friction,
                     material: self.material(),
                 }
             }

@@ -2,6 +2,7 @@
 //! blocks and interfaces numbered from 1, angles in degrees.
 
 use serde::Serialize;
+use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
     support_reactions, Assembly, Bound, HingeSide, LimitSolution, LimitStatus, Mechanism,
     SolverFailure, ThrustPoint,
@@ -10,6 +11,7 @@ use utoipa::ToSchema;
 
 use super::fill::{passive_out, PassiveOutDto, RollingOutDto};
 use super::input::ArchInput;
+use super::mechanism::{MechanismDto, NonAssociativeOutDto};
 use super::request::FormulationDto;
 
 pub use super::codes::{BoundDto, HingeSideDto, ResultantDto};
@@ -48,26 +50,6 @@ pub struct HingeDto {
     pub y: f64,
     /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
     pub rotation: f64,
-}
-
-/// Virtual velocity of one block in the mechanism.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct BlockVelocityDto {
-    /// Block number (1-based).
-    pub block: usize,
-    /// Velocity of the centroid in x.
-    pub u: f64,
-    /// Velocity of the centroid in y.
-    pub v: f64,
-    /// Rotation rate (counter-clockwise).
-    pub rotation: f64,
-}
-
-/// The collapse mechanism, normalised so that the fastest block corner moves at speed 1.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct MechanismDto {
-    /// Velocity of every block.
-    pub blocks: Vec<BlockVelocityDto>,
 }
 
 /// The resultant at one interface.
@@ -128,6 +110,9 @@ pub enum ArchStatusDto {
     /// The interior-point method reported the programme infeasible (which the formulations
     /// exclude): no factor reported.
     Infeasible,
+    /// `friction: non_associative`: the iteration did not settle in its steps: no factor (λ at
+    /// each step is in `non_associative.load_factors`).
+    NotSettled,
 }
 
 impl TryFrom<LimitStatus> for ArchStatusDto {
@@ -190,10 +175,14 @@ pub struct ArchOutcomeDto {
     /// The collapse mechanism; null when nothing collapses.
     #[schema(required = true)]
     pub mechanism: Option<MechanismDto>,
-    /// True when the mechanism slides under Coulomb friction: the linear programme assumes an
-    /// associated flow rule, so the load factor may over-estimate the true one (Livesley
-    /// §2.7–2.9).
+    /// True only when the associative answer is shown to over-estimate: its mechanism slides,
+    /// and friction without dilatancy (the non-associative iteration, run for the check)
+    /// carries less, or does not settle (Livesley §2.7–2.9). See `non_associative`.
     pub friction_may_overestimate: bool,
+    /// With friction, when the iteration ran (`friction: non_associative`, or an associative
+    /// mechanism that slides): its steps, whether it settled, the corrected mechanism.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub non_associative: Option<NonAssociativeOutDto>,
     /// The line of thrust of the admissible state at the load factor (empty when there is none).
     pub thrust_line: Vec<InterfaceThrustPointDto>,
     /// The smallest distance from the line of thrust to the nearer face of its joint, as a
@@ -260,6 +249,8 @@ pub struct SolvedArch {
     pub thrust_line: Vec<ThrustPoint>,
     /// With `rolling`: λ at each stop.
     pub rolling: Option<RollingOutDto>,
+    /// With friction: the non-associative iteration, when it ran.
+    pub friction: Option<NonAssociative>,
 }
 
 impl DeadLoadResponse {
@@ -312,20 +303,16 @@ impl ArchOutcomeDto {
             crushing_interfaces: mechanism
                 .map(|m| one_based(&m.crushing))
                 .unwrap_or_default(),
-            mechanism: mechanism.map(|m| MechanismDto {
-                blocks: m
-                    .velocities
-                    .iter()
-                    .enumerate()
-                    .map(|(b, v)| BlockVelocityDto {
-                        block: b + 1,
-                        u: v[0],
-                        v: v[1],
-                        rotation: v[2],
-                    })
-                    .collect(),
+            mechanism: mechanism.map(MechanismDto::new),
+            friction_may_overestimate: !solved.input.non_associative
+                && solved
+                    .friction
+                    .as_ref()
+                    .is_some_and(|f| f.associative_may_overestimate()),
+            non_associative: solved.friction.as_ref().and_then(|f| {
+                (solved.input.non_associative || f.history.len() > 1)
+                    .then(|| NonAssociativeOutDto::new(f))
             }),
-            friction_may_overestimate: mechanism.is_some_and(|m| m.involves_friction()),
             thrust_line: solved
                 .thrust_line
                 .iter()

@@ -35,7 +35,8 @@ pub use equilibrium::LiveLoad;
 pub use error::{ArchError, ArchParameter};
 pub use geometry::{Assembly, Block, CircularArch, Interface, InterfaceKind, VoussoirShape};
 pub use limit::{
-    solve_dead_load, solve_live_load, solve_live_load_after, ArchProblem, Crushing, Formulation,
+    non_associative, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
+    solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,
     InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};

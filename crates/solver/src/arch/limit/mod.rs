@@ -36,6 +36,7 @@ pub(crate) mod problem;
 mod programme;
 mod rows;
 
+use std::convert::Infallible;
 use std::time::Instant;
 
 use super::error::{ArchError, ArchParameter};
@@ -44,6 +45,7 @@ use crate::outcome::SolverFailure;
 use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 
 mod crushing;
+pub mod non_associative;
 
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
@@ -259,6 +261,33 @@ pub fn solve_live_load(
     settings: &LimitSettings,
 ) -> Result<LimitSolution, ArchError> {
     crushing::refine(problem, settings, |p, s| solve_live_load_once(p, s, None))
+}
+
+/// Livesley's dead-load problem with friction that does not dilate (SPEC §5.5): see
+/// [`non_associative`]; with `only_if_sliding` the iteration runs only when the associative
+/// mechanism slides.
+pub fn solve_dead_load_non_associative(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    only_if_sliding: bool,
+) -> non_associative::NonAssociative {
+    let solve = |p: &ArchProblem, s: &LimitSettings| -> Result<LimitSolution, Infallible> {
+        Ok(solve_dead_load(p, s))
+    };
+    match non_associative::iterate(problem, settings, only_if_sliding, solve) {
+        Ok(outcome) => outcome,
+        Err(never) => match never {},
+    }
+}
+
+/// Livesley's live-load problem with friction that does not dilate (SPEC §5.5): see
+/// [`non_associative`]; `only_if_sliding` as for the dead load.
+pub fn solve_live_load_non_associative(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    only_if_sliding: bool,
+) -> Result<non_associative::NonAssociative, ArchError> {
+    non_associative::iterate(problem, settings, only_if_sliding, solve_live_load)
 }
 
 /// [`solve_live_load`] for a structure whose dead load is known to be carried with margin

@@ -70,6 +70,9 @@ pub struct ArchProblem {
     pub(super) passive: Vec<PassiveForce>,
     /// Limits and friction of the ring interfaces of a multi-ring arch, when they differ.
     pub(super) ring: Option<(InterfaceLimits, Option<f64>)>,
+    /// Fixed shear capacities |t| ≤ c_k in place of the friction rows (a step of the
+    /// non-associative iteration), per interface; only where the interface has friction.
+    pub(super) shear_capacities: Option<Vec<f64>>,
 }
 
 /// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
@@ -171,6 +174,7 @@ impl ArchProblem {
             crushing: None,
             passive: Vec::new(),
             ring: None,
+            shear_capacities: None,
         })
     }
 
@@ -245,7 +249,29 @@ impl ArchProblem {
 
     /// Whether every finite limit of every interface is zero (the admissible set a cone).
     pub(crate) fn is_homogeneous(&self) -> bool {
-        self.limits.is_homogeneous() && self.ring.is_none_or(|(l, _)| l.is_homogeneous())
+        self.limits.is_homogeneous()
+            && self.ring.is_none_or(|(l, _)| l.is_homogeneous())
+            && self.shear_capacities.is_none()
+    }
+
+    /// Whether any interface has Coulomb friction.
+    pub fn has_friction(&self) -> bool {
+        self.friction.is_some() || self.ring.is_some_and(|(_, mu)| mu.is_some())
+    }
+
+    /// The same problem with the friction rows of every interface that has friction replaced
+    /// by the fixed shear capacities |t_k| ≤ μ_k·normal[k] (non-associative sliding: purely
+    /// tangential); `normal` holds one normal force per interface (negative taken as 0).
+    pub(crate) fn with_fixed_friction(&self, normal: &[f64]) -> Self {
+        let mut fixed = self.clone();
+        let capacities = (0..self.assembly.interfaces.len())
+            .map(|k| {
+                let mu = self.material(k).1.unwrap_or(0.0);
+                mu * normal.get(k).copied().unwrap_or(0.0).max(0.0)
+            })
+            .collect();
+        fixed.shear_capacities = Some(capacities);
+        fixed
     }
 
     /// The passive forces the fill can exert.

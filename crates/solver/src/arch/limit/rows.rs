@@ -99,7 +99,23 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                 }
             }
         }
-        if let Some(mu) = friction {
+        if let (Some(_), Some(capacities)) = (friction, &problem.shear_capacities) {
+            // Fixed capacities (non-associative step): t ≤ c (tagged U: sliding towards +τ)
+            // and −t ≤ c (V).
+            let c = capacities.get(k).copied().unwrap_or(0.0) / w;
+            for (resultant, sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
+                rows.push(Row {
+                    entries: [(col + 2, sign), (col, 0.0), (col, 0.0)],
+                    len: 1,
+                    b: c,
+                    tag: LimitTag {
+                        interface: k,
+                        resultant,
+                        bound: Bound::Lower,
+                    },
+                });
+            }
+        } else if let Some(mu) = friction {
             // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
             // −v ≤ 0; only where friction is finite.
             for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {

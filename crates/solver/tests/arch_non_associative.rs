@@ -1,0 +1,158 @@
+//! Friction without dilatancy (SPEC §5.5): the non-associative iteration against the
+//! associative programme — equal where the mechanism's sliding needs no dilatancy, never above
+//! it, its first step never below it, and a settled state that satisfies Coulomb everywhere.
+
+// Fixtures: a failed construction should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+use std::num::NonZeroUsize;
+
+use thrustline_solver::arch::non_associative::NonAssociative;
+use thrustline_solver::arch::*;
+
+fn check_properties(problem: &ArchProblem, outcome: &NonAssociative, mu: f64) {
+    let a = outcome.associative.load_factor.unwrap();
+    // One step from the associative normal forces keeps the associative optimum feasible.
+    if let Some(Some(first)) = outcome.history.get(1) {
+        assert!(*first >= a * (1.0 - 1e-7), "{first} < {a}");
+    }
+    if outcome.settled {
+        let l = outcome.solution.load_factor.unwrap();
+        assert!(l <= a * (1.0 + 1e-7), "{l} > {a}");
+        // Coulomb at every joint, by the solution's own normal forces (1e-6 of the weight).
+        let w = problem.assembly().total_area() * problem.unit_weight();
+        for r in &outcome.solution.resultants {
+            assert!(r[2].abs() <= mu * (r[0] + r[1]) + 1e-6 * w, "{r:?}");
+        }
+    }
+}
+
+#[test]
+fn a_sliding_arch_needs_no_dilatancy_and_keeps_its_load_factor() {
+    // R = 10, D = 2, 20 voussoirs, μ = 0.4, a unit load on voussoir 6: the associative
+    // mechanism slides at that voussoir's joint and at a springing. Sliding there needs no
+    // opening, so the non-associative iteration settles at once on the same λ (1e-7): the
+    // flag that used to be set whenever anything slid stays down.
+    let arch = CircularArch::new(
+        10.0,
+        2.0,
+        NonZeroUsize::new(20).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Curved,
+    )
+    .unwrap();
+    let a = arch.assembly();
+    let load = vec![LiveLoad {
+        block: 5,
+        point: a.blocks[5].centroid,
+        fx: 0.0,
+        fy: -1.0,
+        moment: 0.0,
+    }];
+    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.4), load).unwrap();
+    let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
+    assert!(o
+        .associative
+        .mechanism
+        .as_ref()
+        .unwrap()
+        .involves_friction());
+    assert!(o.settled);
+    assert_eq!(o.history.len(), 2, "{:?}", o.history);
+    let (x, y) = (
+        o.associative.load_factor.unwrap(),
+        o.solution.load_factor.unwrap(),
+    );
+    assert!((x - y).abs() < 1e-7 * x, "{x} vs {y}");
+    assert!(!o.associative_may_overestimate());
+    // The corrected mechanism slides without opening: at each sliding joint the two normal
+    // rates of its blocks' relative motion vanish (checked by the velocities at its ends).
+    let m = o.corrected.as_ref().unwrap();
+    for &k in &m.sliding {
+        let i = p.assembly().interfaces[k];
+        let velocity = |b: Option<usize>, at: (f64, f64)| {
+            b.map_or((0.0, 0.0), |b| {
+                let [u, v, w] = m.velocities[b];
+                let g = p.assembly().blocks[b].centroid;
+                (u - w * (at.1 - g.1), v + w * (at.0 - g.0))
+            })
+        };
+        for end in [i.intrados, i.extrados] {
+            let (up, low) = (velocity(i.upper, end), velocity(i.lower, end));
+            let normal = (up.0 - low.0) * i.normal.0 + (up.1 - low.1) * i.normal.1;
+            assert!(normal.abs() < 1e-6, "joint {k} opens at {normal}");
+        }
+    }
+    check_properties(&p, &o, 0.4);
+    // Without friction nothing is iterated.
+    let q = ArchProblem::new(
+        p.assembly().clone(),
+        1.0,
+        InterfaceLimits::heyman(),
+        None,
+        p.live_loads().to_vec(),
+    )
+    .unwrap();
+    let o = solve_live_load_non_associative(&q, &LimitSettings::default(), false).unwrap();
+    assert_eq!(o.history.len(), 1);
+}
+
+#[test]
+fn two_leaves_under_a_cap_carry_less_when_their_joint_cannot_dilate() {
+    // Two leaves 0.5 × 2 side by side under a 1 × 0.5 cap, pushed at the cap's top-left
+    // corner, μ = 0.5. The associative programme lets the joints open as they slide and
+    // carries 0.25 (the cap sliding: μ·W_cap); without dilatancy the wall carries less, and
+    // the answer says so.
+    let blocks = vec![
+        vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
+        vec![(0.5, 0.0), (1.0, 0.0), (1.0, 2.0), (0.5, 2.0)],
+        vec![(0.0, 2.0), (1.0, 2.0), (1.0, 2.5), (0.0, 2.5)],
+    ];
+    let ground = vec![vec![(-2.0, -1.0), (3.0, -1.0), (3.0, 0.0), (-2.0, 0.0)]];
+    let a = Assembly::from_polygons(&blocks, &ground).unwrap();
+    let push = vec![LiveLoad {
+        block: 2,
+        point: (0.0, 2.5),
+        fx: 1.0,
+        fy: 0.0,
+        moment: 0.0,
+    }];
+    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), push).unwrap();
+    let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
+    let assoc = o.associative.load_factor.unwrap();
+    assert!((assoc - 0.25).abs() < 1e-8, "{assoc}");
+    assert!(o.settled, "{:?}", o.history);
+    let na = o.solution.load_factor.unwrap();
+    assert!(na < assoc * (1.0 - 1e-3), "{na} vs {assoc}");
+    assert!(o.associative_may_overestimate());
+    check_properties(&p, &o, 0.5);
+}
+
+#[test]
+fn dead_load_with_friction_too_low_is_not_carried_either_way() {
+    // The semicircle R = 10, D = 1.2 (27 voussoirs) with μ = 0.3 slides at its springings under
+    // its own weight: λ₀ = 0 associatively, and friction that cannot dilate does no better.
+    let arch = CircularArch::new(
+        10.0,
+        1.2,
+        NonZeroUsize::new(27).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Curved,
+    )
+    .unwrap();
+    let p = ArchProblem::new(
+        arch.assembly(),
+        1.0,
+        InterfaceLimits::heyman(),
+        Some(0.3),
+        vec![],
+    )
+    .unwrap();
+    let o = solve_dead_load_non_associative(&p, &LimitSettings::default(), false);
+    assert_eq!(o.associative.load_factor, Some(0.0));
+    assert_eq!(o.solution.load_factor, Some(0.0));
+    assert!(o.settled);
+    assert!(!o.associative_may_overestimate());
+}
