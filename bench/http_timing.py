@@ -51,3 +51,15 @@ bench("same, two axles rolled over 101 stops", "/arch/live-load", dict(passive, 
 quarter = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 100}, "loads": [{"block": 26, "fy": -1}]}
 bench("arch live load, N = 100, crushing σ_c = 100 (cutting planes from 4)", "/arch/live-load", dict(quarter, compressive_strength=100), lambda d: d["solver"]["time_ms"])
 bench("arch live load, N = 100, crushing σ_c = 50", "/arch/live-load", dict(quarter, compressive_strength=50), lambda d: d["solver"]["time_ms"])
+
+# Assemblies (SPEC §5.4–5.5).
+rings = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 100, "rings": 2}, "ring_friction_coefficient": 0.6}
+bench("two staggered rings, 2 × 100 voussoirs, ring μ = 0.6: dead load", "/arch/dead-load", rings, lambda d: d["solver"]["time_ms"])
+bench("the same: live load on inner-ring block 26 (associative solve; the friction check adds its steps)", "/arch/live-load", dict(rings, loads=[{"block": 26, "fy": -1}]), lambda d: d["solver"]["time_ms"])
+spans = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 60, "spans": 3, "pier_width": 4, "pier_height": 6}}
+bench("three spans × 60 voussoirs on two piers: live load on block 16", "/arch/live-load", dict(spans, loads=[{"block": 16, "fy": -1}]), lambda d: d["solver"]["time_ms"])
+wall = {"geometry": {"kind": "assembly",
+    "blocks": [{"polygon": [[0, 0], [0.5, 0], [0.5, 2], [0, 2]]}, {"polygon": [[0.5, 0], [1, 0], [1, 2], [0.5, 2]]}, {"polygon": [[0, 2], [1, 2], [1, 2.5], [0, 2.5]]}],
+    "supports": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]},
+    "friction_coefficient": 0.5, "friction": "non_associative", "loads": [{"block": 3, "x": 0, "y": 2.5, "fx": 1}]}
+bench("two leaves under a cap, non-associative (whole request: its steps)", "/arch/live-load", wall, lambda d: d["solver"]["time_ms"])

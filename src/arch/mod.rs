@@ -259,12 +259,19 @@ fn solve_with_friction(
 ) -> (Result<LimitSolution, ArchError>, Option<NonAssociative>) {
     let (problem, settings) = (&input.problem, &input.settings);
     let check_only = !input.non_associative;
+    // The answer's solver figures count the whole iteration (the check included).
     let pick = |o: &NonAssociative| {
-        if input.non_associative {
+        let mut solution = if input.non_associative {
             o.solution.clone()
         } else {
             o.associative.clone()
-        }
+        };
+        (
+            solution.iterations,
+            solution.programmes,
+            solution.solve_time_secs,
+        ) = o.totals;
+        solution
     };
     match (which, problem.has_friction()) {
         (Problem::DeadLoad, true) => {

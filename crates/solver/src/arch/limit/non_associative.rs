@@ -41,6 +41,9 @@ pub struct NonAssociative {
     /// The corrected mechanism (Livesley §2.7): the first step's, where sliding joints slide
     /// without opening; `None` when nothing slid or there was no step.
     pub corrected: Option<Mechanism>,
+    /// Interior-point iterations, programmes and wall time of the whole iteration (the
+    /// associative solve included).
+    pub totals: (u32, usize, f64),
 }
 
 fn normal_forces(solution: &LimitSolution) -> Vec<f64> {
@@ -81,7 +84,13 @@ pub fn iterate<E>(
     only_if_sliding: bool,
     solve: impl Fn(&ArchProblem, &LimitSettings) -> Result<LimitSolution, E>,
 ) -> Result<NonAssociative, E> {
+    let start = std::time::Instant::now();
     let associative = solve(problem, settings)?;
+    let single = (
+        associative.iterations,
+        associative.programmes,
+        associative.solve_time_secs,
+    );
     let mut history = vec![associative.load_factor];
     let sliding = associative
         .mechanism
@@ -94,6 +103,7 @@ pub fn iterate<E>(
             history,
             settled: true,
             corrected: None,
+            totals: single,
         });
     }
     if !problem.has_friction()
@@ -114,6 +124,7 @@ pub fn iterate<E>(
             history,
             settled,
             corrected: None,
+            totals: single,
         });
     }
     let weight: f64 = problem.assembly().total_area() * problem.unit_weight()
@@ -147,6 +158,7 @@ pub fn iterate<E>(
                 history,
                 settled: true,
                 corrected,
+                totals: (iterations, programmes, start.elapsed().as_secs_f64()),
             });
         }
         for (u, n) in used.iter_mut().zip(&normal) {
@@ -161,6 +173,7 @@ pub fn iterate<E>(
         history,
         settled: false,
         corrected,
+        totals: (iterations, programmes, start.elapsed().as_secs_f64()),
     })
 }
 
