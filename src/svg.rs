@@ -82,6 +82,13 @@ impl Canvas {
         )
     }
 
+    /// Adds a band of `extra` pixels below the picture; returns the band's top (pixels).
+    pub fn band_below(&mut self, extra: f64) -> f64 {
+        let top = self.height;
+        self.height += extra;
+        top
+    }
+
     /// A length of the section in pixels.
     pub fn length(&self, l: f64) -> f64 {
         l * self.scale

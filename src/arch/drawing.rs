@@ -1,10 +1,12 @@
 //! Drawing of an arch: voussoirs, line of thrust, hinges with their angles, live loads as
 //! arrows, and the collapse mechanism as the displaced blocks (dashed).
 
+use thrustline_solver::arch::fill::ExtradosProfile;
 use thrustline_solver::arch::HingeSide;
 
+use super::fill::RollingOutDto;
 use super::response::SolvedArch;
-use crate::svg::Canvas;
+use crate::svg::{escape, Canvas, WIDTH};
 
 /// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
 fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
@@ -44,12 +46,51 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     // A chain is drawn with its line of thrust and, when long, its displaced faces; other
     // assemblies block by block, with the points of action at their contacts.
     let chain = assembly.is_chain();
-    let corners = assembly
+    let corners: Vec<(f64, f64)> = assembly
         .blocks
         .iter()
-        .flat_map(|b| b.corners.iter().copied());
-    let mut canvas = Canvas::fitting(corners);
+        .flat_map(|b| b.corners.iter().copied())
+        .collect();
+    // With fill: the fill between the extrados and the road, over the span.
+    let fill = solved.input.fill.as_ref();
+    let (x_lo, x_hi) = corners
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let road = fill.map(|(f, _, _)| [(x_hi, f.road), (x_lo, f.road)]);
+    let mut canvas = Canvas::fitting(corners.iter().copied().chain(road.into_iter().flatten()));
     let span = assembly.length_scale();
+    let mut legend: Vec<(&str, &str)> = Vec::new();
+    if let (Some((f, shape, road_loads)), Some(road)) = (fill, road) {
+        // Extrados from the right springing to the left (block order), closed along the road.
+        let mut outline: Vec<(f64, f64)> = assembly
+            .blocks
+            .iter()
+            .flat_map(|b| [b.corners[1], b.corners[2]])
+            .collect();
+        outline.insert(0, road[0]);
+        outline.push(road[1]);
+        canvas.polygon(&outline, "fill=\"#f3ead7\" stroke=\"none\"");
+        canvas.polyline(&road, "stroke=\"#616161\" stroke-width=\"2.5\"");
+        legend.push(("#a1887f", "▬ fill and road"));
+        // Road loads: the patch on the road and its dispersal lines down to the extrados.
+        let profile = ExtradosProfile::new(assembly, *shape);
+        for load in road_loads {
+            let ends = profile.dispersal_ends(f, *load);
+            let (a, b) = (load.x - 0.5 * load.length, load.x + 0.5 * load.length);
+            let fan = "stroke=\"#1565c0\" stroke-width=\"0.9\" stroke-dasharray=\"3 2\"";
+            canvas.polyline(&[(a, f.road), ends[0]], fan);
+            canvas.polyline(&[(b, f.road), ends[1]], fan);
+            canvas.polyline(
+                &[(a, f.road), (b, f.road)],
+                "stroke=\"#1565c0\" stroke-width=\"4\"",
+            );
+        }
+        if !road_loads.is_empty() {
+            legend.push(("#1565c0", "- - dispersal"));
+        }
+    }
     let outlines: Vec<Vec<(f64, f64)>> = assembly
         .blocks
         .iter()
@@ -157,11 +198,113 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         );
         canvas.arrow(from, load.point, "stroke=\"#1565c0\" stroke-width=\"2\"");
     }
-    canvas.raw(
-        "<g font-size=\"11\" font-family=\"sans-serif\"><text x=\"60\" y=\"44\" fill=\"#c62828\">— line of thrust</text>\
-         <text x=\"180\" y=\"44\" fill=\"#1b5e20\">● hinges</text>\
-         <text x=\"260\" y=\"44\" fill=\"#546e7a\">- - collapse mechanism</text>\
-         <text x=\"420\" y=\"44\" fill=\"#1565c0\">→ live loads</text></g>",
-    );
+    // Passive pressure where mobilised: horizontal arrows onto the extrados.
+    let problem = &solved.input.problem;
+    let mobilised = &solved.solution.passive;
+    let strongest = mobilised.iter().fold(0.0f64, |m, p| m.max(*p));
+    if strongest > 0.0 {
+        for (force, &p) in problem.passive().iter().zip(mobilised) {
+            if p <= 1e-6 * strongest {
+                continue;
+            }
+            let length = 0.06 * span * p / strongest;
+            let from = (force.point.0 - force.direction * length, force.point.1);
+            canvas.arrow(from, force.point, "stroke=\"#6d4c41\" stroke-width=\"1.6\"");
+        }
+        legend.push(("#6d4c41", "→ passive pressure"));
+    }
+    // Crushing joints: a bar across the joint.
+    if let Some(m) = mechanism.filter(|m| !m.crushing.is_empty()) {
+        for &k in &m.crushing {
+            if let Some(i) = assembly.interfaces.get(k) {
+                canvas.polyline(
+                    &[i.intrados, i.extrados],
+                    "stroke=\"#ef6c00\" stroke-width=\"4\"",
+                );
+            }
+        }
+        legend.push(("#ef6c00", "▮ crushing"));
+    }
+    if !solved.thrust_line.is_empty() {
+        legend.insert(0, ("#c62828", "— line of thrust"));
+    }
+    if mechanism.is_some_and(|m| !m.hinges.is_empty()) {
+        legend.push(("#1b5e20", "● hinges"));
+    }
+    if mechanism.is_some() {
+        legend.push(("#546e7a", "- - collapse mechanism"));
+    }
+    if !loads.is_empty() {
+        legend.push(("#1565c0", "→ live loads"));
+    }
+    let mut x = 60.0;
+    let mut items = String::from("<g font-size=\"11\" font-family=\"sans-serif\">");
+    for (colour, text) in &legend {
+        items.push_str(&format!(
+            "<text x=\"{x:.0}\" y=\"44\" fill=\"{colour}\">{}</text>",
+            escape(text)
+        ));
+        x += 7.0 * text.chars().count() as f64 + 18.0;
+    }
+    items.push_str("</g>");
+    canvas.raw(&items);
+    if let Some(curve) = &solved.rolling {
+        rolling_curve(&mut canvas, curve);
+    }
     canvas.finish(title)
+}
+
+/// λ against the position of a rolling load, in a band under the arch, the critical stop
+/// marked.
+fn rolling_curve(canvas: &mut Canvas, curve: &RollingOutDto) {
+    let points: Vec<(f64, f64)> = curve
+        .positions
+        .iter()
+        .zip(&curve.load_factor)
+        .filter_map(|(&x, l)| l.map(|l| (x, l)))
+        .collect();
+    if points.is_empty() {
+        return;
+    }
+    let (height, left, right) = (150.0, 60.0, WIDTH - 60.0);
+    let top = canvas.band_below(height + 40.0) + 20.0;
+    let (x0, x1) = (
+        curve.positions[0],
+        curve.positions[curve.positions.len() - 1],
+    );
+    let l1 = points.iter().fold(0.0f64, |m, p| m.max(p.1)) * 1.05;
+    let px = |(x, l): (f64, f64)| {
+        let u = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.5 };
+        let v = if l1 > 0.0 { l / l1 } else { 0.0 };
+        (left + u * (right - left), top + height - v * height)
+    };
+    let path: Vec<String> = points
+        .iter()
+        .map(|&p| {
+            let (x, y) = px(p);
+            format!("{x:.2},{y:.2}")
+        })
+        .collect();
+    let mut svg = format!(
+        "<g font-size=\"11\" font-family=\"sans-serif\"><rect x=\"{left}\" y=\"{top:.2}\" width=\"{:.2}\" height=\"{height}\" fill=\"none\" stroke=\"#999\"/>\
+         <polyline points=\"{}\" fill=\"none\" stroke=\"#1565c0\" stroke-width=\"1.6\"/>\
+         <text x=\"{left}\" y=\"{:.2}\" fill=\"#333\">rolling load: λ against position (x from {} to {}; top of the box λ = {:.3})</text>",
+        right - left,
+        path.join(" "),
+        top - 6.0,
+        x0,
+        x1,
+        l1
+    );
+    if let (Some(x), Some(l)) = (curve.critical_position, curve.critical_load_factor) {
+        let (cx, cy) = px((x, l));
+        svg.push_str(&format!(
+            "<circle cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"4\" fill=\"#c62828\"/>\
+             <text x=\"{:.2}\" y=\"{:.2}\" fill=\"#c62828\">critical: x = {x:.3}, λ = {l:.4}</text>",
+            cx + 6.0,
+            cy + 14.0
+        ));
+    }
+    svg.push_str("</g>");
+    canvas.raw(&svg);
 }

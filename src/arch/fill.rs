@@ -160,6 +160,10 @@ pub struct FillLoads {
     pub weight: f64,
     /// With `fill.passive`: the horizontal forces the fill can exert.
     pub passive: Option<Vec<PassiveForce>>,
+    /// The fill, validated (for drawings).
+    pub fill: Option<Fill>,
+    /// The road loads, validated (for drawings).
+    pub road: Vec<RoadLoad>,
 }
 
 /// The fill's and the road's loads on `assembly` (whose extrados is `shape`).
@@ -215,6 +219,7 @@ pub fn fill_loads(
         dispersal_angle_deg: 0.0,
     });
     let mut live = Vec::new();
+    let mut road = Vec::with_capacity(road_loads.len());
     for (i, load) in road_loads.iter().enumerate() {
         let field = |name: &str| format!("road_loads[{i}].{name}");
         let load = RoadLoad {
@@ -223,6 +228,7 @@ pub fn fill_loads(
             length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
         };
         live.extend(road_load(assembly, shape, &carrier, load));
+        road.push(load);
     }
     let rolling = rolling
         .map(|r| rolling_loads(assembly, shape, &carrier, r))
@@ -250,6 +256,8 @@ pub fn fill_loads(
         live,
         rolling,
         passive,
+        fill,
+        road,
     })
 }
 

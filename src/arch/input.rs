@@ -5,7 +5,7 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::arch::fill::Extrados;
+use thrustline_solver::arch::fill::{Extrados, Fill, RoadLoad};
 use thrustline_solver::arch::{
     ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, InterfaceLimits,
     LimitSettings, LiveLoad, VoussoirShape,
@@ -42,6 +42,8 @@ pub struct ArchInput {
     pub has_passive: bool,
     /// `friction: non_associative`.
     pub non_associative: bool,
+    /// The fill, its extrados' shape and the road loads, for drawings.
+    pub fill: Option<(Fill, Extrados, Vec<RoadLoad>)>,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -228,6 +230,7 @@ fn input(
         rolling: filled.rolling,
         has_passive: filled.passive.is_some(),
         non_associative: fields.friction == FrictionDto::NonAssociative,
+        fill: filled.fill.map(|f| (f, shape, filled.road)),
     })
 }
 

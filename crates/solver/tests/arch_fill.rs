@@ -183,3 +183,46 @@ fn dispersal_spreads_the_load_over_the_width_the_angle_gives() {
     let total: f64 = loads.iter().map(|l| l.fy).sum();
     assert!((total + 10.0).abs() < 1e-12);
 }
+
+#[test]
+fn a_road_load_beyond_the_springing_puts_only_its_share_on_the_arch() {
+    // Semicircle R = 10, D = 1 (extrados 10.5), road at 11.5, dispersal 30°, a point load at
+    // x = −12 (1.5 beyond the left springing). Its left line meets no arch; its right line
+    // y = 11.5 − √3·(x + 12) meets the extrados y = √(10.5² − x²) at x_c (bisection here). The
+    // load spreads uniformly over [−12, x_c]; the arch carries the part over [−10.5, x_c]:
+    // (x_c + 10.5)/(x_c + 12) of it (1e-6: the extrados is sampled; measured 2e-8).
+    let arch = semicircle(100, 10.0, 1.0).assembly();
+    let fill = Fill {
+        unit_weight: 1.0,
+        road: 11.5,
+        dispersal_angle_deg: 30.0,
+    };
+    let line = |x: f64| 11.5 - 3f64.sqrt() * (x + 12.0) - (10.5f64 * 10.5 - x * x).max(0.0).sqrt();
+    let (mut a, mut b) = (-10.5, 0.0);
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        if line(m) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    let xc = 0.5 * (a + b);
+    let share = (xc + 10.5) / (xc + 12.0);
+    let loads = road_load(
+        &arch,
+        ARC,
+        &fill,
+        RoadLoad {
+            x: -12.0,
+            fy: -1.0,
+            length: 0.0,
+        },
+    );
+    let carried: f64 = loads.iter().map(|l| -l.fy).sum();
+    assert!(
+        (carried - share).abs() < 1e-6,
+        "{carried} vs {share} (x_c = {xc})"
+    );
+    assert!(loads.iter().all(|l| l.point.0 <= xc + 0.5), "{loads:?}");
+}

@@ -14,6 +14,11 @@ use crate::polygon::polygon_area_centroid;
 /// Contact tolerance relative to the assembly's size.
 pub const CONTACT_TOLERANCE: f64 = 1e-7;
 
+/// Pairs of polygons whose boxes touch, at most.
+const MAX_PAIRS: usize = 1_000_000;
+/// Pairs of edges the contact search compares at most.
+const MAX_EDGE_PAIRS: usize = 50_000_000;
+
 type Point = (f64, f64);
 
 fn cross(o: Point, a: Point, b: Point) -> f64 {
@@ -264,10 +269,33 @@ impl Assembly {
                 }
                 if (i < n || j < n) && boxes_meet(&polygons[i], &polygons[j], tolerance) {
                     pairs.push((i.min(j), i.max(j)));
+                    if pairs.len() > MAX_PAIRS {
+                        return Err(ArchError::geometry(
+                            ArchParameter::Blocks,
+                            format!(
+                                "more than {MAX_PAIRS} pairs of polygons whose boxes touch: \
+                                 the polygons overlap, or there are too many"
+                            ),
+                        ));
+                    }
                 }
             }
         }
         pairs.sort_unstable();
+        // Edge pairs to compare: bounded, so that no input makes the check run for minutes.
+        let work: usize = pairs
+            .iter()
+            .map(|&(i, j)| polygons[i].points.len() * polygons[j].points.len())
+            .sum();
+        if work > MAX_EDGE_PAIRS {
+            return Err(ArchError::geometry(
+                ArchParameter::Blocks,
+                format!(
+                    "too many neighbouring edges to check for contacts ({work} pairs of edges in \
+                     touching boxes; at most {MAX_EDGE_PAIRS}): use fewer corners or blocks"
+                ),
+            ));
+        }
         for &(i, j) in &pairs {
             let (p, q) = (&polygons[i], &polygons[j]);
             let overlap = p.edges().any(|(a, b)| {

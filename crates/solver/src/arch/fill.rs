@@ -205,49 +205,87 @@ pub fn road_load(
     road_load_on(&ExtradosProfile::new(assembly, shape), fill, load)
 }
 
+impl ExtradosProfile {
+    /// The x range of the extrados.
+    fn x_range(&self) -> (f64, f64) {
+        self.ranges
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+                (a.min(r.0), b.max(r.1))
+            })
+    }
+
+    /// Where a line from (x0, road) going down and outward (`side` −1: left, +1: right) at the
+    /// dispersal angle first meets the extrados: the first x beyond x0 with
+    /// (road − y_e(x))·tan δ ≤ |x − x0|, found by scanning towards the arch's far end and
+    /// bisecting. Where there is no extrados (beyond the springings) the line meets nothing:
+    /// a line starting beyond the arch and going away from it ends at x0, one that passes over
+    /// the whole arch ends where it reaches the far springing's level (beyond the arch; what
+    /// falls there goes to the abutment).
+    fn meet(&self, fill: &Fill, x0: f64, side: f64) -> f64 {
+        const STEPS: usize = 256;
+        let tan = fill.dispersal_angle_deg.to_radians().tan();
+        if tan == 0.0 {
+            return x0;
+        }
+        let (x_lo, x_hi) = self.x_range();
+        // Above the line at x: positive while the line has not yet reached the extrados.
+        let above = |x: f64| {
+            let y = self.surface(x);
+            if y.is_finite() {
+                (fill.road - y) * tan - (x - x0).abs()
+            } else {
+                f64::INFINITY
+            }
+        };
+        let far = if side < 0.0 { x_lo } else { x_hi };
+        if (far - x0) * side <= 0.0 {
+            return x0;
+        }
+        let step = (far - x0) / STEPS as f64;
+        let mut previous = x0;
+        for k in 1..=STEPS {
+            let x = x0 + step * k as f64;
+            if above(x) <= 0.0 {
+                // Bisect on [previous, x], where the line crosses the extrados (or enters
+                // the arch already below its extrados: then at the springing).
+                let (mut a, mut b) = (previous, x);
+                for _ in 0..60 {
+                    let m = 0.5 * (a + b);
+                    if above(m) > 0.0 {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+                return 0.5 * (a + b);
+            }
+            previous = x;
+        }
+        // Over the whole arch without meeting it: on to the springing's level, beyond the arch.
+        let y_far = self.surface(far);
+        let y_far = if y_far.is_finite() { y_far } else { fill.road };
+        x0 + side * ((fill.road - y_far) * tan).max((far - x0).abs())
+    }
+
+    /// The two points where a road load's dispersal lines meet the extrados (for drawings);
+    /// outside the arch the line ends at the road's level.
+    pub fn dispersal_ends(&self, fill: &Fill, load: RoadLoad) -> [(f64, f64); 2] {
+        [(-1.0, -0.5), (1.0, 0.5)].map(|(side, half)| {
+            let x = self.meet(fill, load.x + half * load.length, side);
+            let y = self.surface(x);
+            (x, if y.is_finite() { y } else { fill.road })
+        })
+    }
+}
+
 /// [`road_load`] on an extrados sampled once (for many loads, as a rolling sweep has).
 pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> Vec<LiveLoad> {
     let blocks = &profile.blocks;
     let surface = |x: f64| profile.surface(x);
-    let (x_lo, x_hi) = profile
-        .ranges
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
-            (a.min(r.0), b.max(r.1))
-        });
-    let tan = fill.dispersal_angle_deg.to_radians().tan();
-    // Where a line from (x0, road) going down and outward (`side` −1: left, +1: right) meets
-    // the extrados: x = x0 + side·(road − y_e(x))·tan δ, by bisection on the extrados' range.
-    let meet = |x0: f64, side: f64| {
-        if tan == 0.0 {
-            return x0;
-        }
-        let g = |x: f64| {
-            let y = surface(x);
-            let y = if y.is_finite() { y } else { fill.road };
-            x - x0 - side * (fill.road - y) * tan
-        };
-        let (mut a, mut b) = if side < 0.0 {
-            (x_lo.min(x0), x0)
-        } else {
-            (x0, x_hi.max(x0))
-        };
-        let (ga, gb) = (g(a), g(b));
-        if ga * gb > 0.0 {
-            return if side < 0.0 { a } else { b };
-        }
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if (g(m) < 0.0) == (ga < 0.0) {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
-        0.5 * (a + b)
-    };
-    let left = meet(load.x - 0.5 * load.length, -1.0);
-    let right = meet(load.x + 0.5 * load.length, 1.0);
+    let (x_lo, x_hi) = profile.x_range();
+    let left = profile.meet(fill, load.x - 0.5 * load.length, -1.0);
+    let right = profile.meet(fill, load.x + 0.5 * load.length, 1.0);
     let width = right - left;
     let mut out = Vec::new();
     for (b, points) in blocks.iter().enumerate() {
