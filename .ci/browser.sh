@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
 # loads the page from a running release server with ?run=all, which submits the Milankovitch,
-# live-load, Spencer and section examples; the test reads the rendered DOM for the numbers and the four
-# drawings, and keeps a screenshot in target/ci-artifacts/page.png.
+# live-load, bridge (fill, passive, rolling), Spencer and section examples; the test reads the rendered
+# DOM for the numbers and the five drawings, and keeps a screenshot in target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -48,12 +48,13 @@ expect "load_factor: 22.99688965"
 # SPEC §2.3 / thesis: F = 1.06958 at 100 slices.
 expect "factor_of_safety: 1.06957"
 expect "morgenstern_price: "
+expect "solver: solved, assembly, 37 stops"
 drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer" src="blob:' <<< "$dom" || true) | wc -l)
-if [ "$drawings" -eq 4 ]; then echo "ok: four drawings"; else echo "FAILED: $drawings drawings, expected 4" >&2; failures=$((failures + 1)); fi
+if [ "$drawings" -eq 5 ]; then echo "ok: five drawings"; else echo "FAILED: $drawings drawings, expected 5" >&2; failures=$((failures + 1)); fi
 # Each drawing decoded: its onload recorded a non-zero naturalWidth (a broken SVG stays at 0).
 decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
-if [ "$decoded" -eq 4 ]; then echo "ok: four drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 4" >&2; failures=$((failures + 1)); fi
+if [ "$decoded" -eq 5 ]; then echo "ok: five drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 5" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
-passed=$((8 - failures))
+passed=$((9 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -25,6 +25,9 @@ pub struct Settings {
     /// Origins allowed by CORS, for dashboards in browsers; none by default, which sends no
     /// CORS headers (`THRUSTLINE_CORS_ORIGINS`, comma-separated, or `*`).
     pub cors_origins: Vec<String>,
+    /// How long open connections may finish after a shutdown signal before the process stops.
+    /// Defaults to 10 s (`THRUSTLINE_DRAIN_SECS`, 0 to 3600).
+    pub drain_timeout: Duration,
 }
 
 impl Default for Settings {
@@ -37,6 +40,7 @@ impl Default for Settings {
             solve_timeout: Duration::from_secs(30),
             token: None,
             cors_origins: Vec::new(),
+            drain_timeout: Duration::from_secs(10),
         }
     }
 }
@@ -67,15 +71,32 @@ impl Settings {
             settings.body_limit = n;
         }
         if let Some(seconds) = read::<f64>("THRUSTLINE_SOLVE_TIMEOUT_SECS")? {
-            if !(seconds.is_finite() && seconds > 0.0) {
-                return Err("THRUSTLINE_SOLVE_TIMEOUT_SECS must be a positive number".to_owned());
+            if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
+                return Err(
+                    "THRUSTLINE_SOLVE_TIMEOUT_SECS must be a number of seconds, 0 < s ≤ 86400"
+                        .to_owned(),
+                );
             }
             settings.solve_timeout = Duration::from_secs_f64(seconds);
         }
-        if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
-            if !token.is_empty() {
-                settings.token = Some(token);
+        if let Some(seconds) = read::<f64>("THRUSTLINE_DRAIN_SECS")? {
+            if !(seconds.is_finite() && (0.0..=3600.0).contains(&seconds)) {
+                return Err(
+                    "THRUSTLINE_DRAIN_SECS must be a number of seconds, 0 ≤ s ≤ 3600".to_owned(),
+                );
             }
+            settings.drain_timeout = Duration::from_secs_f64(seconds);
+        }
+        if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
+            // An empty token is a mistake, not "no authentication": refuse to start.
+            if token.trim().is_empty() {
+                return Err(
+                    "THRUSTLINE_TOKEN is set but empty: unset it to run without authentication, \
+                     or give a token"
+                        .to_owned(),
+                );
+            }
+            settings.token = Some(token);
         }
         if let Ok(origins) = std::env::var("THRUSTLINE_CORS_ORIGINS") {
             settings.cors_origins = origins

@@ -191,7 +191,7 @@ impl From<JsonRejection> for ApiError {
             JsonRejection::MissingJsonContentType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
             other => other.status(),
         };
-        let detail = in_plain_words(&rejection.body_text());
+        let detail = bounded(in_plain_words(&rejection.body_text()));
         let field = (status == StatusCode::UNPROCESSABLE_ENTITY)
             .then(|| data_error_field(&detail))
             .flatten();
@@ -220,6 +220,18 @@ fn data_error_field(detail: &str) -> Option<String> {
         (None, Some(name)) => Some(name.to_owned()),
         (Some(path), None) => Some(path.to_owned()),
         (None, None) => None,
+    }
+}
+
+/// Longest `detail` echoed from a client's input, in characters.
+const MAX_DETAIL: usize = 600;
+
+/// The detail cut to [`MAX_DETAIL`] characters (it may quote a client's input, which can be
+/// megabytes long).
+fn bounded(detail: String) -> String {
+    match detail.char_indices().nth(MAX_DETAIL) {
+        Some((end, _)) => format!("{}… (cut)", &detail[..end]),
+        None => detail,
     }
 }
 

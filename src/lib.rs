@@ -19,6 +19,7 @@ pub mod auth;
 pub mod config;
 pub mod error;
 pub mod fields;
+pub mod headers;
 pub mod health;
 pub mod limits;
 pub mod metrics;
@@ -139,8 +140,10 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
                 })
                 .on_failure(()),
         )
+        .layer(axum::middleware::from_fn(headers::security_headers))
         .layer(PropagateRequestIdLayer::new(request_id.clone()))
-        .layer(SetRequestIdLayer::new(request_id, SequentialRequestId::default()));
+        .layer(SetRequestIdLayer::new(request_id, SequentialRequestId::default()))
+        .layer(axum::middleware::from_fn(headers::bound_request_id));
     match cors(&settings.cors_origins) {
         Some(cors) => router.layer(cors),
         None => router,
@@ -217,7 +220,23 @@ pub async fn serve(
     shutdown: impl Future<Output = ()> + Send + 'static,
 ) -> std::io::Result<()> {
     let state = AppState::new(&settings);
-    axum::serve(listener, app(state, &settings))
-        .with_graceful_shutdown(shutdown)
-        .await
+    // The drain after the shutdown signal is bounded: a client that never finishes its request
+    // does not keep the process up (the orchestrator would kill it anyway).
+    let stopping = std::sync::Arc::new(tokio::sync::Notify::new());
+    let signalled = stopping.clone();
+    let server = axum::serve(listener, app(state, &settings)).with_graceful_shutdown(async move {
+        shutdown.await;
+        signalled.notify_one();
+    });
+    let drain = settings.drain_timeout;
+    tokio::select! {
+        result = server => result,
+        () = async move {
+            stopping.notified().await;
+            tokio::time::sleep(drain).await;
+        } => {
+            tracing::warn!(seconds = drain.as_secs_f64(), "connections still open after the drain time; stopping");
+            Ok(())
+        }
+    }
 }

@@ -16,8 +16,10 @@ Environment (read by `serve`):
   THRUSTLINE_MAX_RUNNING          solves running at once (default: the CPU count)
   THRUSTLINE_MAX_QUEUED           solves waiting for a worker before 503 (default 64)
   THRUSTLINE_BODY_LIMIT           largest request body in bytes (default 4194304)
-  THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a solve in seconds (default 30)
-  THRUSTLINE_TOKEN                bearer token required by every route but /healthz (default none)
+  THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a solve in seconds, up to 86400 (default 30)
+  THRUSTLINE_DRAIN_SECS           after SIGTERM, time open connections get, 0..3600 (default 10)
+  THRUSTLINE_TOKEN                bearer token required by every route but /healthz (default none;
+                                  set but empty refuses to start)
   THRUSTLINE_CORS_ORIGINS         comma-separated origins allowed by CORS, or * (default none)
   RUST_LOG                        log filter (default info)";
 

@@ -40,3 +40,24 @@ fn help_lists_every_environment_setting_the_service_reads() {
     }
     assert!(help.contains("RUST_LOG"));
 }
+
+#[test]
+fn settings_that_are_mistakes_stop_the_start_with_a_message() {
+    // Issue 18, item 7: an empty token used to leave the service open silently, and a timeout
+    // of 1e19 s panicked after "listening". Both now refuse to start, saying why.
+    for (name, value, says) in [
+        ("THRUSTLINE_TOKEN", "", "THRUSTLINE_TOKEN"),
+        ("THRUSTLINE_SOLVE_TIMEOUT_SECS", "1e19", "86400"),
+        ("THRUSTLINE_DRAIN_SECS", "-1", "THRUSTLINE_DRAIN_SECS"),
+    ] {
+        let output = Command::new(env!("CARGO_BIN_EXE_thrustline"))
+            .args(["serve", "--addr", "127.0.0.1:0"])
+            .env(name, value)
+            .output()
+            .unwrap();
+        assert!(!output.status.success(), "{name}={value:?} started");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains(says), "{name}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+    }
+}

@@ -192,3 +192,28 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
     );
     assert_eq!(answer["friction_may_overestimate"], false);
 }
+
+#[tokio::test]
+async fn a_very_high_friction_coefficient_is_no_sliding() {
+    // Issue 18, item 5: μ up to the documented 1e6 answers like no sliding at all (was
+    // `reduced_accuracy` and no factor from μ ≈ 8000 on). 1e-7: the solver tolerance.
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+                      "loads": [{"block": 26, "fy": -1}]});
+    let (status, _, bare) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{bare}");
+    let reference = bare["load_factor"].as_f64().unwrap();
+    for mu in [8000.0, 1e5, 1e6] {
+        let mut with = body.clone();
+        with["friction_coefficient"] = json!(mu);
+        let (status, _, answer) = server.post("/arch/live-load", &with).await;
+        assert_eq!(status, 200, "{answer}");
+        assert_eq!(answer["solver"]["status"], "solved", "μ = {mu}: {answer}");
+        let lambda = answer["load_factor"].as_f64().unwrap();
+        assert!(
+            (lambda - reference).abs() < 1e-7 * reference,
+            "μ = {mu}: {lambda} vs {reference}"
+        );
+        assert_eq!(answer["friction_may_overestimate"], false);
+    }
+}

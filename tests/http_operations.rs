@@ -229,3 +229,76 @@ async fn graceful_shutdown_finishes_the_request_in_flight() {
         .await
         .is_err());
 }
+
+#[tokio::test]
+async fn a_client_holding_a_partial_request_does_not_stop_the_shutdown() {
+    // Issue 18, item 1: `printf 'GET /'` on a kept-open socket used to keep the process up.
+    use std::io::Write;
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let (stop, stopped) = tokio::sync::oneshot::channel::<()>();
+    let settings = thrustline::Settings {
+        drain_timeout: std::time::Duration::from_millis(300),
+        ..Default::default()
+    };
+    let server = tokio::spawn(thrustline::serve(listener, settings, async {
+        let _ = stopped.await;
+    }));
+    let mut socket = std::net::TcpStream::connect(addr).unwrap();
+    socket.write_all(b"GET /").unwrap();
+    tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+    stop.send(()).unwrap();
+    tokio::time::timeout(std::time::Duration::from_secs(5), server)
+        .await
+        .expect("the server stops within the drain time")
+        .unwrap()
+        .unwrap();
+    drop(socket);
+}
+
+#[tokio::test]
+async fn answers_carry_safe_headers_and_bounded_ids() {
+    // Issue 18, items 6–8: nosniff everywhere, no-store on computed answers, a policy on the
+    // page; a 100 KB request id is replaced, not echoed; a 1 MB unknown key is not echoed whole;
+    // the scheme of the token is case-insensitive.
+    let server = Server::start_with(thrustline::Settings {
+        token: Some("s3cret".to_owned()),
+        ..Default::default()
+    })
+    .await;
+    let url = format!("{}/slope/spencer", server.base);
+    let answer = server
+        .client
+        .post(&url)
+        .header("authorization", "bearer s3cret")
+        .header("x-request-id", "x".repeat(100_000))
+        .json(&spencer_example())
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(answer.status().as_u16(), 200);
+    let headers = answer.headers();
+    assert_eq!(headers["x-content-type-options"], "nosniff");
+    assert_eq!(headers["cache-control"], "no-store");
+    assert!(headers["x-request-id"].len() <= 128);
+    let page = server
+        .client
+        .get(format!("{}/", server.base))
+        .send()
+        .await
+        .unwrap();
+    let policy = page.headers()["content-security-policy"].to_str().unwrap();
+    assert!(policy.contains("frame-ancestors 'none'"), "{policy}");
+    let mut body = spencer_example();
+    body["x".repeat(1_000_000)] = json!(1);
+    let answer = server
+        .client
+        .post(&url)
+        .header("authorization", "Bearer s3cret")
+        .json(&body)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(answer.status().as_u16(), 422);
+    assert!(answer.text().await.unwrap().len() < 10_000);
+}

@@ -117,10 +117,16 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
             }
         } else if let Some(mu) = friction {
             // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
-            // −v ≤ 0; only where friction is finite.
+            // −v ≤ 0; only where friction is finite. Divided by μ when μ > 1, so that a large μ
+            // does not make the row (and the programme) badly scaled.
+            let scale = 1.0 / mu.max(1.0);
             for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
                 rows.push(Row {
-                    entries: [(col, -mu), (col + 1, -mu), (col + 2, t_sign)],
+                    entries: [
+                        (col, -mu * scale),
+                        (col + 1, -mu * scale),
+                        (col + 2, t_sign * scale),
+                    ],
                     len: 3,
                     b: 0.0,
                     tag: LimitTag {
