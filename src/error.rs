@@ -9,6 +9,7 @@ use axum::extract::rejection::JsonRejection;
 use axum::extract::FromRequest;
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 use utoipa::ToSchema;
 
@@ -261,10 +262,79 @@ fn in_plain_words(detail: &str) -> String {
     text
 }
 
-/// `axum::Json` whose rejections are problem+json.
-#[derive(Debug, FromRequest)]
-#[from_request(via(axum::Json), rejection(ApiError))]
+/// `axum::Json` whose rejections are problem+json, and which takes an object only where the
+/// request type has one: serde reads a struct from a JSON array too (`"interface_limits":
+/// [null, null]` as q_min = null, tension allowed), which changes the physics. The body is read
+/// as JSON, deserialised with the path of any error, and compared with the request as it
+/// serialises back: an array where the request has an object is 422 naming it.
+#[derive(Debug)]
 pub struct ApiJson<T>(pub T);
+
+impl<T, S> FromRequest<S> for ApiJson<T>
+where
+    T: DeserializeOwned + Serialize,
+    S: Send + Sync,
+{
+    type Rejection = ApiError;
+
+    async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
+        let axum::Json(value) =
+            axum::Json::<serde_json::Value>::from_request(request, state).await?;
+        let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
+            let detail = bounded(in_plain_words(&format!(
+                "Failed to deserialize the JSON body into the target type: {e}"
+            )));
+            let field = data_error_field(&detail);
+            ApiError::BadRequest {
+                status: StatusCode::UNPROCESSABLE_ENTITY,
+                detail,
+                field,
+            }
+        })?;
+        if let Ok(back) = serde_json::to_value(&typed) {
+            if let Some(path) = array_for_object(&value, &back, String::new()) {
+                let field = if path.is_empty() {
+                    "body".to_owned()
+                } else {
+                    path
+                };
+                return Err(ApiError::BadRequest {
+                    status: StatusCode::UNPROCESSABLE_ENTITY,
+                    detail: format!("{field}: expected an object, found an array"),
+                    field: Some(field),
+                });
+            }
+        }
+        Ok(Self(typed))
+    }
+}
+
+/// The path of the first array in `input` where `typed` (the request serialised back) has an
+/// object.
+fn array_for_object(
+    input: &serde_json::Value,
+    typed: &serde_json::Value,
+    path: String,
+) -> Option<String> {
+    use serde_json::Value;
+    match (input, typed) {
+        (Value::Array(_), Value::Object(_)) => Some(path),
+        (Value::Object(given), Value::Object(back)) => given.iter().find_map(|(key, v)| {
+            let inner = if path.is_empty() {
+                key.clone()
+            } else {
+                format!("{path}.{key}")
+            };
+            back.get(key).and_then(|w| array_for_object(v, w, inner))
+        }),
+        (Value::Array(given), Value::Array(back)) => given
+            .iter()
+            .zip(back)
+            .enumerate()
+            .find_map(|(i, (v, w))| array_for_object(v, w, format!("{path}[{i}]"))),
+        _ => None,
+    }
+}
 
 impl<T: Serialize> IntoResponse for ApiJson<T> {
     fn into_response(self) -> Response {

@@ -302,3 +302,48 @@ async fn answers_carry_safe_headers_and_bounded_ids() {
     assert_eq!(answer.status().as_u16(), 422);
     assert!(answer.text().await.unwrap().len() < 10_000);
 }
+
+#[tokio::test]
+async fn arrays_are_not_read_as_objects() {
+    // Issue 18, item 4: `"interface_limits": [null, null]` was read as q_min = null (tension
+    // allowed) and answered `stable: true` for an arch that falls; any object given as an
+    // array is now 422 naming it.
+    let server = Server::start().await;
+    let arch = json!({"kind": "circular", "radius": 10, "thickness": 0.5, "voussoirs": 100});
+    let cases = [
+        (
+            "/arch/dead-load",
+            json!({"geometry": arch, "interface_limits": [null, null]}),
+            "interface_limits",
+        ),
+        (
+            "/arch/dead-load",
+            json!({"geometry": ["circular", 10, 0.5, 100]}),
+            "geometry",
+        ),
+        (
+            "/arch/live-load",
+            json!({"geometry": arch, "loads": [[5, null, null, 0, -1]]}),
+            "loads[0]",
+        ),
+        (
+            "/slope/spencer",
+            json!({"slope": [10, 20], "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}, "circle": {"x": 5, "y": 20}}),
+            "slope",
+        ),
+        ("/arch/dead-load", json!([{"kind": "circular"}]), "body"),
+    ];
+    for (path, body, field) in cases {
+        let (status, content_type, answer) = server.post(path, &body).await;
+        common::assert_problem(status, &content_type, &answer, 422, field);
+    }
+    // The same limits as an object are fine.
+    let (status, _, answer) = server
+        .post(
+            "/arch/dead-load",
+            &json!({"geometry": arch, "interface_limits": {}}),
+        )
+        .await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["stable"], false);
+}
