@@ -28,6 +28,16 @@ pub struct Settings {
     /// How long open connections may finish after a shutdown signal before the process stops.
     /// Defaults to 10 s (`THRUSTLINE_DRAIN_SECS`, 0 to 3600).
     pub drain_timeout: Duration,
+    /// Time a client has to send a request's head once its connection is ready for one (idle
+    /// keep-alive connections close after it too). Defaults to 10 s
+    /// (`THRUSTLINE_HEADER_TIMEOUT_SECS`, 0.1 to 3600).
+    pub header_timeout: Duration,
+    /// Time a client has to send a request's body. Defaults to 30 s
+    /// (`THRUSTLINE_BODY_TIMEOUT_SECS`, 0.1 to 3600).
+    pub body_timeout: Duration,
+    /// Open connections at most; more are closed on accept. Defaults to 1024
+    /// (`THRUSTLINE_MAX_CONNECTIONS`).
+    pub max_connections: usize,
 }
 
 impl Default for Settings {
@@ -41,6 +51,9 @@ impl Default for Settings {
             token: None,
             cors_origins: Vec::new(),
             drain_timeout: Duration::from_secs(10),
+            header_timeout: Duration::from_secs(10),
+            body_timeout: Duration::from_secs(30),
+            max_connections: 1024,
         }
     }
 }
@@ -86,6 +99,25 @@ impl Settings {
                 );
             }
             settings.drain_timeout = Duration::from_secs_f64(seconds);
+        }
+        for (name, target) in [
+            (
+                "THRUSTLINE_HEADER_TIMEOUT_SECS",
+                &mut settings.header_timeout,
+            ),
+            ("THRUSTLINE_BODY_TIMEOUT_SECS", &mut settings.body_timeout),
+        ] {
+            if let Some(seconds) = read::<f64>(name)? {
+                if !(seconds.is_finite() && (0.1..=3600.0).contains(&seconds)) {
+                    return Err(format!(
+                        "{name} must be a number of seconds, 0.1 ≤ s ≤ 3600"
+                    ));
+                }
+                *target = Duration::from_secs_f64(seconds);
+            }
+        }
+        if let Some(n) = read::<usize>("THRUSTLINE_MAX_CONNECTIONS")? {
+            settings.max_connections = n.max(1);
         }
         if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
             // An empty token is a mistake, not "no authentication": refuse to start.

@@ -117,6 +117,9 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .method_not_allowed_fallback(method_not_allowed)
         .layer(axum::middleware::from_fn_with_state(state, auth::require_token))
         .layer(DefaultBodyLimit::max(settings.body_limit))
+        .layer(tower_http::timeout::RequestBodyTimeoutLayer::new(
+            settings.body_timeout,
+        ))
         .layer(CatchPanicLayer::custom(|_| {
             error::ApiError::Internal("a handler panicked".to_owned()).into_response()
         }))
@@ -220,23 +223,53 @@ pub async fn serve(
     shutdown: impl Future<Output = ()> + Send + 'static,
 ) -> std::io::Result<()> {
     let state = AppState::new(&settings);
+    let app = app(state, &settings);
+    // HTTP/1.1 with a timer: a client must send a request's head within `header_timeout` of
+    // the connection becoming ready for it (so idle keep-alive connections close too).
+    let mut http = hyper::server::conn::http1::Builder::new();
+    http.timer(hyper_util::rt::TokioTimer::new())
+        .header_read_timeout(settings.header_timeout);
+    let graceful = hyper_util::server::graceful::GracefulShutdown::new();
+    let connections = std::sync::Arc::new(tokio::sync::Semaphore::new(settings.max_connections));
+    let mut shutdown = std::pin::pin!(shutdown);
+    loop {
+        let (stream, _) = tokio::select! {
+            accepted = listener.accept() => match accepted {
+                Ok(accepted) => accepted,
+                Err(error) => {
+                    // Out of file descriptors and the like: wait, do not spin.
+                    tracing::warn!(%error, "accept failed");
+                    tokio::time::sleep(Duration::from_millis(50)).await;
+                    continue;
+                }
+            },
+            () = &mut shutdown => break,
+        };
+        // Over the connection cap: closed at once (the client may retry).
+        let Ok(permit) = connections.clone().try_acquire_owned() else {
+            tracing::warn!("connection refused: at the connection cap");
+            continue;
+        };
+        let service = hyper_util::service::TowerToHyperService::new(app.clone());
+        // No upgrades (no websockets here): a plain connection, which the drain can close.
+        let connection = http.serve_connection(hyper_util::rt::TokioIo::new(stream), service);
+        let connection = graceful.watch(connection);
+        tokio::spawn(async move {
+            let _ = connection.await;
+            drop(permit);
+        });
+    }
+    drop(listener);
     // The drain after the shutdown signal is bounded: a client that never finishes its request
     // does not keep the process up (the orchestrator would kill it anyway).
-    let stopping = std::sync::Arc::new(tokio::sync::Notify::new());
-    let signalled = stopping.clone();
-    let server = axum::serve(listener, app(state, &settings)).with_graceful_shutdown(async move {
-        shutdown.await;
-        signalled.notify_one();
-    });
-    let drain = settings.drain_timeout;
     tokio::select! {
-        result = server => result,
-        () = async move {
-            stopping.notified().await;
-            tokio::time::sleep(drain).await;
-        } => {
-            tracing::warn!(seconds = drain.as_secs_f64(), "connections still open after the drain time; stopping");
-            Ok(())
+        () = graceful.shutdown() => {}
+        () = tokio::time::sleep(settings.drain_timeout) => {
+            tracing::warn!(
+                seconds = settings.drain_timeout.as_secs_f64(),
+                "connections still open after the drain time; stopping"
+            );
         }
     }
+    Ok(())
 }

@@ -18,6 +18,9 @@ Environment (read by `serve`):
   THRUSTLINE_BODY_LIMIT           largest request body in bytes (default 4194304)
   THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a solve in seconds, up to 86400 (default 30)
   THRUSTLINE_DRAIN_SECS           after SIGTERM, time open connections get, 0..3600 (default 10)
+  THRUSTLINE_HEADER_TIMEOUT_SECS  time to send a request head (and idle keep-alive), default 10
+  THRUSTLINE_BODY_TIMEOUT_SECS    time to send a request body, 0.1..3600 (default 30)
+  THRUSTLINE_MAX_CONNECTIONS      open connections at most (default 1024)
   THRUSTLINE_TOKEN                bearer token required by every route but /healthz (default none;
                                   set but empty refuses to start)
   THRUSTLINE_CORS_ORIGINS         comma-separated origins allowed by CORS, or * (default none)

@@ -347,3 +347,89 @@ async fn arrays_are_not_read_as_objects() {
     assert_eq!(status, 200, "{answer}");
     assert_eq!(answer["stable"], false);
 }
+
+#[tokio::test]
+async fn slow_and_idle_clients_are_cut_off() {
+    // Issue 18, item 2: a client that never finishes its request head, or stays idle on a
+    // kept-alive connection, is disconnected after the header timeout; a body that never
+    // arrives is refused after the body timeout; connections beyond the cap are closed at once.
+    use std::io::{Read, Write};
+    let settings = thrustline::Settings {
+        header_timeout: std::time::Duration::from_millis(300),
+        body_timeout: std::time::Duration::from_millis(300),
+        ..Default::default()
+    };
+    let server = Server::start_with(settings).await;
+    let addr = server.base.trim_start_matches("http://").to_owned();
+    let closed_within = |mut socket: std::net::TcpStream, seconds: u64| {
+        socket
+            .set_read_timeout(Some(std::time::Duration::from_secs(seconds)))
+            .unwrap();
+        let mut buffer = Vec::new();
+        // A closed connection ends the read (Ok); a timeout is an error.
+        socket.read_to_end(&mut buffer).is_ok()
+    };
+    let partial_head = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || {
+            let mut socket = std::net::TcpStream::connect(addr).unwrap();
+            socket
+                .write_all(b"GET /healthz HTTP/1.1\r\nHost: x\r\n")
+                .unwrap();
+            closed_within(socket, 5)
+        }
+    });
+    assert!(
+        partial_head.await.unwrap(),
+        "a partial head keeps its connection"
+    );
+    let idle = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || {
+            let socket = std::net::TcpStream::connect(addr).unwrap();
+            closed_within(socket, 5)
+        }
+    });
+    assert!(idle.await.unwrap(), "an idle connection stays open");
+    let slow_body = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || {
+            let mut socket = std::net::TcpStream::connect(addr).unwrap();
+            socket
+                .write_all(
+                    b"POST /slope/spencer HTTP/1.1\r\nHost: x\r\ncontent-type: application/json\r\ncontent-length: 100\r\n\r\n{",
+                )
+                .unwrap();
+            socket
+                .set_read_timeout(Some(std::time::Duration::from_secs(5)))
+                .unwrap();
+            let mut answer = [0u8; 12];
+            socket.read_exact(&mut answer).map(|()| answer.to_vec())
+        }
+    });
+    let answer = slow_body.await.unwrap().expect("an answer before 5 s");
+    assert!(
+        answer.starts_with(b"HTTP/1.1 4"),
+        "{}",
+        String::from_utf8_lossy(&answer)
+    );
+    // The cap: four idle connections held, the fifth is closed at once (long before the
+    // header timeout of this second server).
+    let server = Server::start_with(thrustline::Settings {
+        header_timeout: std::time::Duration::from_secs(20),
+        max_connections: 4,
+        ..Default::default()
+    })
+    .await;
+    let addr = server.base.trim_start_matches("http://").to_owned();
+    let held: Vec<_> = (0..4)
+        .map(|_| std::net::TcpStream::connect(&addr).unwrap())
+        .collect();
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    let fifth = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || closed_within(std::net::TcpStream::connect(addr).unwrap(), 1)
+    });
+    assert!(fifth.await.unwrap(), "the fifth connection was kept");
+    drop(held);
+}
