@@ -24,6 +24,8 @@ impl axum::response::IntoResponse for Svg {
 /// Width of every drawing in pixels.
 pub const WIDTH: f64 = 800.0;
 const MARGIN: f64 = 60.0;
+/// Points closer than this many pixels to the last one drawn are left out of a line.
+const DETAIL: f64 = 0.75;
 
 /// A picture of the region [x0, x1] × [y0, y1] of the section, y up.
 pub struct Canvas {
@@ -100,25 +102,41 @@ impl Canvas {
         self.body.push('\n');
     }
 
-    /// A closed polygon.
+    /// A closed polygon (points closer than [`DETAIL`] pixels to the last one drawn left out).
     pub fn polygon(&mut self, points: &[(f64, f64)], style: &str) {
         let mut d = String::new();
-        for &p in points {
+        let mut last: Option<(f64, f64)> = None;
+        for (i, &p) in points.iter().enumerate() {
             let (x, y) = self.px(p);
+            let end = i + 1 == points.len();
+            if last.is_some_and(|l| (l.0 - x).hypot(l.1 - y) < DETAIL) && !end {
+                continue;
+            }
+            last = Some((x, y));
             let _ = write!(d, "{x:.2},{y:.2} ");
         }
         self.raw(&format!("<polygon points=\"{}\" {style}/>", d.trim_end()));
     }
 
-    /// An open polyline; non-finite points break it.
+    /// An open polyline; non-finite points break it (points closer than [`DETAIL`] pixels to
+    /// the last one drawn left out, the ends kept).
     pub fn polyline(&mut self, points: &[(f64, f64)], style: &str) {
         let mut runs: Vec<String> = vec![String::new()];
-        for &p in points {
+        let mut last: Option<(f64, f64)> = None;
+        for (i, &p) in points.iter().enumerate() {
             if p.0.is_finite() && p.1.is_finite() {
                 let (x, y) = self.px(p);
+                let next_breaks = points
+                    .get(i + 1)
+                    .is_none_or(|q| !(q.0.is_finite() && q.1.is_finite()));
+                if last.is_some_and(|l| (l.0 - x).hypot(l.1 - y) < DETAIL) && !next_breaks {
+                    continue;
+                }
+                last = Some((x, y));
                 let _ = write!(runs.last_mut().expect("never empty"), "{x:.2},{y:.2} ");
             } else if !runs.last().is_some_and(String::is_empty) {
                 runs.push(String::new());
+                last = None;
             }
         }
         // Unfilled unless the style says otherwise: an attribute written twice makes the whole

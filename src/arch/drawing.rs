@@ -8,6 +8,9 @@ use super::fill::RollingOutDto;
 use super::response::SolvedArch;
 use crate::svg::{escape, Canvas, WIDTH};
 
+/// Chains of more blocks than this are drawn as one outline.
+const MERGED_ABOVE: usize = 200;
+
 /// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
 fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
     if !curved || corners.len() != 4 {
@@ -101,11 +104,39 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     } else {
         "0.8"
     };
-    for o in &outlines {
-        canvas.polygon(
-            o,
-            &format!("fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"{thin}\""),
+    if chain && assembly.blocks.len() > MERGED_ABOVE {
+        // Blocks too small to see one by one: the ring as one outline (extrados out, intrados
+        // back), with every tenth joint marked.
+        let mut ring: Vec<(f64, f64)> = assembly
+            .blocks
+            .iter()
+            .flat_map(|b| [b.corners[1], b.corners[2]])
+            .collect();
+        ring.extend(
+            assembly
+                .blocks
+                .iter()
+                .rev()
+                .flat_map(|b| [b.corners[3], b.corners[0]]),
         );
+        canvas.polygon(
+            &ring,
+            "fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"0.8\"",
+        );
+        let step = assembly.blocks.len() / 10;
+        for i in assembly.interfaces.iter().step_by(step.max(1)) {
+            canvas.polyline(
+                &[i.intrados, i.extrados],
+                "stroke=\"#8d6e63\" stroke-width=\"0.5\"",
+            );
+        }
+    } else {
+        for o in &outlines {
+            canvas.polygon(
+                o,
+                &format!("fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"{thin}\""),
+            );
+        }
     }
     // The collapse mechanism: blocks displaced by 8 % of the span at the fastest corner; each
     // block dashed when there are few, the displaced intrados and extrados when there are many.
