@@ -257,13 +257,37 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
         );
     }
-    // The line of thrust on the slice boundaries.
+    // The line of thrust on the slice boundaries, broken where a point leaves its slice (an
+    // inter-slice force near zero puts it anywhere): those points are marked with a ring.
     let thrust: Vec<(f64, f64)> = solution
         .thrust_line
         .iter()
-        .map(|t| (solved.problem.request_x(t.x), t.y.unwrap_or(f64::NAN)))
+        .map(|t| match t.y {
+            Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+            _ => (f64::NAN, f64::NAN),
+        })
         .collect();
     canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
+    let outside = solution
+        .thrust_line
+        .iter()
+        .filter(|t| !t.is_inside_slice)
+        .count();
+    if outside > 0 {
+        for t in solution.thrust_line.iter().filter(|t| !t.is_inside_slice) {
+            // At the ground on that boundary: where the line would leave the mass.
+            let x = solved.problem.request_x(t.x);
+            canvas.dot(
+                (x, solved.problem.ground_y(t.x)),
+                3.0,
+                "fill=\"none\" stroke=\"#c62828\" stroke-width=\"1\"",
+            );
+        }
+        legend.push((
+            &"#c62828",
+            format!("○ {outside} boundaries where the line of thrust leaves its slice (not drawn)"),
+        ));
+    }
     let has_water = solution
         .thrust_line
         .iter()
