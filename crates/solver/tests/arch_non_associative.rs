@@ -156,3 +156,47 @@ fn dead_load_with_friction_too_low_is_not_carried_either_way() {
     assert!(o.settled);
     assert!(!o.associative_may_overestimate());
 }
+
+#[test]
+fn the_semicircle_at_its_minimum_thickness_needs_the_published_friction() {
+    // SPEC §5.6 (Cocchetti, Colasante & Rizzi 2011, true centroids): at the minimum thickness
+    // the purely rotational mechanism needs μ ≥ 0.395, and below μ = 0.309 the arch slides at
+    // its springings. Just above Milankovitch's thickness (D/R = 0.10748, N = 1800): with
+    // μ = 0.40 it stands, with 0.39 it does not; with μ = 0.30 it falls, sliding at both
+    // springings, and friction that cannot dilate does no better.
+    let arch = CircularArch::new(
+        10.0,
+        1.0748,
+        NonZeroUsize::new(1800).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Curved,
+    )
+    .unwrap();
+    let problem = |mu: f64| {
+        ArchProblem::new(
+            arch.assembly(),
+            1.0,
+            InterfaceLimits::heyman(),
+            Some(mu),
+            vec![],
+        )
+        .unwrap()
+    };
+    let settings = LimitSettings::default();
+    let stands = solve_dead_load(&problem(0.40), &settings);
+    assert_eq!(stands.load_factor, Some(1.0));
+    // The threshold lies between 0.39 and 0.40, as the published 0.395 says.
+    let falls = solve_dead_load(&problem(0.39), &settings);
+    assert!(falls.load_factor.unwrap() < 1.0);
+    let slides = solve_dead_load_non_associative(&problem(0.30), &settings, false);
+    assert!(slides.associative.load_factor.unwrap() < 1.0);
+    let m = slides.associative.mechanism.as_ref().unwrap();
+    assert!(
+        m.sliding.contains(&0) && m.sliding.contains(&1800),
+        "{:?}",
+        m.sliding
+    );
+    assert!(slides.settled);
+    assert!(slides.solution.load_factor.unwrap() < 1.0);
+}
