@@ -7,9 +7,11 @@
 //!   than visible ASCII, is replaced by one of the service's (it is echoed and logged).
 
 use axum::extract::Request;
-use axum::http::{header, HeaderValue, Method};
+use axum::http::{header, HeaderValue, Method, StatusCode};
 use axum::middleware::Next;
-use axum::response::Response;
+use axum::response::{IntoResponse, Response};
+
+use crate::error::ApiError;
 
 /// Longest client request id kept, in bytes.
 pub const MAX_REQUEST_ID: usize = 128;
@@ -25,6 +27,44 @@ pub async fn bound_request_id(mut request: Request, next: Next) -> Response {
     });
     if !keep {
         request.headers_mut().remove("x-request-id");
+    }
+    next.run(request).await
+}
+
+/// Refuses, before any of the body is read, what the service cannot take: a compressed body
+/// (415: it reads JSON as sent, no `Content-Encoding`), and a `Content-Length` over the body
+/// limit (413 — also before `Expect: 100-continue` is answered with 100).
+pub async fn refuse_early(
+    axum::extract::State(body_limit): axum::extract::State<usize>,
+    request: Request,
+    next: Next,
+) -> Response {
+    let headers = request.headers();
+    let encoded = headers
+        .get(header::CONTENT_ENCODING)
+        .and_then(|v| v.to_str().ok())
+        .is_some_and(|v| !v.trim().eq_ignore_ascii_case("identity"));
+    if encoded {
+        return ApiError::BadRequest {
+            status: StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            detail: "compressed request bodies are not accepted: send the JSON as it is \
+                     (no Content-Encoding)"
+                .to_owned(),
+            field: None,
+        }
+        .into_response();
+    }
+    let length = headers
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.trim().parse::<u64>().ok());
+    if length.is_some_and(|n| n > body_limit as u64) {
+        return ApiError::BadRequest {
+            status: StatusCode::PAYLOAD_TOO_LARGE,
+            detail: format!("the body is larger than the limit of {body_limit} bytes"),
+            field: None,
+        }
+        .into_response();
     }
     next.run(request).await
 }

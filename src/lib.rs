@@ -117,6 +117,10 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .method_not_allowed_fallback(method_not_allowed)
         .layer(axum::middleware::from_fn_with_state(state, auth::require_token))
         .layer(DefaultBodyLimit::max(settings.body_limit))
+        .layer(axum::middleware::from_fn_with_state(
+            settings.body_limit,
+            headers::refuse_early,
+        ))
         .layer(tower_http::timeout::RequestBodyTimeoutLayer::new(
             settings.body_timeout,
         ))

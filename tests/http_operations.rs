@@ -433,3 +433,40 @@ async fn slow_and_idle_clients_are_cut_off() {
     assert!(fifth.await.unwrap(), "the fifth connection was kept");
     drop(held);
 }
+
+#[tokio::test]
+async fn compressed_and_oversized_bodies_are_refused_before_they_are_read() {
+    // Issue 18, item 10: a gzip body was 400 (415 is right); `Expect: 100-continue` with an
+    // over-limit Content-Length got `100 Continue` before its 413.
+    use std::io::{Read, Write};
+    let server = Server::start().await;
+    let answer = server
+        .client
+        .post(format!("{}/slope/spencer", server.base))
+        .header("content-type", "application/json")
+        .header("content-encoding", "gzip")
+        .body(vec![0x1f, 0x8b, 0x08, 0x00])
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(answer.status().as_u16(), 415);
+    let addr = server.base.trim_start_matches("http://").to_owned();
+    let first_line = tokio::task::spawn_blocking(move || {
+        let mut socket = std::net::TcpStream::connect(addr).unwrap();
+        socket
+            .write_all(
+                b"POST /slope/spencer HTTP/1.1\r\nHost: x\r\ncontent-type: application/json\r\n\
+                  content-length: 999999999\r\nexpect: 100-continue\r\n\r\n",
+            )
+            .unwrap();
+        socket
+            .set_read_timeout(Some(std::time::Duration::from_secs(5)))
+            .unwrap();
+        let mut answer = [0u8; 12];
+        socket.read_exact(&mut answer).unwrap();
+        String::from_utf8_lossy(&answer).into_owned()
+    })
+    .await
+    .unwrap();
+    assert_eq!(first_line, "HTTP/1.1 413");
+}

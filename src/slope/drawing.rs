@@ -312,6 +312,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         (Some(f), Some(theta)) => {
             let bishop = solution
                 .bishop_factor_of_safety
+                .filter(|b| b.is_finite())
                 .map_or(String::new(), |b| format!("; Bishop {b:.4}"));
             format!(
                 "F = {f:.4}, θ = {:.2}° (Spencer){bishop}",
