@@ -32,10 +32,11 @@ pub enum RingJointsDto {
 /// A polygon: a block or a support of an assembly.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
+#[schema(examples(json!({"polygon": [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]})))]
 pub struct PolygonDto {
     /// Corners [x, y], 3 to 256, in either direction (clockwise ones are turned round);
     /// convex or not, not self-intersecting.
-    #[schema(min_items = 3, max_items = 256, examples(json!([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])))]
+    #[schema(min_items = 3, max_items = 256)]
     pub polygon: Vec<[f64; 2]>,
 }
 
