@@ -65,7 +65,7 @@ fn span_blocks(
     let half = |j: usize| {
         // The angle of half-voussoir step j (0..=2n).
         let whole = arch.interface_angle_deg(j / 2);
-        if j % 2 == 0 {
+        if j.is_multiple_of(2) {
             whole
         } else {
             0.5 * (whole + arch.interface_angle_deg(j / 2 + 1))
