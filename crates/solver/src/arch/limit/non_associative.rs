@@ -16,6 +16,7 @@
 //! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
 
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus};
+use crate::arch::equilibrium::force_scale;
 use crate::arch::mechanism::Mechanism;
 
 /// Steps at most.
@@ -30,7 +31,8 @@ const SETTLED: f64 = 1e-7;
 /// The outcome of the iteration.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NonAssociative {
-    /// The last step's solution (the answer when `settled`).
+    /// The last step's solution (the answer when `settled`); its solver figures are that
+    /// step's own, the whole iteration's are in `totals`.
     pub solution: LimitSolution,
     /// The associative solution the iteration started from.
     pub associative: LimitSolution,
@@ -127,9 +129,13 @@ pub fn iterate<E>(
             totals: single,
         });
     }
-    let weight: f64 = problem.assembly().total_area() * problem.unit_weight()
-        + problem.dead_loads().iter().map(|l| l.fy.abs()).sum::<f64>();
-    let tolerance = SETTLED * weight.max(f64::MIN_POSITIVE);
+    // The programmes' own force scale W: the blocks' and the other dead loads' weight.
+    let weight = force_scale(
+        problem.assembly(),
+        problem.unit_weight(),
+        problem.dead_loads(),
+    );
+    let tolerance = SETTLED * weight;
     let mut used = normal_forces(&associative);
     let mut corrected = None;
     let mut last = associative.clone();
@@ -150,8 +156,6 @@ pub fn iterate<E>(
         let normal = normal_forces(&step);
         last = step;
         if shear <= tolerance && moved <= tolerance {
-            last.iterations = iterations;
-            last.programmes = programmes;
             return Ok(NonAssociative {
                 solution: last,
                 associative,
@@ -165,8 +169,6 @@ pub fn iterate<E>(
             *u += RELAXATION * (n - *u);
         }
     }
-    last.iterations = iterations;
-    last.programmes = programmes;
     Ok(NonAssociative {
         solution: last,
         associative,
