@@ -4,6 +4,8 @@ against the published values (SPEC §1.4, §2.3) — what an integrator's first 
 
 Usage: python3 .ci/client_check.py BASE_URL GENERATED_CLIENT_DIR
 """
+import json
+import pathlib
 import sys
 
 base_url, generated = sys.argv[1], sys.argv[2]
@@ -15,7 +17,7 @@ from thrustline_client.api.arch import (  # noqa: E402
 from thrustline_client.api.service import healthz  # noqa: E402
 from thrustline_client.api.slope import spencer, spencer_svg  # noqa: E402
 from thrustline_client.models import (  # noqa: E402
-    CircleDto, CircularGeometry, CircularGeometryDto, CircularGeometryKind, CircularKind,
+    CircleDto, CircularGeometryDto, CircularKind,
     DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
     MinimumThicknessOutcomeDto, MinimumThicknessRequest, MinimumThicknessResponse, Problem,
     ResultantDto, SearchDto, SlopeDto, SoilDto, SpencerRequest, SpencerResponse,
@@ -36,8 +38,8 @@ def check(name, condition, detail=""):
 
 
 def semicircle(thickness, voussoirs):
-    return CircularGeometry(kind=CircularGeometryKind.CIRCULAR, radius=10.0,
-                            thickness=thickness, voussoirs=voussoirs)
+    return CircularGeometryDto(kind=CircularKind.CIRCULAR, radius=10.0,
+                               thickness=thickness, voussoirs=voussoirs)
 
 
 health = healthz.sync(client=client)
@@ -61,13 +63,16 @@ check("live load is typed", isinstance(answer, LiveLoadResponse), answer)
 if isinstance(answer, LiveLoadResponse):
     check("quarter-span load factor", abs(answer.load_factor - 22.996889652) < 1e-6, answer.load_factor)
 
-# Minimum thickness, N = 1800: 0.10747 < d/R < 0.10748 (SPEC §1.4).
+# Minimum thickness, N = 1800: 0.10747 < d/R < 0.10748 (SPEC §1.4); the same circular geometry
+# type as the other arch routes, its thickness the D of the geometric factor of safety.
 answer = minimum_thickness.sync(client=client, body=MinimumThicknessRequest(
-    geometry=CircularGeometryDto(kind=CircularKind.CIRCULAR, radius=10.0, voussoirs=1800)))
+    geometry=semicircle(1.5, 1800)))
 check("minimum thickness is typed", isinstance(answer, MinimumThicknessResponse), answer)
 if isinstance(answer, MinimumThicknessResponse):
     check("Milankovitch's d/R", answer.outcome == MinimumThicknessOutcomeDto.FOUND
           and 0.10747 <= answer.thickness_to_radius <= 0.10748, answer.thickness_to_radius)
+    check("geometric factor 1.5 / 1.0748", abs(answer.geometric_factor_of_safety - 1.5 / 1.0748) < 1e-4,
+          answer.geometric_factor_of_safety)
 
 # Spencer (1967) example, 100 slices: F = 1.06958, θ = 22.432° (thesis table).
 soil = SoilDto(unit_weight=10.0, cohesion=6.096, friction_angle_deg=40.0, pore_pressure_ratio=0.5)
@@ -98,6 +103,79 @@ for name, route, body in [
         ("slope drawing", spencer_svg, SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416)))]:
     svg = route.sync(client=client, body=body)
     check(name, isinstance(svg, str) and "<svg" in svg, type(svg))
+
+# What pydantic's model_dump(), Jackson and System.Text.Json send: every optional field the
+# client left unset as an explicit null, read from the spec's own schemas. Each route must
+# accept it and answer exactly as without the nulls.
+spec = json.loads((pathlib.Path(__file__).parent.parent / "openapi" / "openapi.json").read_text())
+schemas = spec["components"]["schemas"]
+
+
+def resolve(schema):
+    while "$ref" in schema:
+        schema = schemas[schema["$ref"].rsplit("/", 1)[-1]]
+    return schema
+
+
+def object_schema(value, schema):
+    """The object schema a dict value is an instance of (through refs, nullable arms,
+    discriminators and allOf)."""
+    schema = resolve(schema)
+    if "discriminator" in schema:
+        d = schema["discriminator"]
+        return object_schema(value, {"$ref": d["mapping"][value[d["propertyName"]]]})
+    if "allOf" in schema:
+        merged = {"properties": {}}
+        for part in schema["allOf"]:
+            merged["properties"].update(object_schema(value, part).get("properties", {}))
+        merged["properties"].update(schema.get("properties", {}))
+        return merged
+    for arm in schema.get("oneOf", []) + schema.get("anyOf", []):
+        arm = resolve(arm)
+        if "properties" in arm or "discriminator" in arm or "allOf" in arm:
+            return object_schema(value, arm)
+    return schema
+
+
+def with_nulls(value, schema):
+    if isinstance(value, dict):
+        props = object_schema(value, schema).get("properties", {})
+        return {name: with_nulls(value[name], sub) if name in value else None
+                for name, sub in props.items()}
+    if isinstance(value, list):
+        schema = resolve(schema)
+        items = schema.get("items") or next(
+            (resolve(a)["items"] for a in schema.get("oneOf", []) if "items" in resolve(a)), None)
+        return [with_nulls(v, items) if items else v for v in value]
+    return value
+
+
+def timeless(answer):
+    if isinstance(answer, dict):
+        return {k: timeless(v) for k, v in answer.items() if "time" not in k}
+    if isinstance(answer, list):
+        return [timeless(v) for v in answer]
+    return answer
+
+
+raw = client.get_httpx_client()
+for path, request, schema in [
+        ("/arch/dead-load", DeadLoadRequest(geometry=semicircle(1.0747, 60)), "DeadLoadRequest"),
+        ("/arch/live-load", LiveLoadRequest(geometry=semicircle(1.5, 60), loads=[LoadDto(block=16, fy=-1.0)]),
+         "LiveLoadRequest"),
+        ("/arch/minimum-thickness", MinimumThicknessRequest(geometry=semicircle(1.5, 12)),
+         "MinimumThicknessRequest"),
+        ("/slope/spencer", SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416)),
+         "SpencerRequest"),
+        ("/slope/spencer", SpencerRequest(slope=slope, soil=soil, search=SearchDto(nx=5, ny=5), slices=20),
+         "SpencerRequest")]:
+    plain = request.to_dict()
+    nulls = with_nulls(plain, {"$ref": f"#/components/schemas/{schema}"})
+    sent_null = sum(1 for _ in json.dumps(nulls).split("null")) - 1
+    first, second = raw.post(path, json=plain), raw.post(path, json=nulls)
+    check(f"{path} with {sent_null} nulls", first.status_code == second.status_code == 200
+          and sent_null > 0 and timeless(first.json()) == timeless(second.json()),
+          (second.status_code, second.text[:300]))
 
 print(f"client: {passed} passed, {failed} failed")
 sys.exit(1 if failed else 0)

@@ -206,22 +206,48 @@ impl From<JsonRejection> for ApiError {
 
 /// The field path serde reports in a data error ("…target type: slope.foo: unknown field…").
 /// A missing field is named by its full path ("…target type: slope: missing field `height`…").
+/// Paths a geometry object reports inside itself follow its own ("geometry: blocks[1].corners:
+/// …"): they are joined.
 fn data_error_field(detail: &str) -> Option<String> {
     let rest = detail.split_once("target type: ")?.1;
-    let path = rest
-        .split_once(": ")
-        .map(|(path, _)| path)
-        .filter(|path| !path.is_empty() && !path.contains(' '));
-    let missing = rest
-        .split_once("missing field `")
-        .and_then(|(_, name)| name.split_once('`'))
+    let (segments, message) = path_segments(rest);
+    let path = (!segments.is_empty()).then(|| segments.join("."));
+    let missing = message
+        .strip_prefix("missing field `")
+        .and_then(|name| name.split_once('`'))
         .map(|(name, _)| name);
     match (path, missing) {
         (Some(path), Some(name)) => Some(format!("{path}.{name}")),
         (None, Some(name)) => Some(name.to_owned()),
-        (Some(path), None) => Some(path.to_owned()),
+        (Some(path), None) => Some(path),
         (None, None) => None,
     }
+}
+
+/// The leading "path: " segments of serde's message (no spaces in a path), and the rest.
+fn path_segments(message: &str) -> (Vec<&str>, &str) {
+    let mut segments = Vec::new();
+    let mut rest = message;
+    while let Some((head, tail)) = rest.split_once(": ") {
+        if head.is_empty() || head.contains(' ') || head.contains('`') {
+            break;
+        }
+        segments.push(head);
+        rest = tail;
+    }
+    (segments, rest)
+}
+
+/// The detail with nested paths joined: "…target type: geometry.blocks[1].corners: …".
+fn joined_paths(detail: String) -> String {
+    let Some((head, rest)) = detail.split_once("target type: ") else {
+        return detail;
+    };
+    let (segments, message) = path_segments(rest);
+    if segments.len() < 2 {
+        return detail;
+    }
+    format!("{head}target type: {}: {message}", segments.join("."))
 }
 
 /// Longest `detail` echoed from a client's input, in characters.
@@ -281,9 +307,9 @@ where
         let axum::Json(value) =
             axum::Json::<serde_json::Value>::from_request(request, state).await?;
         let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
-            let detail = bounded(in_plain_words(&format!(
+            let detail = bounded(joined_paths(in_plain_words(&format!(
                 "Failed to deserialize the JSON body into the target type: {e}"
-            )));
+            ))));
             let field = data_error_field(&detail);
             ApiError::BadRequest {
                 status: StatusCode::UNPROCESSABLE_ENTITY,

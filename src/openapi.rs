@@ -17,7 +17,13 @@ use utoipa::OpenApi;
         contact(name = "thrustline maintainers")
     ),
     servers((url = "/", description = "The service that serves this document")),
-    modifiers(&BearerToken, &DescriptionsOnProperties, &RequestIdHeader, &DrawingExamples),
+    modifiers(
+        &BearerToken,
+        &DescriptionsOnProperties,
+        &RequestIdHeader,
+        &DrawingExamples,
+        &SvgMediaType
+    ),
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
@@ -164,6 +170,35 @@ impl utoipa::Modify for DrawingExamples {
                 .and_then(|body| body.content.get_mut("application/json"));
             if let Some(content) = content {
                 content.examples = examples;
+            }
+        }
+    }
+}
+
+/// A drawing is a string whose content is SVG (JSON Schema's `contentMediaType`), so that
+/// generators type it as text, not as an unknown binary.
+struct SvgMediaType;
+
+impl utoipa::Modify for SvgMediaType {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::schema::{ObjectBuilder, Type};
+        use utoipa::openapi::RefOr;
+        const SVG: &str = "image/svg+xml";
+        for item in openapi.paths.paths.values_mut() {
+            for operation in [&mut item.get, &mut item.post].into_iter().flatten() {
+                for response in operation.responses.responses.values_mut() {
+                    let RefOr::T(response) = response else {
+                        continue;
+                    };
+                    if let Some(content) = response.content.get_mut(SVG) {
+                        content.schema = Some(
+                            ObjectBuilder::new()
+                                .schema_type(Type::String)
+                                .content_media_type(SVG)
+                                .into(),
+                        );
+                    }
+                }
             }
         }
     }

@@ -224,17 +224,51 @@ async fn minimum_thickness_edges_and_bad_inputs() {
     let blocks = json!({"geometry": {"kind": "blocks", "blocks": [
         {"corners": [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]}]}});
     let (status, content_type, body) = server.post("/arch/minimum-thickness", &blocks).await;
-    assert_problem(status, &content_type, &body, 422, "geometry");
+    // Only the circular geometry has a minimum thickness: the blocks are an unknown field of it.
+    assert_problem(status, &content_type, &body, 422, "geometry.blocks");
 
-    // The thickness is ignored, even when it would be invalid for a dead-load request.
-    let ignored = with(
-        with(milankovitch(1.0), "geometry.thickness", json!(50.0)),
-        "geometry.voussoirs",
-        json!(4),
-    );
-    let (status, _, body) = server.post("/arch/minimum-thickness", &ignored).await;
+    // A given thickness is checked as on the dead-load route (0 < D < 2R): it is the D of the
+    // geometric factor of safety.
+    let too_thick = with(milankovitch(1.0), "geometry.thickness", json!(50.0));
+    let (status, content_type, body) = server.post("/arch/minimum-thickness", &too_thick).await;
+    assert_problem(status, &content_type, &body, 422, "geometry.thickness");
+    for (field, value) in [
+        ("geometry.rings", json!(2)),
+        ("geometry.spans", json!(2)),
+        ("geometry.pier_width", json!(1.0)),
+    ] {
+        let bad = with(milankovitch(1.0), field, value);
+        let (status, content_type, body) = server.post("/arch/minimum-thickness", &bad).await;
+        assert_problem(status, &content_type, &body, 422, field);
+    }
+    // Without a thickness there is no geometric factor; nulls mean "not given".
+    let mut bare = with(milankovitch(1.0), "geometry.voussoirs", json!(4));
+    bare["geometry"]["thickness"] = Value::Null;
+    bare["geometry"]["rings"] = Value::Null;
+    let (status, _, body) = server.post("/arch/minimum-thickness", &bare).await;
     assert_eq!(status, 200, "{body}");
     assert_eq!(body["outcome"], "found");
+    assert_eq!(body["geometric_factor_of_safety"], Value::Null);
+}
+
+/// Heyman's geometric factor of safety of Milankovitch's semicircle (N = 1800, d_min/R =
+/// 0.10748, SPEC §1.4) at D = 1.5, R = 10: 1.5 / 1.0748 = 1.39561 (5e-5 relative: the
+/// published ratio has 5 digits).
+#[tokio::test]
+async fn geometric_factor_of_safety_is_thickness_over_minimum() {
+    let server = Server::start().await;
+    let (status, _, body) = server
+        .post("/arch/minimum-thickness", &milankovitch(1.5))
+        .await;
+    assert_eq!(status, 200, "{body}");
+    let factor = body["geometric_factor_of_safety"].as_f64().unwrap();
+    let expected = 1.5 / 1.0748;
+    assert!((factor - expected).abs() < 5e-5 * expected, "{factor}");
+    let minimum = body["thickness"].as_f64().unwrap();
+    assert!(
+        (factor * minimum - 1.5).abs() < 1e-12,
+        "{factor} × {minimum}"
+    );
 }
 
 #[tokio::test]

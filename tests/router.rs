@@ -101,7 +101,9 @@ async fn null_for_an_optional_field_means_its_default_on_every_route() {
                                    "voussoirs": 40}});
     let arch_nulls = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
                                          "voussoirs": 40, "left_base_angle_deg": null,
-                                         "right_base_angle_deg": null, "voussoir": null},
+                                         "right_base_angle_deg": null, "voussoir": null,
+                                         "rings": null, "ring_joints": null, "spans": null,
+                                         "pier_width": null, "pier_height": null},
                             "unit_weight": null, "interface_limits": null,
                             "friction_coefficient": null, "formulation": null,
                             "solver_tolerance": null});
@@ -112,6 +114,10 @@ async fn null_for_an_optional_field_means_its_default_on_every_route() {
         json!([{"block": 11, "x": null, "y": null, "fx": null, "fy": -1.0, "moment": null}]);
     let mut minimum = arch.clone();
     minimum["geometry"]["voussoirs"] = json!(12);
+    minimum["geometry"]
+        .as_object_mut()
+        .unwrap()
+        .remove("thickness");
     let mut minimum_nulls = arch_nulls.clone();
     minimum_nulls["geometry"]["voussoirs"] = json!(12);
     minimum_nulls["geometry"]["thickness"] = json!(null);

@@ -13,9 +13,12 @@ use thrustline_solver::arch::{
 
 use super::assembly::Generated;
 use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
+use super::geometry::{
+    AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
+};
 use super::request::{
-    DeadLoadRequest, FrictionDto, GeometryDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest,
-    LoadDto, MaterialFields, VoussoirDto,
+    DeadLoadRequest, FrictionDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest, LoadDto,
+    MaterialFields,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -109,15 +112,7 @@ fn input(
 ) -> Result<ArchInput, ApiError> {
     let material = material(fields.material)?;
     let assembly = assembly(fields.geometry)?;
-    let is_curved = matches!(
-        fields.geometry,
-        GeometryDto::Circular {
-            voussoir: VoussoirDto::Curved,
-            rings: 1,
-            spans: 1,
-            ..
-        }
-    );
+    let is_curved = matches!(fields.geometry, GeometryDto::Circular(c) if c.is_curved_single());
     if !assembly.is_chain() && (extras.fill.is_some() || extras.rolling.is_some()) {
         return Err(ApiError::invalid(
             if extras.fill.is_some() {
@@ -283,25 +278,12 @@ fn friction(field: &str, mu: Option<f64>) -> Result<Option<f64>, ApiError> {
         .transpose()
 }
 
-/// The fields of a circular arch (`geometry.kind = circular`) as the request gives them.
-#[derive(Debug, Clone, Copy)]
-pub struct CircularFields {
-    /// Middle radius.
-    pub radius: f64,
-    /// Voussoir thickness.
-    pub thickness: f64,
-    /// Number of voussoirs.
-    pub voussoirs: usize,
-    /// Left base angle in degrees.
-    pub left_base_angle_deg: f64,
-    /// Right base angle in degrees.
-    pub right_base_angle_deg: f64,
-    /// Voussoir shape.
-    pub voussoir: VoussoirDto,
-}
-
-/// Validates a circular arch (its thickness against the radius is `CircularArch::new`'s check).
-pub fn circular_arch(fields: CircularFields) -> Result<CircularArch, ApiError> {
+/// Validates a circular arch of the given thickness (against the radius it is
+/// `CircularArch::new`'s check); rings and spans are the caller's.
+pub fn circular_arch(
+    fields: &CircularGeometryDto,
+    thickness: f64,
+) -> Result<CircularArch, ApiError> {
     let radius = number(
         "geometry.radius",
         fields.radius,
@@ -319,45 +301,25 @@ pub fn circular_arch(fields: CircularFields) -> Result<CircularArch, ApiError> {
     };
     let n = NonZeroUsize::new(n)
         .ok_or_else(|| ApiError::invalid("geometry.voussoirs", "must be at least 1"))?;
-    Ok(CircularArch::new(
-        radius,
-        fields.thickness,
-        n,
-        left,
-        right,
-        shape,
-    )?)
+    Ok(CircularArch::new(radius, thickness, n, left, right, shape)?)
 }
 
 fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
     match geometry {
-        &GeometryDto::Circular {
-            radius,
-            thickness,
-            voussoirs,
-            left_base_angle_deg,
-            right_base_angle_deg,
-            voussoir,
-            rings,
-            ring_joints,
-            spans,
-            pier_width,
-            pier_height,
-        } => {
-            let arch = circular_arch(CircularFields {
-                radius,
-                thickness,
-                voussoirs,
-                left_base_angle_deg,
-                right_base_angle_deg,
-                voussoir,
+        GeometryDto::Circular(circular) => {
+            let thickness = circular.thickness.ok_or_else(|| {
+                ApiError::invalid(
+                    "geometry.thickness",
+                    "is required here (0 < D < 2R); only the minimum-thickness route finds it",
+                )
             })?;
+            let arch = circular_arch(circular, thickness)?;
             let generated = Generated {
-                rings,
-                ring_joints,
-                spans,
-                pier_width,
-                pier_height,
+                rings: circular.rings,
+                ring_joints: circular.ring_joints,
+                spans: circular.spans,
+                pier_width: circular.pier_width,
+                pier_height: circular.pier_height,
             };
             if generated.is_plain() {
                 Ok(arch.assembly())
@@ -365,7 +327,7 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
                 super::assembly::generated(&arch, generated)
             }
         }
-        GeometryDto::Blocks { blocks } => {
+        GeometryDto::Blocks(BlocksGeometryDto { blocks, .. }) => {
             count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
             for (b, block) in blocks.iter().enumerate() {
                 for (c, [x, y]) in block.corners.iter().enumerate() {
@@ -380,7 +342,9 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
                 .collect();
             Ok(Assembly::from_quadrilaterals(&corners)?)
         }
-        GeometryDto::Assembly { blocks, supports } => super::assembly::assembly(blocks, supports),
+        GeometryDto::Assembly(AssemblyGeometryDto {
+            blocks, supports, ..
+        }) => super::assembly::assembly(blocks, supports),
     }
 }
 

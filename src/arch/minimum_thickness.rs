@@ -1,6 +1,7 @@
 //! `POST /arch/minimum-thickness`: the thinnest circular arch that carries its own weight
 //! (SPEC §3; Milankovitch 1904). A dead-load request with circular geometry whose `thickness`
-//! is ignored, plus an optional `tolerance` relative to the radius.
+//! is optional (given, the answer adds the geometric factor of safety), plus an optional
+//! `tolerance` relative to the radius.
 
 use axum::extract::State;
 use serde::{Deserialize, Serialize};
@@ -10,53 +11,14 @@ use thrustline_solver::arch::{
 };
 use utoipa::ToSchema;
 
-use super::input::{circular_arch, material, CircularFields};
-use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields, VoussoirDto};
+use super::geometry::CircularGeometryDto;
+use super::input::{circular_arch, material};
+use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::response::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
 use crate::validation::number;
 use crate::AppState;
-
-/// The only geometry kind with a minimum thickness.
-#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum CircularKind {
-    /// The circular arch generator.
-    Circular,
-}
-
-/// A circular arch whose thickness is to be found (SPEC §1.3).
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct CircularGeometryDto {
-    /// Always `circular`.
-    pub kind: CircularKind,
-    /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
-    #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
-    pub radius: f64,
-    /// Ignored (accepted so that a dead-load request can be sent as it is).
-    #[serde(default)]
-    pub thickness: Option<f64>,
-    /// Number of voussoirs N, 1 ≤ N ≤ 10000.
-    #[schema(minimum = 1, maximum = 10000, examples(1800))]
-    #[serde(deserialize_with = "crate::nullable::integer")]
-    pub voussoirs: usize,
-    /// Left base angle B in degrees, −90 < B < 90. Defaults to 0.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, maximum = 89.999999)]
-    pub left_base_angle_deg: f64,
-    /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, maximum = 89.999999)]
-    pub right_base_angle_deg: f64,
-    /// Voussoir shape. Defaults to `curved`.
-    #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
-    #[schema(nullable)]
-    pub voussoir: VoussoirDto,
-}
 
 arch_request! {
     /// The minimum-thickness question for a circular arch.
@@ -68,7 +30,8 @@ arch_request! {
         "tolerance": 1e-6
     })))]
     pub struct MinimumThicknessRequest {
-        /// The circular arch; its `thickness`, if given, is ignored.
+        /// The circular arch (one ring, one span); its `thickness`, if given, is the D of the
+        /// geometric factor of safety.
         pub geometry: CircularGeometryDto,
         /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults
         /// to 1e-6.
@@ -116,6 +79,12 @@ pub struct MinimumThicknessResponse {
     /// The thickest thickness found not to carry it (the other end of the final bracket).
     #[schema(required = true)]
     pub thickness_below: Option<f64>,
+    /// With `geometry.thickness` D given: Heyman's geometric factor of safety D / D_min (> 1:
+    /// the given arch is that many times thicker than the thinnest that stands); null without
+    /// a thickness or a minimum.
+    #[schema(examples(1.5))]
+    #[schema(required = true)]
+    pub geometric_factor_of_safety: Option<f64>,
     /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees.
     #[schema(examples(54.5))]
     #[schema(required = true)]
@@ -138,7 +107,7 @@ pub struct MinimumThicknessResponse {
 ///
 /// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
 /// (Milankovitch 1904; SPEC §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
-/// The `thickness` of the geometry is ignored. A solve stopped at the time limit is 422 naming
+/// A given `thickness` D adds the geometric factor of safety D / D_min. A solve stopped at the time limit is 422 naming
 /// `tolerance`.
 #[utoipa::path(
     post,
@@ -158,16 +127,27 @@ pub async fn minimum_thickness(
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
 ) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
     let g = &request.geometry;
-    // The thickness is ignored: any valid one serves as the template.
     let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
-    let arch = circular_arch(CircularFields {
-        radius,
-        thickness: 0.1 * radius,
-        voussoirs: g.voussoirs,
-        left_base_angle_deg: g.left_base_angle_deg,
-        right_base_angle_deg: g.right_base_angle_deg,
-        voussoir: g.voussoir,
-    })?;
+    for (field, many) in [
+        ("geometry.rings", g.rings != 1),
+        ("geometry.spans", g.spans != 1),
+        ("geometry.pier_width", g.pier_width.is_some()),
+        ("geometry.pier_height", g.pier_height.is_some()),
+    ] {
+        if many {
+            return Err(ApiError::invalid(
+                field,
+                "the minimum-thickness search takes one ring and one span: leave it out",
+            ));
+        }
+    }
+    // A given thickness is checked (0 < D < 2R) for the geometric factor; any valid one serves
+    // as the template of the search.
+    let given = g
+        .thickness
+        .map(|d| circular_arch(g, d).map(|_| d))
+        .transpose()?;
+    let arch = circular_arch(g, 0.1 * radius)?;
     let material = material(request.material())?;
     if request.ring_friction_coefficient.is_some() {
         return Err(ApiError::invalid(
@@ -213,17 +193,22 @@ pub async fn minimum_thickness(
             advice: "use a larger tolerance or fewer voussoirs",
         });
     }
-    Ok(ApiJson(response(&arch, &result)))
+    Ok(ApiJson(response(&arch, &result, given)))
 }
 
 /// The answer, built whole for each outcome.
-fn response(arch: &CircularArch, result: &MinimumThickness) -> MinimumThicknessResponse {
+fn response(
+    arch: &CircularArch,
+    result: &MinimumThickness,
+    given: Option<f64>,
+) -> MinimumThicknessResponse {
     let radius = arch.radius();
     let none = MinimumThicknessResponse {
         outcome: MinimumThicknessOutcomeDto::SolverFailed,
         thickness: None,
         thickness_to_radius: None,
         thickness_below: None,
+        geometric_factor_of_safety: None,
         rupture_angle_deg: None,
         hinges: Vec::new(),
         active_constraints: Vec::new(),
@@ -242,6 +227,7 @@ fn response(arch: &CircularArch, result: &MinimumThickness) -> MinimumThicknessR
             thickness: Some(*thickness),
             thickness_to_radius: Some(thickness / radius),
             thickness_below: Some(*thickness_below),
+            geometric_factor_of_safety: given.map(|d| d / thickness),
             rupture_angle_deg: mechanism.as_ref().and_then(|m| rupture_angle_deg(arch, m)),
             // The mechanism is the collapse of the arch just too thin.
             hinges: match (mechanism, arch.with_thickness(*thickness_below)) {

@@ -10,6 +10,7 @@ pub mod assembly;
 pub mod codes;
 pub mod drawing;
 pub mod fill;
+pub mod geometry;
 pub mod input;
 pub mod mechanism;
 pub mod minimum_thickness;

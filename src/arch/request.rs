@@ -8,16 +8,7 @@ use serde::{Deserialize, Deserializer, Serialize};
 use thrustline_solver::arch::Formulation;
 use utoipa::ToSchema;
 
-/// Shape of the voussoirs of a circular arch.
-#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum VoussoirDto {
-    /// Annular sectors (curved intrados and extrados; exact centroid).
-    #[default]
-    Curved,
-    /// Straight intrados and extrados between the corners (polygon centroid).
-    Quadrilateral,
-}
+use super::geometry::GeometryDto;
 
 /// The model of the limit-analysis programmes.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -51,127 +42,6 @@ pub enum FrictionDto {
     Associative,
     /// No dilatancy: the iteration of Gilbert, Casapulla & Ahmed (2006) gives the answer.
     NonAssociative,
-}
-
-/// One block of an explicit chain.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct BlockCornersDto {
-    /// Corners [x, y] in the order intrados-start, extrados-start, extrados-end, intrados-end;
-    /// a block's start face is the previous block's end face.
-    #[schema(schema_with = corners_schema)]
-    pub corners: [[f64; 2]; 4],
-}
-
-/// Four [x, y] points.
-fn corners_schema() -> utoipa::openapi::schema::Array {
-    use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Type};
-    let point = ArrayBuilder::new()
-        .items(
-            ObjectBuilder::new()
-                .schema_type(Type::Number)
-                .minimum(Some(-crate::limits::MAX_LENGTH))
-                .maximum(Some(crate::limits::MAX_LENGTH)),
-        )
-        .min_items(Some(2))
-        .max_items(Some(2));
-    ArrayBuilder::new()
-        .items(point)
-        .min_items(Some(4))
-        .max_items(Some(4))
-        .description(Some(
-            "Corners [x, y]: intrados-start, extrados-start, extrados-end, intrados-end",
-        ))
-        .examples([serde_json::json!([
-            [9.5, 0.0],
-            [10.5, 0.0],
-            [10.5, 1.0],
-            [9.5, 1.0]
-        ])])
-        .build()
-}
-
-/// The structure: the thesis' circular arch, or any chain of quadrilateral blocks.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-pub enum GeometryDto {
-    /// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
-    /// 180° − B (left springing), N voussoirs of equal angle.
-    #[schema(title = "CircularGeometry")]
-    Circular {
-        /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
-        #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
-        radius: f64,
-        /// Voussoir thickness D, 0 < D < 2R.
-        #[schema(exclusive_minimum = 0.0, examples(1.0748))]
-        thickness: f64,
-        /// Number of voussoirs N, 1 ≤ N ≤ 10000.
-        #[schema(minimum = 1, maximum = 10000, examples(1800))]
-        #[serde(deserialize_with = "crate::nullable::integer")]
-        voussoirs: usize,
-        /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
-        /// horseshoe). Defaults to 0.
-        #[serde(default, deserialize_with = "crate::nullable::or_default")]
-        #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
-        left_base_angle_deg: f64,
-        /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
-        #[serde(default, deserialize_with = "crate::nullable::or_default")]
-        #[schema(nullable)]
-        #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
-        right_base_angle_deg: f64,
-        /// Voussoir shape. Defaults to `curved`.
-        #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
-        #[schema(nullable)]
-        voussoir: VoussoirDto,
-        /// Rings the thickness is split into, 1 ≤ rings ≤ 16 (ring 1 innermost; blocks are
-        /// numbered ring by ring). More than one makes the arch an assembly of polygonal
-        /// voussoirs, solved on the general formulation. Defaults to 1.
-        #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
-        #[schema(nullable)]
-        #[schema(minimum = 1, maximum = 16, default = 1)]
-        rings: usize,
-        /// How the joints of neighbouring rings lie. Defaults to `staggered`.
-        #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
-        #[schema(nullable)]
-        ring_joints: super::assembly::RingJointsDto,
-        /// Spans, 1 ≤ spans ≤ 20: the arch repeated on piers (`pier_width`, `pier_height`).
-        /// Defaults to 1.
-        #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
-        #[schema(nullable)]
-        #[schema(minimum = 1, maximum = 20, default = 1)]
-        spans: usize,
-        /// With `spans` > 1: each pier's width between the intrados springings of its two
-        /// spans (more than D·(cos B + cos C), so the springings do not overlap).
-        #[serde(default)]
-        pier_width: Option<f64>,
-        /// With `spans` > 1: each pier's height below its lower springing, > 0.
-        #[serde(default)]
-        pier_height: Option<f64>,
-    },
-    /// A chain of quadrilateral blocks; the first block's start face and the last block's end
-    /// face rest on supports.
-    #[schema(title = "BlocksGeometry")]
-    Blocks {
-        /// The blocks, 1 to 10000 of them, in order.
-        #[schema(min_items = 1, max_items = 10000)]
-        blocks: Vec<BlockCornersDto>,
-    },
-    /// Any polygonal blocks on fixed supports (SPEC §5.4): contacts are found where edges of
-    /// two blocks, or of a block and a support, run along each other.
-    #[schema(title = "AssemblyGeometry")]
-    Assembly {
-        /// The blocks, 1 to 10000 of them.
-        #[schema(min_items = 1, max_items = 10000)]
-        blocks: Vec<super::assembly::PolygonDto>,
-        /// The fixed supports, 1 to 1000 of them.
-        #[schema(min_items = 1, max_items = 1000)]
-        supports: Vec<super::assembly::PolygonDto>,
-    },
-}
-
-fn one() -> usize {
-    1
 }
 
 /// Limits on the interface resultants (absolute forces). A missing field takes Heyman's value

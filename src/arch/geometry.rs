@@ -1,0 +1,259 @@
+//! The structure of an arch request: three named geometry objects told apart by `kind` (an
+//! OpenAPI discriminator), the circular one shared by every arch route. Read by hand so that an
+//! error inside names its full path (`geometry.blocks[3].corners`), which serde's internally
+//! tagged enums lose.
+
+use serde::de::{DeserializeOwned, Error as _};
+use serde::{Deserialize, Deserializer, Serialize};
+use serde_json::Value;
+use utoipa::ToSchema;
+
+use super::assembly::{PolygonDto, RingJointsDto};
+
+/// Shape of the voussoirs of a circular arch.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum VoussoirDto {
+    /// Annular sectors (curved intrados and extrados; exact centroid).
+    #[default]
+    Curved,
+    /// Straight intrados and extrados between the corners (polygon centroid).
+    Quadrilateral,
+}
+
+/// `kind` of a circular arch.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CircularKind {
+    /// The circular arch generator.
+    Circular,
+}
+
+/// `kind` of a chain of quadrilateral blocks.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum BlocksKind {
+    /// A chain of quadrilaterals.
+    Blocks,
+}
+
+/// `kind` of an assembly of polygons.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum AssemblyKind {
+    /// Polygonal blocks on supports.
+    Assembly,
+}
+
+/// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
+/// 180° − B (left springing), N voussoirs of equal angle. The one circular geometry of every
+/// arch route.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CircularGeometryDto {
+    /// Always `circular`.
+    pub kind: CircularKind,
+    /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
+    #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
+    pub radius: f64,
+    /// Voussoir thickness D, 0 < D < 2R. Required by the dead- and live-load routes. On the
+    /// minimum-thickness route optional: given, the answer adds the geometric factor of safety
+    /// D / D_min.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 2e9, examples(1.0748))]
+    pub thickness: Option<f64>,
+    /// Number of voussoirs N, 1 ≤ N ≤ 10000.
+    #[schema(minimum = 1, maximum = 10000, examples(1800))]
+    #[serde(deserialize_with = "crate::nullable::integer")]
+    pub voussoirs: usize,
+    /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
+    /// horseshoe). Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
+    pub left_base_angle_deg: f64,
+    /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
+    pub right_base_angle_deg: f64,
+    /// Voussoir shape. Defaults to `curved`.
+    #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
+    #[schema(nullable)]
+    pub voussoir: VoussoirDto,
+    /// Rings the thickness is split into, 1 ≤ rings ≤ 16 (ring 1 innermost; blocks are
+    /// numbered ring by ring). More than one makes the arch an assembly of polygonal
+    /// voussoirs, solved on the general formulation. Not on the minimum-thickness route.
+    /// Defaults to 1.
+    #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+    #[schema(nullable)]
+    #[schema(minimum = 1, maximum = 16, default = 1)]
+    pub rings: usize,
+    /// How the joints of neighbouring rings lie. Defaults to `staggered`.
+    #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
+    #[schema(nullable)]
+    pub ring_joints: RingJointsDto,
+    /// Spans, 1 ≤ spans ≤ 20: the arch repeated on piers (`pier_width`, `pier_height`). Not
+    /// on the minimum-thickness route. Defaults to 1.
+    #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+    #[schema(nullable)]
+    #[schema(minimum = 1, maximum = 20, default = 1)]
+    pub spans: usize,
+    /// With `spans` > 1: each pier's width between the intrados springings of its two spans
+    /// (more than D·(cos B + cos C), so the springings do not overlap).
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
+    pub pier_width: Option<f64>,
+    /// With `spans` > 1: each pier's height below its lower springing, > 0.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
+    pub pier_height: Option<f64>,
+}
+
+impl CircularGeometryDto {
+    /// One ring, one span, curved voussoirs: the thesis' arch, whose extrados is an arc.
+    pub fn is_curved_single(&self) -> bool {
+        self.voussoir == VoussoirDto::Curved && self.rings == 1 && self.spans == 1
+    }
+}
+
+fn one() -> usize {
+    1
+}
+
+/// One block of an explicit chain.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BlockCornersDto {
+    /// Corners [x, y] in the order intrados-start, extrados-start, extrados-end, intrados-end;
+    /// a block's start face is the previous block's end face.
+    #[schema(schema_with = corners_schema)]
+    pub corners: [[f64; 2]; 4],
+}
+
+/// Four [x, y] points.
+fn corners_schema() -> utoipa::openapi::schema::Array {
+    use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Type};
+    let point = ArrayBuilder::new()
+        .items(
+            ObjectBuilder::new()
+                .schema_type(Type::Number)
+                .minimum(Some(-crate::limits::MAX_LENGTH))
+                .maximum(Some(crate::limits::MAX_LENGTH)),
+        )
+        .min_items(Some(2))
+        .max_items(Some(2));
+    ArrayBuilder::new()
+        .items(point)
+        .min_items(Some(4))
+        .max_items(Some(4))
+        .description(Some(
+            "Corners [x, y]: intrados-start, extrados-start, extrados-end, intrados-end",
+        ))
+        .examples([serde_json::json!([
+            [9.5, 0.0],
+            [10.5, 0.0],
+            [10.5, 1.0],
+            [9.5, 1.0]
+        ])])
+        .build()
+}
+
+/// A chain of quadrilateral blocks; the first block's start face and the last block's end face
+/// rest on supports.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BlocksGeometryDto {
+    /// Always `blocks`.
+    pub kind: BlocksKind,
+    /// The blocks, 1 to 10000 of them, in order.
+    #[schema(min_items = 1, max_items = 10000)]
+    pub blocks: Vec<BlockCornersDto>,
+}
+
+/// Any polygonal blocks on fixed supports (SPEC §5.4): contacts are found where edges of two
+/// blocks, or of a block and a support, run along each other.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AssemblyGeometryDto {
+    /// Always `assembly`.
+    pub kind: AssemblyKind,
+    /// The blocks, 1 to 10000 of them.
+    #[schema(min_items = 1, max_items = 10000)]
+    pub blocks: Vec<PolygonDto>,
+    /// The fixed supports, 1 to 1000 of them.
+    #[schema(min_items = 1, max_items = 1000)]
+    pub supports: Vec<PolygonDto>,
+}
+
+/// The structure, by `kind`: the thesis' circular arch (`circular`), any chain of
+/// quadrilateral blocks (`blocks`), or any polygons on supports (`assembly`).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+#[serde(untagged)]
+#[schema(discriminator(property_name = "kind", mapping(
+    ("circular" = "#/components/schemas/CircularGeometryDto"),
+    ("blocks" = "#/components/schemas/BlocksGeometryDto"),
+    ("assembly" = "#/components/schemas/AssemblyGeometryDto"),
+)))]
+pub enum GeometryDto {
+    /// `kind: circular`.
+    Circular(CircularGeometryDto),
+    /// `kind: blocks`.
+    Blocks(BlocksGeometryDto),
+    /// `kind: assembly`.
+    Assembly(AssemblyGeometryDto),
+}
+
+impl<'de> Deserialize<'de> for GeometryDto {
+    /// By `kind`, each variant read with the path of its errors kept (`blocks[3].corners: …`),
+    /// which the request's error joins to `geometry`.
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let value = Value::deserialize(deserializer)?;
+        let Value::Object(map) = &value else {
+            return Err(D::Error::custom(format!(
+                "invalid type: {}, expected an object with `kind`",
+                json_type(&value)
+            )));
+        };
+        match map.get("kind") {
+            None => Err(D::Error::missing_field("kind")),
+            Some(Value::String(kind)) => match kind.as_str() {
+                "circular" => variant(&value).map(Self::Circular),
+                "blocks" => variant(&value).map(Self::Blocks),
+                "assembly" => variant(&value).map(Self::Assembly),
+                other => Err(D::Error::custom(format!(
+                    "kind: unknown variant `{other}`, expected one of `circular`, `blocks`, \
+                     `assembly`"
+                ))),
+            },
+            Some(other) => Err(D::Error::custom(format!(
+                "kind: invalid type: {}, expected one of `circular`, `blocks`, `assembly`",
+                json_type(other)
+            ))),
+        }
+    }
+}
+
+/// A geometry object read as `T`, an error prefixed with its path inside the object.
+fn variant<T: DeserializeOwned, E: serde::de::Error>(value: &Value) -> Result<T, E> {
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let path = e.path().to_string();
+        if path.is_empty() || path == "." {
+            E::custom(e.into_inner())
+        } else {
+            E::custom(format!("{path}: {}", e.into_inner()))
+        }
+    })
+}
+
+/// serde's name for a JSON value's type in "invalid type" messages.
+fn json_type(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "boolean",
+        Value::Number(_) => "number",
+        Value::String(_) => "string",
+        Value::Array(_) => "sequence",
+        Value::Object(_) => "map",
+    }
+}
