@@ -48,6 +48,11 @@ pub struct HingeDto {
     pub x: f64,
     /// y of the hinge.
     pub y: f64,
+    /// Horizontal distance of the hinge from the left end of the span: a chain's left
+    /// springing at the intrados (the clear span), an assembly's leftmost corner.
+    pub span_distance: f64,
+    /// `span_distance` as a fraction of the span (0 at the left end, 1 at the right).
+    pub span_fraction: f64,
     /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
     pub rotation: f64,
 }
@@ -386,6 +391,8 @@ pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
 
 /// The hinges of a mechanism, 1-based, placed on the joints of `assembly`.
 pub fn hinges(assembly: &Assembly, mechanism: &Mechanism) -> Vec<HingeDto> {
+    let (left, right) = span(assembly);
+    let width = (right - left).max(f64::MIN_POSITIVE);
     mechanism
         .hinges
         .iter()
@@ -401,8 +408,31 @@ pub fn hinges(assembly: &Assembly, mechanism: &Mechanism) -> Vec<HingeDto> {
                 location: h.side.into(),
                 x,
                 y,
+                span_distance: x - left,
+                span_fraction: (x - left) / width,
                 rotation: h.rotation,
             }
         })
         .collect()
+}
+
+/// The ends of the span in x: a chain's springings at the intrados (the clear span), an
+/// assembly's extreme corners.
+fn span(assembly: &Assembly) -> (f64, f64) {
+    let springings = (assembly.is_chain())
+        .then(|| {
+            let first = assembly.interfaces.first()?.intrados.0;
+            let last = assembly.interfaces.last()?.intrados.0;
+            Some((first.min(last), first.max(last)))
+        })
+        .flatten();
+    springings.unwrap_or_else(|| {
+        assembly
+            .blocks
+            .iter()
+            .flat_map(|b| b.corners.iter())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(x, _)| {
+                (lo.min(x), hi.max(x))
+            })
+    })
 }

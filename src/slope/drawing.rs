@@ -121,10 +121,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         extent.push(c.centre);
         extent.push((c.centre.0, (c.centre.1 - c.radius).max(bottom)));
     }
-    let lower_end = match solved.search.as_ref() {
-        Some(s) if s.absolute => (0.0, 0.0),
-        _ => scene.surface.first().copied().unwrap_or((0.0, 0.0)),
-    };
+    let lower_end = solved.search.as_ref().map_or((0.0, 0.0), |s| s.origin);
     let grid_centres: Vec<(f64, f64)> = grid
         .map(|grid| {
             grid.xs

@@ -194,6 +194,12 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                          or move the bounds (or leave them out for automatic ones)",
                     )),
                 };
+                // The grid's circles start at the lower end of F_e as given (the refinement may
+                // move F_e within lower_end_factor_max; the grid does not).
+                let grid_lower_end = (
+                    -search_problem.lower_end_factor * search_problem.embankment.height() + 0.0,
+                    0.0,
+                );
                 let problem = SlopeProblem::new(
                     search_problem.embankment,
                     circle,
@@ -204,7 +210,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                 )?;
                 (
                     Analysed::Simple(problem),
-                    Some(SearchReport::of_simple(&found, hard_bounds)),
+                    Some(SearchReport::of_simple(&found, hard_bounds, grid_lower_end)),
                 )
             }
             Target::SectionSearch(search) => {

@@ -23,8 +23,9 @@ pub struct SearchReport {
     pub hard: bool,
     /// F over the last grid of centres.
     pub grid: FactorGrid,
-    /// Whether the grid's coordinates are absolute (a section) rather than from the lower end.
-    pub absolute: bool,
+    /// Where the grid's (0, 0) lies in the request's coordinates: the lower end of the simple
+    /// slope's circles, (0, 0) for a section (whose grid is absolute).
+    pub origin: (f64, f64),
     /// Circles of the last grid that cut a mass but had no physical Spencer solution.
     pub unsolved: usize,
     /// The least Bishop F among them.
@@ -38,15 +39,16 @@ pub struct SearchReport {
 }
 
 impl SearchReport {
-    /// The report of the simple slope's search with given (`hard`) or automatic bounds.
-    pub fn of_simple(s: &SearchSolution, hard: bool) -> Self {
+    /// The report of the simple slope's search with given (`hard`) or automatic bounds; the
+    /// grid is relative to the lower end `lower_end` of its circles.
+    pub fn of_simple(s: &SearchSolution, hard: bool, lower_end: (f64, f64)) -> Self {
         Self {
             evaluations: s.evaluations,
             regrids: s.regrids,
             is_on_edge: s.is_on_edge,
             hard,
             grid: s.grid.clone(),
-            absolute: false,
+            origin: lower_end,
             unsolved: s.unsolved,
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
@@ -63,7 +65,7 @@ impl SearchReport {
             is_on_edge: s.is_on_edge,
             hard,
             grid: s.grid.clone(),
-            absolute: true,
+            origin: (0.0, 0.0),
             unsolved: s.unsolved,
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,

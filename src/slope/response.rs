@@ -20,6 +20,11 @@ pub struct GridDto {
     /// `factor_of_safety[j][i]` at (xs[i], ys[j]), the least over the radii tried on a
     /// section; null where the centre gives no circle with a solution.
     pub factor_of_safety: Vec<Vec<Option<f64>>>,
+    /// The columns' centre x in the request's coordinates (the simple slope: toe at the
+    /// origin; a section: equal to `xs`).
+    pub x_absolute: Vec<f64>,
+    /// The rows' centre y in the request's coordinates.
+    pub y_absolute: Vec<f64>,
 }
 
 /// How the search went.
@@ -106,8 +111,17 @@ pub struct SliceDto {
     pub mobilised_shear_strength: f64,
     /// Resultant Q of the two inter-slice forces, positive along (cos θ, sin θ).
     pub interslice_resultant: f64,
-    /// Inter-slice force on the crest-side boundary (compression positive; 0 at the exit).
+    /// Inter-slice force Z on the crest-side boundary (compression positive; 0 at the exit),
+    /// inclined at θ.
     pub interslice_force: f64,
+    /// Its normal component E = Z·cos θ (horizontal, on the vertical boundary; compression
+    /// positive).
+    pub interslice_normal: f64,
+    /// Its shear component X = Z·sin θ: the vertical force this slice passes to its crest-side
+    /// neighbour (up positive; the slice itself takes −X). 0 in Bishop's forces of
+    /// `moment_only`. Each slice balances W, the base's N and S, (E, X) of its toe-side
+    /// boundary and −(E, X) of its own.
+    pub interslice_shear: f64,
     /// The denominator m_α = cos(α−θ) + sin(α−θ)·tan φ'/F.
     pub m_alpha: f64,
 }
@@ -198,6 +212,14 @@ pub struct SpencerResponse {
     pub slice_count: usize,
     /// Per-slice geometry and forces (empty when not converged).
     pub slices: Vec<SliceDto>,
+    /// The resisting total: Σ (c' + σ'·tan φ')·l, the shear strength available along the slip
+    /// surface; null without slice forces.
+    #[schema(required = true)]
+    pub total_shear_strength: Option<f64>,
+    /// The driving total: Σ S, the shear mobilised along the slip surface (total_shear_strength
+    /// / F); null without slice forces.
+    #[schema(required = true)]
+    pub total_mobilised_shear: Option<f64>,
     /// Line of thrust on the interior slice boundaries (empty when not converged).
     pub thrust_line: Vec<BoundaryThrustPointDto>,
     /// Line of thrust of the effective inter-slice forces (the total less the pore water's
@@ -253,6 +275,8 @@ impl SpencerResponse {
         let warnings = warnings(solved);
         let model = problem.model();
         let to_x = |x: f64| problem.request_x(x);
+        // θ of the answer; Bishop's horizontal forces under `moment_only`.
+        let (sin_theta, cos_theta) = solution.theta_rad.unwrap_or(0.0).sin_cos();
         let slices = if has_forces {
             model
                 .slices
@@ -283,6 +307,8 @@ impl SpencerResponse {
                         mobilised_shear_strength: f.shear_force / s.base_length,
                         interslice_resultant: f.interslice_resultant,
                         interslice_force: f.interslice_force_right,
+                        interslice_normal: f.interslice_force_right * cos_theta,
+                        interslice_shear: f.interslice_force_right * sin_theta,
                         m_alpha: f.m_alpha,
                     }
                 })
@@ -290,6 +316,11 @@ impl SpencerResponse {
         } else {
             Vec::new()
         };
+        let totals = |f: fn(&SliceDto) -> f64| {
+            (!slices.is_empty()).then(|| slices.iter().map(f).sum::<f64>())
+        };
+        let total_shear_strength = totals(|s| s.available_shear_strength * s.base_length);
+        let total_mobilised_shear = totals(|s| s.shear_force);
         let point = |(x, y): (f64, f64)| PointDto { x, y };
         let circle = problem.circle().map(|c| CircleOutDto {
             x: c.centre.0 - c.lower_end.0,
@@ -323,6 +354,8 @@ impl SpencerResponse {
             surface: surface.into_iter().map(point).collect(),
             slice_count: model.slices.len(),
             slices,
+            total_shear_strength,
+            total_mobilised_shear,
             thrust_line: line(&solution.thrust_line),
             effective_thrust_line: line(&solution.effective_thrust_line),
             iterations: solution.iterations,
@@ -342,6 +375,8 @@ impl SpencerResponse {
                 xs: search.grid.xs.clone(),
                 ys: search.grid.ys.clone(),
                 factor_of_safety: search.grid.factors.clone(),
+                x_absolute: search.grid.xs.iter().map(|x| x + search.origin.0).collect(),
+                y_absolute: search.grid.ys.iter().map(|y| y + search.origin.1).collect(),
             }),
             methods: solved.methods.clone(),
             curves: solved.curves.as_ref().map(|c| CurvesDto {
