@@ -150,3 +150,98 @@ async fn the_search_grid_is_given_in_absolute_coordinates() {
         assert!((number(&grid["y_absolute"][j]) - number(&centre["y"])).abs() < 1e-9);
     }
 }
+
+/// `include` keeps only the details named: the others come back empty (the mechanism null),
+/// listed in `omitted`; the factor and everything else is the full answer's. At N = 10,000 the
+/// answer without details is a few hundred bytes instead of megabytes.
+#[tokio::test]
+async fn include_leaves_out_the_details_not_named() {
+    let server = Server::start().await;
+    let full_request = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 10_000},
+        "loads": [{"block": 2_500, "fy": -1.0}]
+    });
+    let (status, _, full) = server.post("/arch/live-load", &full_request).await;
+    assert_eq!(status, 200, "{full}");
+    assert_eq!(full["omitted"], json!([]));
+    assert_eq!(full["thrust_line"].as_array().unwrap().len(), 10_001);
+
+    let (status, _, bare) = server
+        .post(
+            "/arch/live-load",
+            &with(full_request.clone(), "include", json!([])),
+        )
+        .await;
+    assert_eq!(status, 200, "{bare}");
+    assert_eq!(bare["load_factor"], full["load_factor"]);
+    assert_eq!(bare["stable"], full["stable"]);
+    assert_eq!(bare["thrust_margin"], full["thrust_margin"]);
+    assert_eq!(bare["sliding_interfaces"], full["sliding_interfaces"]);
+    for empty in ["thrust_line", "hinges", "active_constraints", "reactions"] {
+        assert_eq!(bare[empty], json!([]), "{empty}");
+    }
+    assert_eq!(bare["mechanism"], Value::Null);
+    assert_eq!(
+        bare["omitted"],
+        json!([
+            "active_constraints",
+            "hinges",
+            "mechanism",
+            "thrust_line",
+            "reactions"
+        ])
+    );
+    let (bare_size, full_size) = (bare.to_string().len(), full.to_string().len());
+    assert!(
+        bare_size < 2_000 && full_size > 1_000_000,
+        "{bare_size} vs {full_size}"
+    );
+
+    // One detail named (twice: it counts once), null meaning all.
+    let (_, _, hinges) = server
+        .post(
+            "/arch/live-load",
+            &with(full_request.clone(), "include", json!(["hinges", "hinges"])),
+        )
+        .await;
+    assert_eq!(hinges["hinges"].as_array().unwrap().len(), 4);
+    assert_eq!(hinges["hinges"], full["hinges"]);
+    assert_eq!(hinges["thrust_line"], json!([]));
+    let (_, _, all) = server
+        .post(
+            "/arch/live-load",
+            &with(full_request, "include", Value::Null),
+        )
+        .await;
+    assert_eq!(all["omitted"], json!([]));
+    assert_eq!(all["hinges"], full["hinges"]);
+
+    // The slope: the totals and F stay, the slices go.
+    let (_, _, slope_full) = server.post("/slope/spencer", &spencer_example()).await;
+    let (status, _, slope) = server
+        .post(
+            "/slope/spencer",
+            &with(spencer_example(), "include", json!(["thrust_line"])),
+        )
+        .await;
+    assert_eq!(status, 200, "{slope}");
+    assert_eq!(slope["factor_of_safety"], slope_full["factor_of_safety"]);
+    assert_eq!(
+        slope["total_shear_strength"],
+        slope_full["total_shear_strength"]
+    );
+    assert_eq!(slope["thrust_line"], slope_full["thrust_line"]);
+    assert_eq!(slope["slices"], json!([]));
+    assert_eq!(
+        slope["omitted"],
+        json!(["surface", "slices", "effective_thrust_line", "grid"])
+    );
+    let (status, _, body) = server
+        .post(
+            "/slope/spencer",
+            &with(spencer_example(), "include", json!(["everything"])),
+        )
+        .await;
+    assert_eq!(status, 422, "{body}");
+    assert_eq!(body["field"], "include[0]");
+}

@@ -17,8 +17,8 @@ use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
 };
 use super::request::{
-    DeadLoadRequest, FrictionDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest, LoadDto,
-    MaterialFields,
+    ArchDetailDto, DeadLoadRequest, FrictionDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest,
+    LoadDto, MaterialFields,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -47,6 +47,8 @@ pub struct ArchInput {
     pub non_associative: bool,
     /// The fill, its extrados' shape and the road loads, for drawings.
     pub fill: Option<(Fill, Extrados, Vec<RoadLoad>)>,
+    /// The details the answer carries (`include`; all when not given).
+    pub include: Vec<ArchDetailDto>,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -226,7 +228,16 @@ fn input(
         has_passive: filled.passive.is_some(),
         non_associative: fields.friction == FrictionDto::NonAssociative,
         fill: filled.fill.map(|f| (f, shape, filled.road)),
+        include: include(fields.include),
     })
+}
+
+/// `include`: the details named (a repeated one counts once); all of them when not given.
+fn include(given: Option<&[ArchDetailDto]>) -> Vec<ArchDetailDto> {
+    ArchDetailDto::ALL
+        .into_iter()
+        .filter(|d| given.is_none_or(|g| g.contains(d)))
+        .collect()
 }
 
 /// Validates the unit weight, `interface_limits` (missing fields take Heyman's values, `null`

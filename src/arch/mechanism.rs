@@ -1,10 +1,54 @@
-//! The collapse mechanism in answers: block velocities, and the friction check that corrects
-//! it (Livesley 1978 §2.7–2.9; Gilbert, Casapulla & Ahmed 2006).
+//! The collapse mechanism in answers: its active limits, hinges (placed along the span) and
+//! block velocities, and the friction check that corrects it (Livesley 1978 §2.7–2.9;
+//! Gilbert, Casapulla & Ahmed 2006).
 
 use serde::Serialize;
 use thrustline_solver::arch::non_associative::NonAssociative;
-use thrustline_solver::arch::Mechanism;
+use thrustline_solver::arch::{Assembly, Bound, HingeSide, Mechanism};
 use utoipa::ToSchema;
+
+use super::codes::{BoundDto, HingeSideDto, ResultantDto};
+
+/// An active limit of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ActiveConstraintDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// The resultant: q, s (normal forces at the extrados/intrados ends), t (shear), u, v
+    /// (friction: μ(q+s) ∓ t).
+    pub resultant: ResultantDto,
+    /// Which limit: lower or upper.
+    pub bound: BoundDto,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// Where the hinge forms, for q and s at their lower limits: q → intrados, s → extrados.
+    #[schema(required = true)]
+    pub hinge: Option<HingeSideDto>,
+    /// The multiplier (plastic rate), with velocities normalised to a fastest corner speed of 1.
+    pub multiplier: f64,
+}
+
+/// A hinge of the collapse mechanism.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct HingeDto {
+    /// Interface number (1-based).
+    pub interface: usize,
+    /// Polar angle of the interface in degrees.
+    pub angle_deg: f64,
+    /// intrados or extrados.
+    pub location: HingeSideDto,
+    /// x of the hinge (the intrados or extrados end of the joint).
+    pub x: f64,
+    /// y of the hinge.
+    pub y: f64,
+    /// Horizontal distance of the hinge from the left end of the span: a chain's left
+    /// springing at the intrados (the clear span), an assembly's leftmost corner.
+    pub span_distance: f64,
+    /// `span_distance` as a fraction of the span (0 at the left end, 1 at the right).
+    pub span_fraction: f64,
+    /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
+    pub rotation: f64,
+}
 
 /// Virtual velocity of one block in the mechanism.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -80,4 +124,71 @@ impl NonAssociativeOutDto {
             corrected_mechanism: outcome.corrected.as_ref().map(MechanismDto::new),
         }
     }
+}
+
+/// The active limits of a mechanism, 1-based.
+pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
+    mechanism
+        .active
+        .iter()
+        .map(|a| ActiveConstraintDto {
+            interface: a.interface + 1,
+            resultant: a.resultant.into(),
+            bound: match a.bound {
+                Bound::Lower => BoundDto::Lower,
+                Bound::Upper => BoundDto::Upper,
+            },
+            angle_deg: a.angle_deg,
+            hinge: a.hinge.map(HingeSideDto::from),
+            multiplier: a.multiplier,
+        })
+        .collect()
+}
+
+/// The hinges of a mechanism, 1-based, placed on the joints of `assembly`.
+pub fn hinges(assembly: &Assembly, mechanism: &Mechanism) -> Vec<HingeDto> {
+    let (left, right) = span(assembly);
+    let width = (right - left).max(f64::MIN_POSITIVE);
+    mechanism
+        .hinges
+        .iter()
+        .map(|h| {
+            let interface = &assembly.interfaces[h.interface];
+            let (x, y) = match h.side {
+                HingeSide::Intrados => interface.intrados,
+                HingeSide::Extrados => interface.extrados,
+            };
+            HingeDto {
+                interface: h.interface + 1,
+                angle_deg: h.angle_deg,
+                location: h.side.into(),
+                x,
+                y,
+                span_distance: x - left,
+                span_fraction: (x - left) / width,
+                rotation: h.rotation,
+            }
+        })
+        .collect()
+}
+
+/// The ends of the span in x: a chain's springings at the intrados (the clear span), an
+/// assembly's extreme corners.
+fn span(assembly: &Assembly) -> (f64, f64) {
+    let springings = (assembly.is_chain())
+        .then(|| {
+            let first = assembly.interfaces.first()?.intrados.0;
+            let last = assembly.interfaces.last()?.intrados.0;
+            Some((first.min(last), first.max(last)))
+        })
+        .flatten();
+    springings.unwrap_or_else(|| {
+        assembly
+            .blocks
+            .iter()
+            .flat_map(|b| b.corners.iter())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(x, _)| {
+                (lo.min(x), hi.max(x))
+            })
+    })
 }

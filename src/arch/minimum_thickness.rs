@@ -13,8 +13,8 @@ use utoipa::ToSchema;
 
 use super::geometry::CircularGeometryDto;
 use super::input::{circular_arch, material};
+use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
-use super::response::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
 use crate::validation::number;

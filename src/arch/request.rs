@@ -44,6 +44,33 @@ pub enum FrictionDto {
     NonAssociative,
 }
 
+/// A detail of a dead- or live-load answer that `include` can leave out.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ArchDetailDto {
+    /// `thrust_line` (one point per interface).
+    ThrustLine,
+    /// `mechanism` (one velocity per block).
+    Mechanism,
+    /// `active_constraints`.
+    ActiveConstraints,
+    /// `hinges`.
+    Hinges,
+    /// `reactions`.
+    Reactions,
+}
+
+impl ArchDetailDto {
+    /// Every detail, in the order of the answer.
+    pub const ALL: [Self; 5] = [
+        Self::ActiveConstraints,
+        Self::Hinges,
+        Self::Mechanism,
+        Self::ThrustLine,
+        Self::Reactions,
+    ];
+}
+
 /// Limits on the interface resultants (absolute forces). A missing field takes Heyman's value
 /// (q_min = s_min = 0, the rest unbounded); `null` means unbounded.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, ToSchema)]
@@ -139,6 +166,8 @@ pub struct LimitFields<'a> {
     pub crushing_planes: Option<usize>,
     /// `friction`.
     pub friction: FrictionDto,
+    /// `include`: the details to answer with; `None` is all of them.
+    pub include: Option<&'a [ArchDetailDto]>,
     /// The material.
     pub material: MaterialFields<'a>,
 }
@@ -235,6 +264,14 @@ macro_rules! limit_request {
                 #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
                 #[schema(nullable)]
                 pub friction: FrictionDto,
+                /// The details to answer with, of `thrust_line`, `mechanism`,
+                /// `active_constraints`, `hinges`, `reactions` (a client that needs only λ
+                /// need not take 10,000 thrust-line points). Those left out come back empty
+                /// (`mechanism` null) and are listed in `omitted`; factors, statuses, margins
+                /// and the other fields are always there. Defaults to all of them. Drawings
+                /// ignore it.
+                #[serde(default)]
+                pub include: Option<Vec<ArchDetailDto>>,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }
         }
@@ -249,6 +286,7 @@ macro_rules! limit_request {
                     compressive_strength: self.compressive_strength,
                     crushing_planes: self.crushing_planes,
                     friction: self.friction,
+                    include: self.include.as_deref(),
                     material: self.material(),
                 }
             }

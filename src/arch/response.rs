@@ -4,58 +4,16 @@
 use serde::Serialize;
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    support_reactions, Assembly, Bound, HingeSide, LimitSolution, LimitStatus, Mechanism,
-    SolverFailure, ThrustPoint,
+    support_reactions, LimitSolution, LimitStatus, SolverFailure, ThrustPoint,
 };
 use utoipa::ToSchema;
 
 use super::fill::{passive_out, PassiveOutDto, RollingOutDto};
 use super::input::ArchInput;
-use super::mechanism::{MechanismDto, NonAssociativeOutDto};
-use super::request::FormulationDto;
-
-pub use super::codes::{BoundDto, HingeSideDto, ResultantDto};
-
-/// An active limit of the collapse mechanism.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct ActiveConstraintDto {
-    /// Interface number (1-based).
-    pub interface: usize,
-    /// The resultant: q, s (normal forces at the extrados/intrados ends), t (shear), u, v
-    /// (friction: μ(q+s) ∓ t).
-    pub resultant: ResultantDto,
-    /// Which limit: lower or upper.
-    pub bound: BoundDto,
-    /// Polar angle of the interface in degrees.
-    pub angle_deg: f64,
-    /// Where the hinge forms, for q and s at their lower limits: q → intrados, s → extrados.
-    #[schema(required = true)]
-    pub hinge: Option<HingeSideDto>,
-    /// The multiplier (plastic rate), with velocities normalised to a fastest corner speed of 1.
-    pub multiplier: f64,
-}
-
-/// A hinge of the collapse mechanism.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct HingeDto {
-    /// Interface number (1-based).
-    pub interface: usize,
-    /// Polar angle of the interface in degrees.
-    pub angle_deg: f64,
-    /// intrados or extrados.
-    pub location: HingeSideDto,
-    /// x of the hinge (the intrados or extrados end of the joint).
-    pub x: f64,
-    /// y of the hinge.
-    pub y: f64,
-    /// Horizontal distance of the hinge from the left end of the span: a chain's left
-    /// springing at the intrados (the clear span), an assembly's leftmost corner.
-    pub span_distance: f64,
-    /// `span_distance` as a fraction of the span (0 at the left end, 1 at the right).
-    pub span_fraction: f64,
-    /// Rotation rate of the higher-numbered block relative to the lower one (counter-clockwise).
-    pub rotation: f64,
-}
+use super::mechanism::{
+    active_constraints, hinges, ActiveConstraintDto, HingeDto, MechanismDto, NonAssociativeOutDto,
+};
+use super::request::{ArchDetailDto, FormulationDto};
 
 /// The resultant at one interface.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -200,6 +158,8 @@ pub struct ArchOutcomeDto {
     pub reactions: Vec<ReactionDto>,
     /// How the solve ended.
     pub solver: SolverDto,
+    /// The details `include` left out (returned empty, `mechanism` null); empty by default.
+    pub omitted: Vec<ArchDetailDto>,
 }
 
 /// Answer to the dead-load problem.
@@ -295,20 +255,33 @@ fn passive(solved: &SolvedArch) -> Option<Vec<PassiveOutDto>> {
 impl ArchOutcomeDto {
     fn new(solved: &SolvedArch) -> Self {
         let solution = &solved.solution;
+        let included = |detail| solved.input.include.contains(&detail);
+        let omitted: Vec<ArchDetailDto> = ArchDetailDto::ALL
+            .into_iter()
+            .filter(|&d| !included(d))
+            .collect();
         let mechanism = solution.mechanism.as_ref();
+        let detail = |d| mechanism.filter(|_| included(d));
+        let thrust_line: &[_] = if included(ArchDetailDto::ThrustLine) {
+            &solved.thrust_line
+        } else {
+            &[]
+        };
         let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
         Self {
             stable: solution.dead_load_carried,
             dead_load_margin: solution.dead_load_margin,
-            active_constraints: mechanism.map(active_constraints).unwrap_or_default(),
-            hinges: mechanism
+            active_constraints: detail(ArchDetailDto::ActiveConstraints)
+                .map(active_constraints)
+                .unwrap_or_default(),
+            hinges: detail(ArchDetailDto::Hinges)
                 .map(|m| hinges(solved.input.problem.assembly(), m))
                 .unwrap_or_default(),
             sliding_interfaces: mechanism.map(|m| one_based(&m.sliding)).unwrap_or_default(),
             crushing_interfaces: mechanism
                 .map(|m| one_based(&m.crushing))
                 .unwrap_or_default(),
-            mechanism: mechanism.map(MechanismDto::new),
+            mechanism: detail(ArchDetailDto::Mechanism).map(MechanismDto::new),
             friction_may_overestimate: !solved.input.non_associative
                 && solved
                     .friction
@@ -318,8 +291,7 @@ impl ArchOutcomeDto {
                 (solved.input.non_associative || f.history.len() > 1)
                     .then(|| NonAssociativeOutDto::new(f))
             }),
-            thrust_line: solved
-                .thrust_line
+            thrust_line: thrust_line
                 .iter()
                 .map(|t| InterfaceThrustPointDto {
                     interface: t.interface + 1,
@@ -339,6 +311,7 @@ impl ArchOutcomeDto {
                 .map(|r| 0.5 - r.abs())
                 .reduce(f64::min),
             reactions: support_reactions(solved.input.problem.assembly(), &solution.resultants)
+                .filter(|_| included(ArchDetailDto::Reactions))
                 .map(|pair| {
                     pair.iter()
                         .map(|r| ReactionDto {
@@ -357,6 +330,7 @@ impl ArchOutcomeDto {
                 formulation: solved.input.settings.formulation.into(),
                 tolerance: solved.input.settings.tolerance,
             },
+            omitted,
         }
     }
 }
@@ -368,71 +342,4 @@ impl From<thrustline_solver::arch::Formulation> for FormulationDto {
             thrustline_solver::arch::Formulation::Assembly => Self::Assembly,
         }
     }
-}
-
-/// The active limits of a mechanism, 1-based.
-pub fn active_constraints(mechanism: &Mechanism) -> Vec<ActiveConstraintDto> {
-    mechanism
-        .active
-        .iter()
-        .map(|a| ActiveConstraintDto {
-            interface: a.interface + 1,
-            resultant: a.resultant.into(),
-            bound: match a.bound {
-                Bound::Lower => BoundDto::Lower,
-                Bound::Upper => BoundDto::Upper,
-            },
-            angle_deg: a.angle_deg,
-            hinge: a.hinge.map(HingeSideDto::from),
-            multiplier: a.multiplier,
-        })
-        .collect()
-}
-
-/// The hinges of a mechanism, 1-based, placed on the joints of `assembly`.
-pub fn hinges(assembly: &Assembly, mechanism: &Mechanism) -> Vec<HingeDto> {
-    let (left, right) = span(assembly);
-    let width = (right - left).max(f64::MIN_POSITIVE);
-    mechanism
-        .hinges
-        .iter()
-        .map(|h| {
-            let interface = &assembly.interfaces[h.interface];
-            let (x, y) = match h.side {
-                HingeSide::Intrados => interface.intrados,
-                HingeSide::Extrados => interface.extrados,
-            };
-            HingeDto {
-                interface: h.interface + 1,
-                angle_deg: h.angle_deg,
-                location: h.side.into(),
-                x,
-                y,
-                span_distance: x - left,
-                span_fraction: (x - left) / width,
-                rotation: h.rotation,
-            }
-        })
-        .collect()
-}
-
-/// The ends of the span in x: a chain's springings at the intrados (the clear span), an
-/// assembly's extreme corners.
-fn span(assembly: &Assembly) -> (f64, f64) {
-    let springings = (assembly.is_chain())
-        .then(|| {
-            let first = assembly.interfaces.first()?.intrados.0;
-            let last = assembly.interfaces.last()?.intrados.0;
-            Some((first.min(last), first.max(last)))
-        })
-        .flatten();
-    springings.unwrap_or_else(|| {
-        assembly
-            .blocks
-            .iter()
-            .flat_map(|b| b.corners.iter())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(x, _)| {
-                (lo.min(x), hi.max(x))
-            })
-    })
 }

@@ -9,6 +9,7 @@ pub mod analysed;
 pub mod drawing;
 pub mod input;
 pub mod methods;
+pub mod outputs;
 pub mod report;
 pub mod request;
 pub mod response;
@@ -90,7 +91,9 @@ pub async fn spencer(
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
     let solved = solve(&state, request.validate()?).await?;
-    Ok(ApiJson(SpencerResponse::new(&solved)))
+    Ok(ApiJson(
+        SpencerResponse::new(&solved).with_details(request.include.as_deref()),
+    ))
 }
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and

@@ -158,6 +158,12 @@ pub struct SpencerRequest {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub negative_effective_stress: NegativeEffectiveStressDto,
+    /// The details to answer with, of `surface`, `slices`, `thrust_line`,
+    /// `effective_thrust_line`, `grid`. Those left out come back empty (`grid` absent) and are
+    /// listed in `omitted`; F, θ, the totals and the other fields are always there. Defaults to
+    /// all of them. Drawings ignore it.
+    #[serde(default)]
+    pub include: Option<Vec<super::response::SlopeDetailDto>>,
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]

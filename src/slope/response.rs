@@ -1,66 +1,41 @@
 //! The Spencer answer, built whole from the solver's results: slices numbered from 1 at the
 //! lower end of the slip surface, angles in degrees.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use thrustline_solver::slope::{Sliced, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
+use super::outputs::{CurvesDto, GridDto, SearchOutDto};
 use super::report::SolvedSlope;
 use super::warnings::warnings;
 
 use utoipa::ToSchema;
 
-/// F over the grid of centres, for contour plots.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct GridDto {
-    /// Centre x of the grid columns (simple slope: from the lower end; section: absolute).
-    pub xs: Vec<f64>,
-    /// Centre y of the grid rows (simple slope: above the lower end; section: absolute).
-    pub ys: Vec<f64>,
-    /// `factor_of_safety[j][i]` at (xs[i], ys[j]), the least over the radii tried on a
-    /// section; null where the centre gives no circle with a solution.
-    pub factor_of_safety: Vec<Vec<Option<f64>>>,
-    /// The columns' centre x in the request's coordinates (the simple slope: toe at the
-    /// origin; a section: equal to `xs`).
-    pub x_absolute: Vec<f64>,
-    /// The rows' centre y in the request's coordinates.
-    pub y_absolute: Vec<f64>,
+/// A detail of the answer that `include` can leave out.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum SlopeDetailDto {
+    /// `slices`.
+    Slices,
+    /// `surface`.
+    Surface,
+    /// `thrust_line`.
+    ThrustLine,
+    /// `effective_thrust_line`.
+    EffectiveThrustLine,
+    /// `grid` (with `search`).
+    Grid,
 }
 
-/// How the search went.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct SearchOutDto {
-    /// Circles evaluated (grid and refinement).
-    pub evaluations: usize,
-    /// Times the grid moved because the minimum lay on its edge.
-    pub regrids: usize,
-    /// Whether the minimum still lies on the edge of the region searched.
-    pub on_edge: bool,
-    /// Circles of the last grid that cut a sliding mass but whose equations have no physical
-    /// solution.
-    pub unsolved: usize,
-    /// The least Bishop F among those circles (null when none has one): when it is below the
-    /// answer's F, the critical surface may hide among them (see `warnings`).
-    #[schema(required = true)]
-    pub unsolved_bishop_minimum: Option<f64>,
-    /// Whether circles without a solution lie at or next to the grid centre of the minimum
-    /// (the least F found may then not be the least F there is).
-    pub unsolved_near_minimum: bool,
-    /// With `shape: noncircular`: F after each round of the polyline search, starting from the
-    /// critical circle's polyline.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub path: Option<Vec<f64>>,
-}
-
-/// Spencer's figure: F from each equation alone against θ; they cross at the answer.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct CurvesDto {
-    /// Inclinations θ in degrees.
-    pub theta_deg: Vec<f64>,
-    /// F_f(θ), from force equilibrium; null where it has no root.
-    pub force_factor: Vec<Option<f64>>,
-    /// F_m(θ), from moment equilibrium; null where it has no root.
-    pub moment_factor: Vec<Option<f64>>,
+impl SlopeDetailDto {
+    /// Every detail, in the order of the answer.
+    pub const ALL: [Self; 5] = [
+        Self::Surface,
+        Self::Slices,
+        Self::ThrustLine,
+        Self::EffectiveThrustLine,
+        Self::Grid,
+    ];
 }
 
 /// A point in the plane of the section.
@@ -250,6 +225,8 @@ pub struct SpencerResponse {
     /// With `slice_tolerance`: F at each number of slices tried, the last one answered.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slice_refinement: Option<Vec<SliceRefinementDto>>,
+    /// The details `include` left out (returned empty, `grid` absent); empty by default.
+    pub omitted: Vec<SlopeDetailDto>,
 }
 
 /// One step of the slice refinement.
@@ -263,6 +240,28 @@ pub struct SliceRefinementDto {
 }
 
 impl SpencerResponse {
+    /// The answer with only the details of `include` (all when `None`); the totals and every
+    /// headline figure stay.
+    pub fn with_details(mut self, include: Option<&[SlopeDetailDto]>) -> Self {
+        let Some(include) = include else {
+            return self;
+        };
+        for detail in SlopeDetailDto::ALL {
+            if include.contains(&detail) {
+                continue;
+            }
+            match detail {
+                SlopeDetailDto::Slices => self.slices = Vec::new(),
+                SlopeDetailDto::Surface => self.surface = Vec::new(),
+                SlopeDetailDto::ThrustLine => self.thrust_line = Vec::new(),
+                SlopeDetailDto::EffectiveThrustLine => self.effective_thrust_line = Vec::new(),
+                SlopeDetailDto::Grid => self.grid = None,
+            }
+            self.omitted.push(detail);
+        }
+        self
+    }
+
     /// The answer to a solved request.
     pub fn new(solved: &SolvedSlope) -> Self {
         let (problem, solution) = (&solved.problem, &solved.solution);
@@ -393,6 +392,7 @@ impl SpencerResponse {
                     })
                     .collect()
             }),
+            omitted: Vec::new(),
         }
     }
 }

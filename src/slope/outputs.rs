@@ -1,0 +1,58 @@
+//! The optional parts of the Spencer answer: how a search went, F over its grid of centres,
+//! and Spencer's two curves.
+
+use serde::Serialize;
+use utoipa::ToSchema;
+
+/// F over the grid of centres, for contour plots.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GridDto {
+    /// Centre x of the grid columns (simple slope: from the lower end; section: absolute).
+    pub xs: Vec<f64>,
+    /// Centre y of the grid rows (simple slope: above the lower end; section: absolute).
+    pub ys: Vec<f64>,
+    /// `factor_of_safety[j][i]` at (xs[i], ys[j]), the least over the radii tried on a
+    /// section; null where the centre gives no circle with a solution.
+    pub factor_of_safety: Vec<Vec<Option<f64>>>,
+    /// The columns' centre x in the request's coordinates (the simple slope: toe at the
+    /// origin; a section: equal to `xs`).
+    pub x_absolute: Vec<f64>,
+    /// The rows' centre y in the request's coordinates.
+    pub y_absolute: Vec<f64>,
+}
+
+/// How the search went.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SearchOutDto {
+    /// Circles evaluated (grid and refinement).
+    pub evaluations: usize,
+    /// Times the grid moved because the minimum lay on its edge.
+    pub regrids: usize,
+    /// Whether the minimum still lies on the edge of the region searched.
+    pub on_edge: bool,
+    /// Circles of the last grid that cut a sliding mass but whose equations have no physical
+    /// solution.
+    pub unsolved: usize,
+    /// The least Bishop F among those circles (null when none has one): when it is below the
+    /// answer's F, the critical surface may hide among them (see `warnings`).
+    #[schema(required = true)]
+    pub unsolved_bishop_minimum: Option<f64>,
+    /// Whether circles without a solution lie at or next to the grid centre of the minimum
+    /// (the least F found may then not be the least F there is).
+    pub unsolved_near_minimum: bool,
+    /// With `shape: noncircular`: F after each round of the polyline search, starting from the
+    /// critical circle's polyline.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path: Option<Vec<f64>>,
+}
+
+/// Spencer's figure: F from each equation alone against θ; they cross at the answer.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct CurvesDto {
+    /// Inclinations θ in degrees.
+    pub theta_deg: Vec<f64>,
+    /// F_f(θ), from force equilibrium; null where it has no root.
+    pub force_factor: Vec<Option<f64>>,
+    /// F_m(θ), from moment equilibrium; null where it has no root.
+    pub moment_factor: Vec<Option<f64>>,
+}
