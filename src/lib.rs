@@ -29,6 +29,7 @@ pub mod page;
 pub mod pool;
 pub mod slope;
 pub mod svg;
+pub mod table;
 pub mod validation;
 
 use std::future::Future;

@@ -35,7 +35,12 @@ use utoipa::OpenApi;
         crate::slope::spencer,
         crate::slope::spencer_svg
     ),
-    components(schemas(crate::error::Problem)),
+    components(schemas(
+        crate::error::Problem,
+        crate::arch::tables::ArchTableDto,
+        crate::arch::tables::MinimumThicknessTableDto,
+        crate::slope::tables::SlopeTableDto
+    )),
     tags(
         (name = "arch", description = "Limit analysis of rigid-block arches (Livesley 1978)"),
         (name = "slope", description = "Embankment stability by Spencer's method"),

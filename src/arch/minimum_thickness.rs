@@ -3,7 +3,9 @@
 //! is optional (given, the answer adds the geometric factor of safety), plus an optional
 //! `tolerance` relative to the radius.
 
-use axum::extract::State;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Query, State};
+use axum::http::HeaderMap;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
     rupture_angle_deg, solve_minimum_thickness, CircularArch, LimitSettings, MinimumThickness,
@@ -15,8 +17,10 @@ use super::geometry::CircularGeometryDto;
 use super::input::{circular_arch, material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
+use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
+use crate::table::{csv, wants_csv, Answer};
 use crate::validation::number;
 use crate::AppState;
 
@@ -117,15 +121,22 @@ pub struct MinimumThicknessResponse {
         ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748 (SPEC §1.4)",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
     )),
+    params(MinimumThicknessTableQuery),
     responses(
-        (status = 200, description = "The minimum thickness, or the reason there is none", body = MinimumThicknessResponse),
+        (status = 200, description = "The minimum thickness, or the reason there is none; with `Accept: text/csv`, the `table` asked for", content(
+            (MinimumThicknessResponse = "application/json"),
+            (String = "text/csv")
+        )),
         ProblemResponses,
     )
 )]
 pub async fn minimum_thickness(
     State(state): State<AppState>,
+    headers: HeaderMap,
+    query: Result<Query<MinimumThicknessTableQuery>, QueryRejection>,
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
-) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
+) -> Result<Answer<MinimumThicknessResponse>, ApiError> {
+    let table = crate::table::query(query)?.table;
     let g = &request.geometry;
     let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
     for (field, many) in [
@@ -193,7 +204,15 @@ pub async fn minimum_thickness(
             advice: "use a larger tolerance or fewer voussoirs",
         });
     }
-    Ok(ApiJson(response(&arch, &result, given)))
+    let answer = response(&arch, &result, given);
+    if wants_csv(&headers) {
+        return match table.unwrap_or_default() {
+            MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
+            MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
+        }
+        .map(Answer::Csv);
+    }
+    Ok(Answer::Json(answer))
 }
 
 /// The answer, built whole for each outcome.

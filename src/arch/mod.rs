@@ -16,8 +16,11 @@ pub mod mechanism;
 pub mod minimum_thickness;
 pub mod request;
 pub mod response;
+pub mod tables;
 
-use axum::extract::State;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Query, State};
+use axum::http::HeaderMap;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
@@ -28,10 +31,12 @@ use thrustline_solver::arch::{
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::svg::Svg;
+use crate::table::{wants_csv, Answer};
 use crate::AppState;
 use input::ArchInput;
 use request::{DeadLoadRequest, LiveLoadRequest};
 use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
+use tables::{arch_table, ArchTableQuery};
 
 /// Dead-load limit analysis (Livesley's λ₀).
 ///
@@ -49,22 +54,34 @@ use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
         ("milankovitch_falls" = (summary = "The same, D = 1.0747: five hinges (SPEC §1.4)",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
     )),
+    params(ArchTableQuery),
     responses(
-        (status = 200, description = "The dead-load factor, mechanism and thrust line", body = DeadLoadResponse),
+        (status = 200, description = "The dead-load factor, mechanism and thrust line; with `Accept: text/csv`, the `table` asked for", content(
+            (DeadLoadResponse = "application/json"),
+            (String = "text/csv")
+        )),
         ProblemResponses,
     )
 )]
 pub async fn dead_load(
     State(state): State<AppState>,
+    headers: HeaderMap,
+    query: Result<Query<ArchTableQuery>, QueryRejection>,
     ApiJson(request): ApiJson<DeadLoadRequest>,
-) -> Result<ApiJson<DeadLoadResponse>, ApiError> {
+) -> Result<Answer<DeadLoadResponse>, ApiError> {
+    let table = crate::table::query(query)?.table;
     let solved = solve(
         &state,
         Problem::DeadLoad,
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    Ok(ApiJson(DeadLoadResponse::new(&solved)))
+    let answer = DeadLoadResponse::new(&solved);
+    if wants_csv(&headers) {
+        let table = table.unwrap_or_default();
+        return arch_table(&answer.outcome, None, table).map(Answer::Csv);
+    }
+    Ok(Answer::Json(answer))
 }
 
 /// Dead-load limit analysis drawn: voussoirs, thrust line, hinges, mechanism.
@@ -127,22 +144,34 @@ pub async fn dead_load_svg(
                            "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],
                                        "x_start": -12.0, "x_end": 10.0, "positions": 101}})))
     )),
+    params(ArchTableQuery),
     responses(
-        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried", body = LiveLoadResponse),
+        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried; with `Accept: text/csv`, the `table` asked for", content(
+            (LiveLoadResponse = "application/json"),
+            (String = "text/csv")
+        )),
         ProblemResponses,
     )
 )]
 pub async fn live_load(
     State(state): State<AppState>,
+    headers: HeaderMap,
+    query: Result<Query<ArchTableQuery>, QueryRejection>,
     ApiJson(request): ApiJson<LiveLoadRequest>,
-) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
+) -> Result<Answer<LiveLoadResponse>, ApiError> {
+    let table = crate::table::query(query)?.table;
     let solved = solve(
         &state,
         Problem::LiveLoad,
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    Ok(ApiJson(LiveLoadResponse::new(&solved)))
+    let answer = LiveLoadResponse::new(&solved);
+    if wants_csv(&headers) {
+        let table = table.unwrap_or_default();
+        return arch_table(&answer.outcome, answer.rolling.as_ref(), table).map(Answer::Csv);
+    }
+    Ok(Answer::Json(answer))
 }
 
 /// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.

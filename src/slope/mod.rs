@@ -14,11 +14,14 @@ pub mod report;
 pub mod request;
 pub mod response;
 pub mod section;
+pub mod tables;
 pub mod warnings;
 
 use std::time::{Duration, Instant};
 
-use axum::extract::State;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Query, State};
+use axum::http::HeaderMap;
 use thrustline_solver::slope::{
     factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
     RefinementStatus, SearchSettings, SearchStatus, Sliced, SlopeProblem, SolverFailure,
@@ -28,6 +31,7 @@ use thrustline_solver::slope::{
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::MAX_SLICES;
 use crate::svg::Svg;
+use crate::table::{wants_csv, Answer};
 use crate::AppState;
 use analysed::Analysed;
 use input::{SectionSearch, SpencerInput, Target};
@@ -35,6 +39,7 @@ use report::SearchReport;
 use report::{Refinement, SolvedSlope};
 use request::SpencerRequest;
 use response::SpencerResponse;
+use tables::{slope_table, SlopeTableQuery};
 use thrustline_solver::slope::section::noncircular::search_noncircular;
 use thrustline_solver::slope::section::search::{search_circles, CircleSearchSettings};
 use thrustline_solver::slope::section::{Polyline, SectionProblem, SlipShape};
@@ -81,19 +86,28 @@ use thrustline_solver::slope::section::{Polyline, SectionProblem, SlipShape};
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
                                     "pore_pressure_ratio": 0.5}})))
     )),
+    params(SlopeTableQuery),
     responses(
-        (status = 200, description = "Solved, or an honest `converged: false`", body = SpencerResponse),
+        (status = 200, description = "Solved, or an honest `converged: false`; with `Accept: text/csv`, the `table` asked for", content(
+            (SpencerResponse = "application/json"),
+            (String = "text/csv")
+        )),
         ProblemResponses,
     )
 )]
 pub async fn spencer(
     State(state): State<AppState>,
+    headers: HeaderMap,
+    query: Result<Query<SlopeTableQuery>, QueryRejection>,
     ApiJson(request): ApiJson<SpencerRequest>,
-) -> Result<ApiJson<SpencerResponse>, ApiError> {
+) -> Result<Answer<SpencerResponse>, ApiError> {
+    let table = crate::table::query(query)?.table;
     let solved = solve(&state, request.validate()?).await?;
-    Ok(ApiJson(
-        SpencerResponse::new(&solved).with_details(request.include.as_deref()),
-    ))
+    let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
+    if wants_csv(&headers) {
+        return slope_table(&answer, table.unwrap_or_default()).map(Answer::Csv);
+    }
+    Ok(Answer::Json(answer))
 }
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and

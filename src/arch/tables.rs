@@ -1,0 +1,149 @@
+//! The arch answers as CSV tables (`Accept: text/csv`, `?table=`): which tables there are and
+//! their columns.
+
+use serde::{Deserialize, Serialize};
+use utoipa::{IntoParams, ToSchema};
+
+use super::fill::RollingOutDto;
+use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
+use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
+use crate::error::ApiError;
+use crate::table::{csv, Csv, Row};
+
+/// A table of a dead- or live-load answer.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ArchTableDto {
+    /// `thrust_line`: one row per interface.
+    #[default]
+    ThrustLine,
+    /// `hinges`.
+    Hinges,
+    /// `active_constraints`.
+    ActiveConstraints,
+    /// `reactions`: one row per support contact.
+    Reactions,
+    /// `mechanism`: one row per block (its velocity).
+    Mechanism,
+    /// `rolling`: λ at each stop (live load with `rolling` only).
+    Rolling,
+}
+
+/// The query of a dead- or live-load route.
+#[derive(Debug, Clone, Copy, Deserialize, IntoParams)]
+#[into_params(parameter_in = Query)]
+pub struct ArchTableQuery {
+    /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names;
+    /// lengths, forces and moments in the request's units, angles in degrees, empty cells for
+    /// null). Defaults to `thrust_line`. Ignored for JSON.
+    pub table: Option<ArchTableDto>,
+}
+
+/// A table of a minimum-thickness answer.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum MinimumThicknessTableDto {
+    /// `hinges` of the mechanism at the limit.
+    #[default]
+    Hinges,
+    /// `active_constraints` at the limit.
+    ActiveConstraints,
+}
+
+/// The query of the minimum-thickness route.
+#[derive(Debug, Clone, Copy, Deserialize, IntoParams)]
+#[into_params(parameter_in = Query)]
+pub struct MinimumThicknessTableQuery {
+    /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names).
+    /// Defaults to `hinges`. Ignored for JSON.
+    pub table: Option<MinimumThicknessTableDto>,
+}
+
+impl Row for InterfaceThrustPointDto {
+    const COLUMNS: &'static [&'static str] = &[
+        "interface",
+        "x",
+        "y",
+        "normal_force",
+        "shear_force",
+        "eccentricity",
+        "eccentricity_ratio",
+        "in_middle_third",
+    ];
+}
+
+impl Row for HingeDto {
+    const COLUMNS: &'static [&'static str] = &[
+        "interface",
+        "angle_deg",
+        "location",
+        "x",
+        "y",
+        "span_distance",
+        "span_fraction",
+        "rotation",
+    ];
+}
+
+impl Row for ActiveConstraintDto {
+    const COLUMNS: &'static [&'static str] = &[
+        "interface",
+        "resultant",
+        "bound",
+        "angle_deg",
+        "hinge",
+        "multiplier",
+    ];
+}
+
+impl Row for ReactionDto {
+    const COLUMNS: &'static [&'static str] = &["interface", "horizontal", "vertical"];
+}
+
+impl Row for BlockVelocityDto {
+    const COLUMNS: &'static [&'static str] = &["block", "u", "v", "rotation"];
+}
+
+/// One stop of a rolling load.
+#[derive(Debug, Clone, Copy, Serialize)]
+struct RollingRow {
+    position: f64,
+    load_factor: Option<f64>,
+}
+
+impl Row for RollingRow {
+    const COLUMNS: &'static [&'static str] = &["position", "load_factor"];
+}
+
+/// The table of a dead- or live-load answer.
+pub fn arch_table(
+    outcome: &ArchOutcomeDto,
+    rolling: Option<&RollingOutDto>,
+    table: ArchTableDto,
+) -> Result<Csv, ApiError> {
+    match table {
+        ArchTableDto::ThrustLine => csv(&outcome.thrust_line),
+        ArchTableDto::Hinges => csv(&outcome.hinges),
+        ArchTableDto::ActiveConstraints => csv(&outcome.active_constraints),
+        ArchTableDto::Reactions => csv(&outcome.reactions),
+        ArchTableDto::Mechanism => match &outcome.mechanism {
+            Some(mechanism) => csv(&mechanism.blocks),
+            None => csv::<BlockVelocityDto>(&[]),
+        },
+        ArchTableDto::Rolling => {
+            let rolling = rolling.ok_or_else(|| {
+                ApiError::invalid("table", "rolling is the table of a live load with rolling")
+            })?;
+            let rows: Vec<RollingRow> = rolling
+                .positions
+                .iter()
+                .zip(&rolling.load_factor)
+                .map(|(&position, &load_factor)| RollingRow {
+                    position,
+                    load_factor,
+                })
+                .collect();
+            csv(&rows)
+        }
+    }
+}
