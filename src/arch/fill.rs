@@ -166,7 +166,8 @@ pub struct FillLoads {
     pub road: Vec<RoadLoad>,
 }
 
-/// The fill's and the road's loads on `assembly` (whose extrados is `shape`).
+/// The fill's and the road's loads on `assembly` (whose extrados is `shape`). Nothing to do,
+/// and no extrados sampled, for a request without fill, road loads or rolling.
 pub fn fill_loads(
     assembly: &Assembly,
     shape: Extrados,
@@ -174,6 +175,9 @@ pub fn fill_loads(
     road_loads: &[RoadLoadDto],
     rolling: Option<&RollingDto>,
 ) -> Result<FillLoads, ApiError> {
+    if fill.is_none() && road_loads.is_empty() && rolling.is_none() {
+        return Ok(FillLoads::default());
+    }
     let top = extrados_top(assembly, shape);
     let dto_passive = fill.and_then(|f| f.passive.as_ref());
     let fill = match fill {
