@@ -20,6 +20,8 @@ def bench(name, path, body, key):
 sp = {"slope": {"height": 30.48, "length": 60.96}, "circle": {"x": 9.63168, "y": 63.76416}, "soil": {"unit_weight": 10, "cohesion": 6.096, "friction_angle_deg": 40, "pore_pressure_ratio": 0.5}}
 for n in [100, 1000]:
     bench(f"Spencer, one circle, {n} slices", "/slope/spencer", dict(sp, slices=n), lambda d: d["solve_time_ms"])
+for n in [21, 50]:
+    bench(f"Spencer critical circle, {n} × {n} grid + refinement, 50 slices", "/slope/spencer", dict(sp, slices=50, circle=None, search={"nx": n, "ny": n}), lambda d: d["solve_time_ms"])
 for n in [10, 100, 1800, 10000]:
     for f in ["chain", "assembly"]:
         bench(f"arch dead load, N = {n}, D = 1.0747 ({f})", "/arch/dead-load", {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.0747, "voussoirs": n}, "formulation": f}, lambda d: d["solver"]["time_ms"])

@@ -306,6 +306,23 @@ where
     async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
         let axum::Json(value) =
             axum::Json::<serde_json::Value>::from_request(request, state).await?;
+        if !value.is_object() {
+            return Err(ApiError::BadRequest {
+                status: StatusCode::UNPROCESSABLE_ENTITY,
+                detail: format!(
+                    "body: expected a JSON object, found {}",
+                    match &value {
+                        serde_json::Value::Null => "null",
+                        serde_json::Value::Bool(_) => "a boolean",
+                        serde_json::Value::Number(_) => "a number",
+                        serde_json::Value::String(_) => "a string",
+                        serde_json::Value::Array(_) => "an array",
+                        serde_json::Value::Object(_) => "an object",
+                    }
+                ),
+                field: Some("body".to_owned()),
+            });
+        }
         let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
             let detail = bounded(joined_paths(in_plain_words(&format!(
                 "Failed to deserialize the JSON body into the target type: {e}"

@@ -332,6 +332,10 @@ async fn arrays_are_not_read_as_objects() {
             "slope",
         ),
         ("/arch/dead-load", json!([{"kind": "circular"}]), "body"),
+        // Not an object at all: the body is at fault, and says so.
+        ("/arch/dead-load", json!(null), "body"),
+        ("/slope/spencer", json!(5), "body"),
+        ("/arch/minimum-thickness", json!("geometry"), "body"),
     ];
     for (path, body, field) in cases {
         let (status, content_type, answer) = server.post(path, &body).await;
