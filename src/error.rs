@@ -94,12 +94,16 @@ pub enum ApiError {
     Overloaded {
         /// Solves already waiting.
         queued: usize,
+        /// Seconds until a worker is likely free (the `Retry-After`).
+        retry_after: u64,
     },
     /// The solve did not finish within the request's time limit.
     #[error("the calculation did not finish within {seconds} s")]
     TimedOut {
         /// The limit that was exceeded.
         seconds: f64,
+        /// Seconds until a worker is likely free (the `Retry-After`).
+        retry_after: u64,
     },
     /// The solver stopped itself at the solve time limit: the request asks for more work than
     /// one solve may do (a limit of the request, like the body size).
@@ -173,8 +177,8 @@ impl IntoResponse for ApiError {
         let mut response = (status, body).into_response();
         let headers = response.headers_mut();
         headers.insert(header::CONTENT_TYPE, HeaderValue::from_static(PROBLEM_JSON));
-        if matches!(self, Self::Overloaded { .. } | Self::TimedOut { .. }) {
-            headers.insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
+        if let Self::Overloaded { retry_after, .. } | Self::TimedOut { retry_after, .. } = self {
+            headers.insert(header::RETRY_AFTER, HeaderValue::from(retry_after.max(1)));
         }
         if matches!(self, Self::Unauthorized) {
             headers.insert(header::WWW_AUTHENTICATE, HeaderValue::from_static("Bearer"));

@@ -105,18 +105,25 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
             "/arch/minimum-thickness",
             post(arch::minimum_thickness::minimum_thickness),
         )
-        .route_layer(axum::middleware::from_fn_with_state(
-            state.clone(),
-            metrics::count_requests,
-        ))
         .with_state(state.clone());
     let request_id = HeaderName::from_static("x-request-id");
     let router = Router::new()
-        .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))
+        .merge(
+            Router::from(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))
+                .layer(axum::middleware::from_fn(docs_not_found)),
+        )
         .merge(api)
         .fallback(not_found)
         .method_not_allowed_fallback(method_not_allowed)
-        .layer(axum::middleware::from_fn_with_state(state, auth::require_token))
+        .layer(axum::middleware::from_fn_with_state(
+            state.clone(),
+            auth::require_token,
+        ))
+        // Outside the token check: 401s, unknown paths, the document and the docs count too.
+        .layer(axum::middleware::from_fn_with_state(
+            state,
+            metrics::count_requests,
+        ))
         .layer(DefaultBodyLimit::max(settings.body_limit))
         .layer(axum::middleware::from_fn_with_state(
             settings.body_limit,
@@ -219,6 +226,22 @@ async fn not_found(uri: axum::http::Uri) -> error::ApiError {
         detail: format!("no route for {}", uri.path()),
         field: None,
     }
+}
+
+/// The documentation UI answers a missing asset (`/docs/<missing>`) with an empty 404: the same
+/// problem+json as any unknown path instead.
+async fn docs_not_found(
+    request: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> axum::response::Response {
+    let uri = request.uri().clone();
+    let response = next.run(request).await;
+    if response.status() == axum::http::StatusCode::NOT_FOUND
+        && !response.headers().contains_key(header::CONTENT_TYPE)
+    {
+        return not_found(uri).await.into_response();
+    }
+    response
 }
 
 /// Serves `app` on `listener` until `shutdown` completes, then finishes in-flight requests.

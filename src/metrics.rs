@@ -27,6 +27,8 @@ pub struct Metrics {
     solve_buckets: [AtomicU64; BUCKETS.len()],
     solve_count: AtomicU64,
     solve_micros: AtomicU64,
+    /// Recent solve time: an exponentially weighted mean (weight ⅕ on the newest), f64 bits.
+    recent_solve_seconds: AtomicU64,
 }
 
 impl Metrics {
@@ -48,6 +50,23 @@ impl Metrics {
         self.solve_count.fetch_add(1, Ordering::Relaxed);
         let micros = u64::try_from(elapsed.as_micros()).unwrap_or(u64::MAX);
         self.solve_micros.fetch_add(micros, Ordering::Relaxed);
+        // OK to ignore: the closure always returns Some, so the update cannot fail.
+        let _ =
+            self.recent_solve_seconds
+                .fetch_update(Ordering::Relaxed, Ordering::Relaxed, |bits| {
+                    let old = f64::from_bits(bits);
+                    let new = if old > 0.0 {
+                        0.8 * old + 0.2 * seconds
+                    } else {
+                        seconds
+                    };
+                    Some(new.to_bits())
+                });
+    }
+
+    /// The recent mean wall time of a solve in seconds (0 before the first).
+    pub fn recent_solve_seconds(&self) -> f64 {
+        f64::from_bits(self.recent_solve_seconds.load(Ordering::Relaxed))
     }
 
     /// The exposition text, with the pool's current load.

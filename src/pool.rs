@@ -57,6 +57,17 @@ impl SolvePool {
         self.max_running - self.running.available_permits()
     }
 
+    /// Seconds until a worker is likely free for a new solve: the solves ahead of it (running
+    /// and waiting) times the recent solve time, shared by the workers; at least 1, at most the
+    /// deadline.
+    pub fn retry_after_secs(&self) -> u64 {
+        let ahead = (self.running() + self.queue_depth()) as f64;
+        let wait = ahead * self.metrics.recent_solve_seconds() / self.max_running as f64;
+        let most = self.deadline.as_secs_f64().ceil().max(1.0);
+        // A float in [1, most]: the cast cannot overflow.
+        wait.ceil().clamp(1.0, most) as u64
+    }
+
     /// Runs `solve` on the blocking pool and returns its value with the time it took.
     pub async fn run<T, F>(&self, solve: F) -> Result<(T, Duration), ApiError>
     where
@@ -69,6 +80,7 @@ impl SolvePool {
                 .try_acquire_owned()
                 .map_err(|_| ApiError::Overloaded {
                     queued: self.max_queued,
+                    retry_after: self.retry_after_secs(),
                 })?;
         // The deadline covers the wait for a worker as well as the solve.
         let work = async {
@@ -98,6 +110,7 @@ impl SolvePool {
             Ok(Err(error)) => Err(error),
             Err(_) => Err(ApiError::TimedOut {
                 seconds: self.deadline.as_secs_f64(),
+                retry_after: self.retry_after_secs(),
             }),
         }
     }
@@ -127,5 +140,37 @@ mod tests {
         assert!(started.elapsed() < Duration::from_millis(450));
         // The first one, over its deadline too, is also a time-out.
         assert!(matches!(first.await, Ok(Err(ApiError::TimedOut { .. }))));
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn retry_after_is_the_work_ahead() {
+        // Solves have taken 2 s lately; one worker busy and two waiting: a fourth is refused,
+        // told to come back when the three ahead of it are done, 3 × 2 s on one worker.
+        let metrics = Arc::new(Metrics::default());
+        metrics.observe_solve(Duration::from_secs(2));
+        let pool = SolvePool::new(1, 2, Duration::from_secs(60), metrics);
+        assert_eq!(pool.retry_after_secs(), 1, "nothing ahead: at least 1 s");
+        let go = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let mut busy = Vec::new();
+        for _ in 0..3 {
+            let (pool, go) = (pool.clone(), go.clone());
+            busy.push(tokio::spawn(async move {
+                pool.run(move || {
+                    while !go.load(std::sync::atomic::Ordering::Relaxed) {
+                        std::thread::sleep(Duration::from_millis(5));
+                    }
+                })
+                .await
+            }));
+        }
+        tokio::time::sleep(Duration::from_millis(100)).await;
+        match pool.run(|| ()).await {
+            Err(ApiError::Overloaded { retry_after, .. }) => assert_eq!(retry_after, 6),
+            other => panic!("{other:?}"),
+        }
+        go.store(true, std::sync::atomic::Ordering::Relaxed);
+        for task in busy {
+            let _ = task.await;
+        }
     }
 }

@@ -54,6 +54,24 @@ async fn bearer_token_guards_everything_but_healthz() {
         .await
         .unwrap();
     assert_eq!(right.status().as_u16(), 200);
+    // The refusals are counted, by the route they were refused on.
+    let metrics = server
+        .client
+        .get(format!("{}/metrics", server.base))
+        .bearer_auth("s3cret")
+        .send()
+        .await
+        .unwrap()
+        .text()
+        .await
+        .unwrap();
+    for line in [
+        "thrustline_requests_total{route=\"/slope/spencer\",status=\"401\"} 2",
+        "thrustline_requests_total{route=\"/openapi.json\",status=\"401\"} 1",
+        "thrustline_requests_total{route=\"/slope/spencer\",status=\"200\"} 1",
+    ] {
+        assert!(metrics.contains(line), "{line} in {metrics}");
+    }
 }
 
 #[tokio::test]
@@ -95,6 +113,11 @@ async fn metrics_count_requests_and_solves_and_ids_are_returned() {
     let mut bad = spencer_example();
     bad["slices"] = json!(0);
     server.post("/slope/spencer", &bad).await;
+    // Unknown paths, the document and the docs are counted too (unknown paths under one label).
+    server.get("/nowhere").await;
+    server.get("/elsewhere").await;
+    server.get("/openapi.json").await;
+    server.get("/docs/missing.js").await;
     let response = server
         .client
         .get(format!("{}/metrics", server.base))
@@ -115,6 +138,15 @@ async fn metrics_count_requests_and_solves_and_ids_are_returned() {
         text.contains("thrustline_requests_total{route=\"/slope/spencer\",status=\"422\"} 1"),
         "{text}"
     );
+    assert!(
+        text.contains("thrustline_requests_total{route=\"unmatched\",status=\"404\"} 2"),
+        "{text}"
+    );
+    assert!(
+        text.contains("thrustline_requests_total{route=\"/openapi.json\",status=\"200\"} 1"),
+        "{text}"
+    );
+    assert!(text.contains("status=\"404\"} 1"), "{text}");
     assert!(text.contains("thrustline_solve_seconds_count 1"), "{text}");
     assert!(text.contains("thrustline_solve_queue_depth 0"), "{text}");
 }

@@ -189,6 +189,14 @@ async fn healthz_openapi_docs_and_unknown_routes() {
     let (status, content_type, _) = server.get("/nowhere").await;
     assert_eq!(status, 404);
     assert_eq!(content_type, "application/problem+json");
+    // A missing asset of the documentation UI: the same problem, not an empty 404.
+    let (status, content_type, body) = server.get("/docs/missing.js").await;
+    assert_eq!(status, 404);
+    assert_eq!(content_type, "application/problem+json");
+    assert_eq!(body["detail"], "no route for /docs/missing.js");
+    let (status, content_type, _) = server.get("/docs/swagger-ui.css").await;
+    assert_eq!(status, 200);
+    assert!(content_type.starts_with("text/css"), "{content_type}");
 }
 
 #[tokio::test]
