@@ -9,30 +9,6 @@ mod common;
 use common::{milankovitch, spencer_example, Server};
 use serde_json::{json, Value};
 
-/// POSTs `body` to `path` with `accept`; the status, content type and text.
-async fn post_accept(
-    server: &Server,
-    path: &str,
-    accept: &str,
-    body: &Value,
-) -> (u16, String, String) {
-    let response = server
-        .client
-        .post(format!("{}{path}", server.base))
-        .header("accept", accept)
-        .json(body)
-        .send()
-        .await
-        .unwrap();
-    let status = response.status().as_u16();
-    let content_type = response
-        .headers()
-        .get("content-type")
-        .map(|v| v.to_str().unwrap().to_owned())
-        .unwrap_or_default();
-    (status, content_type, response.text().await.unwrap())
-}
-
 /// The CSV's rows as cells (the tables hold numbers, booleans and snake_case names: no quoting).
 fn cells(text: &str) -> Vec<Vec<String>> {
     assert!(!text.contains('"'), "unexpected quoting: {text}");
@@ -62,8 +38,9 @@ async fn check_table(
     body: &Value,
     rows: &[Value],
 ) -> usize {
-    let (status, content_type, text) =
-        post_accept(server, &format!("{path}?table={table}"), "text/csv", body).await;
+    let (status, content_type, text) = server
+        .post_accept(&format!("{path}?table={table}"), "text/csv", body)
+        .await;
     assert_eq!(status, 200, "{path} {table}: {text}");
     assert!(content_type.starts_with("text/csv"), "{content_type}");
     let cells = cells(&text);
@@ -153,11 +130,14 @@ async fn arch_tables_are_the_json_answer() {
 
     // No table asked: the thrust line. A structure that stands has no hinges: the header alone.
     let stands = milankovitch(1.5);
-    let (_, _, text) = post_accept(&server, "/arch/dead-load", "text/csv", &stands).await;
+    let (_, _, text) = server
+        .post_accept("/arch/dead-load", "text/csv", &stands)
+        .await;
     assert!(text.starts_with("interface,x,y,normal_force"), "{text}");
     assert_eq!(text.lines().count(), 1802);
-    let (_, _, text) =
-        post_accept(&server, "/arch/dead-load?table=hinges", "text/csv", &stands).await;
+    let (_, _, text) = server
+        .post_accept("/arch/dead-load?table=hinges", "text/csv", &stands)
+        .await;
     assert_eq!(
         text.trim_end(),
         "interface,angle_deg,location,x,y,span_distance,span_fraction,rotation"
@@ -281,20 +261,20 @@ async fn tables_are_asked_for_and_refused_clearly() {
         "application/json",
     ] {
         let (status, content_type, _) =
-            post_accept(&server, "/slope/spencer", accept, &example).await;
+            server.post_accept("/slope/spencer", accept, &example).await;
         assert_eq!(status, 200);
         assert!(
             content_type.starts_with("application/json"),
             "{accept}: {content_type}"
         );
     }
-    let (_, content_type, _) = post_accept(
-        &server,
-        "/slope/spencer",
-        "application/json;q=0.2, text/csv",
-        &example,
-    )
-    .await;
+    let (_, content_type, _) = server
+        .post_accept(
+            "/slope/spencer",
+            "application/json;q=0.2, text/csv",
+            &example,
+        )
+        .await;
     assert!(content_type.starts_with("text/csv"), "{content_type}");
     // A table the route does not have, or that the answer does not have.
     for (path, body) in [
@@ -306,7 +286,7 @@ async fn tables_are_asked_for_and_refused_clearly() {
             milankovitch(1.5),
         ),
     ] {
-        let (status, content_type, text) = post_accept(&server, path, "text/csv", &body).await;
+        let (status, content_type, text) = server.post_accept(path, "text/csv", &body).await;
         assert_eq!(status, 422, "{path}: {text}");
         assert_eq!(content_type, "application/problem+json");
         let problem: Value = serde_json::from_str(&text).unwrap();

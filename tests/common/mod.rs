@@ -60,6 +60,26 @@ impl Server {
         Self::parts(response).await
     }
 
+    /// POSTs `body` to `path` asking for `accept`; returns the status, content type and text.
+    pub async fn post_accept(
+        &self,
+        path: &str,
+        accept: &str,
+        body: &Value,
+    ) -> (u16, String, String) {
+        let response = self
+            .client
+            .post(format!("{}{path}", self.base))
+            .header("accept", accept)
+            .json(body)
+            .send()
+            .await
+            .unwrap();
+        let status = response.status().as_u16();
+        let content_type = Self::content_type(&response);
+        (status, content_type, response.text().await.unwrap())
+    }
+
     pub async fn get(&self, path: &str) -> (u16, String, Value) {
         let response = self
             .client
@@ -70,13 +90,17 @@ impl Server {
         Self::parts(response).await
     }
 
-    async fn parts(response: reqwest::Response) -> (u16, String, Value) {
-        let status = response.status().as_u16();
-        let content_type = response
+    fn content_type(response: &reqwest::Response) -> String {
+        response
             .headers()
             .get("content-type")
             .map(|v| v.to_str().unwrap().to_owned())
-            .unwrap_or_default();
+            .unwrap_or_default()
+    }
+
+    async fn parts(response: reqwest::Response) -> (u16, String, Value) {
+        let status = response.status().as_u16();
+        let content_type = Self::content_type(&response);
         let text = response.text().await.unwrap();
         let body = serde_json::from_str(&text).unwrap_or(Value::String(text));
         (status, content_type, body)
