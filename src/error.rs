@@ -313,17 +313,7 @@ where
         if !value.is_object() {
             return Err(ApiError::BadRequest {
                 status: StatusCode::UNPROCESSABLE_ENTITY,
-                detail: format!(
-                    "body: expected a JSON object, found {}",
-                    match &value {
-                        serde_json::Value::Null => "null",
-                        serde_json::Value::Bool(_) => "a boolean",
-                        serde_json::Value::Number(_) => "a number",
-                        serde_json::Value::String(_) => "a string",
-                        serde_json::Value::Array(_) => "an array",
-                        serde_json::Value::Object(_) => "an object",
-                    }
-                ),
+                detail: format!("body: expected a JSON object, found {}", json_kind(&value)),
                 field: Some("body".to_owned()),
             });
         }
@@ -339,12 +329,8 @@ where
             }
         })?;
         if let Ok(back) = serde_json::to_value(&typed) {
-            if let Some(path) = array_for_object(&value, &back, String::new()) {
-                let field = if path.is_empty() {
-                    "body".to_owned()
-                } else {
-                    path
-                };
+            // The body itself is an object (checked above): the path is never empty.
+            if let Some(field) = array_for_object(&value, &back, String::new()) {
                 return Err(ApiError::BadRequest {
                     status: StatusCode::UNPROCESSABLE_ENTITY,
                     detail: format!("{field}: expected an object, found an array"),
@@ -353,6 +339,19 @@ where
             }
         }
         Ok(Self(typed))
+    }
+}
+
+/// A JSON value's kind in words ("null", "an array", …), for messages.
+pub fn json_kind(value: &serde_json::Value) -> &'static str {
+    use serde_json::Value;
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
     }
 }
 

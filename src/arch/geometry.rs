@@ -9,6 +9,7 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 use super::assembly::{PolygonDto, RingJointsDto};
+use crate::error::json_kind;
 
 /// Shape of the voussoirs of a circular arch.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -212,7 +213,7 @@ impl<'de> Deserialize<'de> for GeometryDto {
         let Value::Object(map) = &value else {
             return Err(D::Error::custom(format!(
                 "invalid type: {}, expected an object with `kind`",
-                json_type(&value)
+                json_kind(&value)
             )));
         };
         match map.get("kind") {
@@ -228,7 +229,7 @@ impl<'de> Deserialize<'de> for GeometryDto {
             },
             Some(other) => Err(D::Error::custom(format!(
                 "kind: invalid type: {}, expected one of `circular`, `blocks`, `assembly`",
-                json_type(other)
+                json_kind(other)
             ))),
         }
     }
@@ -244,16 +245,4 @@ fn variant<T: DeserializeOwned, E: serde::de::Error>(value: &Value) -> Result<T,
             E::custom(format!("{path}: {}", e.into_inner()))
         }
     })
-}
-
-/// serde's name for a JSON value's type in "invalid type" messages.
-fn json_type(value: &Value) -> &'static str {
-    match value {
-        Value::Null => "null",
-        Value::Bool(_) => "boolean",
-        Value::Number(_) => "number",
-        Value::String(_) => "string",
-        Value::Array(_) => "sequence",
-        Value::Object(_) => "map",
-    }
 }
