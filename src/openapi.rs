@@ -117,24 +117,17 @@ struct RequestIdHeader;
 impl utoipa::Modify for RequestIdHeader {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
         use utoipa::openapi::schema::{ObjectBuilder, Type};
-        use utoipa::openapi::{HeaderBuilder, RefOr};
+        use utoipa::openapi::HeaderBuilder;
         let header = HeaderBuilder::new()
             .schema(ObjectBuilder::new().schema_type(Type::String))
             .description(Some(
                 "The request's id: the one the client sent, or one the service made",
             ))
             .build();
-        for item in openapi.paths.paths.values_mut() {
-            let operations = [&mut item.get, &mut item.post];
-            for operation in operations.into_iter().flatten() {
-                for response in operation.responses.responses.values_mut() {
-                    if let RefOr::T(response) = response {
-                        response
-                            .headers
-                            .insert("x-request-id".to_owned(), header.clone());
-                    }
-                }
-            }
+        for response in responses_mut(openapi) {
+            response
+                .headers
+                .insert("x-request-id".to_owned(), header.clone());
         }
     }
 }
@@ -187,26 +180,36 @@ struct SvgMediaType;
 impl utoipa::Modify for SvgMediaType {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
         use utoipa::openapi::schema::{ObjectBuilder, Type};
-        use utoipa::openapi::RefOr;
         const SVG: &str = "image/svg+xml";
-        for item in openapi.paths.paths.values_mut() {
-            for operation in [&mut item.get, &mut item.post].into_iter().flatten() {
-                for response in operation.responses.responses.values_mut() {
-                    let RefOr::T(response) = response else {
-                        continue;
-                    };
-                    if let Some(content) = response.content.get_mut(SVG) {
-                        content.schema = Some(
-                            ObjectBuilder::new()
-                                .schema_type(Type::String)
-                                .content_media_type(SVG)
-                                .into(),
-                        );
-                    }
-                }
+        for response in responses_mut(openapi) {
+            if let Some(content) = response.content.get_mut(SVG) {
+                content.schema = Some(
+                    ObjectBuilder::new()
+                        .schema_type(Type::String)
+                        .content_media_type(SVG)
+                        .into(),
+                );
             }
         }
     }
+}
+
+/// Every response of every operation (the routes are GET and POST).
+fn responses_mut(
+    openapi: &mut utoipa::openapi::OpenApi,
+) -> impl Iterator<Item = &mut utoipa::openapi::Response> {
+    use utoipa::openapi::RefOr;
+    openapi
+        .paths
+        .paths
+        .values_mut()
+        .flat_map(|item| [item.get.as_mut(), item.post.as_mut()])
+        .flatten()
+        .flat_map(|operation| operation.responses.responses.values_mut())
+        .filter_map(|response| match response {
+            RefOr::T(response) => Some(response),
+            RefOr::Ref(_) => None,
+        })
 }
 
 /// The document as pretty-printed JSON, exactly as committed in `openapi/openapi.json`.
