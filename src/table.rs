@@ -2,10 +2,11 @@
 //! names, numbers as JSON writes them, empty cells for null), chosen by the `table` query
 //! parameter. Built from the answer's own rows, so CSV and JSON never disagree.
 
-use axum::extract::rejection::QueryRejection;
-use axum::extract::Query;
+use axum::extract::{FromRequestParts, Query};
+use axum::http::request::Parts;
 use axum::http::{header, HeaderMap, HeaderValue};
 use axum::response::{IntoResponse, Response};
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 use crate::error::{ApiError, ApiJson};
@@ -53,7 +54,7 @@ pub fn csv<R: Row>(rows: &[R]) -> Result<Csv, ApiError> {
 
 /// Whether the client asks for CSV: `text/csv` in `Accept` with a weight above that of any
 /// JSON type it also names (no weight is 1).
-pub fn wants_csv(headers: &HeaderMap) -> bool {
+fn wants_csv(headers: &HeaderMap) -> bool {
     let weight = |media: &str| -> f64 {
         headers
             .get_all(header::ACCEPT)
@@ -76,16 +77,38 @@ pub fn wants_csv(headers: &HeaderMap) -> bool {
     csv > 0.0 && csv >= weight("application/json")
 }
 
-/// A route's query parameters (`table`); one that does not read is 422 naming `table`, the
-/// only parameter (unknown ones are ignored).
-pub fn query<T>(query: Result<Query<T>, QueryRejection>) -> Result<T, ApiError> {
-    query.map(|Query(q)| q).map_err(|rejection| {
-        let detail = rejection.body_text();
-        let detail = detail
-            .strip_prefix("Failed to deserialize query string: ")
-            .unwrap_or(&detail);
-        ApiError::invalid("table", detail.to_owned())
-    })
+/// A route's query (`?table=`), naming its tables `Table` (the default is the main one).
+pub trait TableQuery: DeserializeOwned + Send {
+    /// The route's tables.
+    type Table: Default;
+    /// The table asked for, if any.
+    fn table(self) -> Option<Self::Table>;
+}
+
+/// The table to answer with when the client asks for CSV (`None`: JSON). The query is read
+/// whatever the client accepts: one that does not read is 422 naming `table`, the only
+/// parameter (unknown ones are ignored).
+#[derive(Debug)]
+pub struct CsvTable<Q: TableQuery>(pub Option<Q::Table>);
+
+impl<S: Send + Sync, Q: TableQuery> FromRequestParts<S> for CsvTable<Q> {
+    type Rejection = ApiError;
+
+    async fn from_request_parts(parts: &mut Parts, state: &S) -> Result<Self, ApiError> {
+        let Query(query) =
+            Query::<Q>::from_request_parts(parts, state)
+                .await
+                .map_err(|rejection| {
+                    let detail = rejection.body_text();
+                    let detail = detail
+                        .strip_prefix("Failed to deserialize query string: ")
+                        .unwrap_or(&detail);
+                    ApiError::invalid("table", detail.to_owned())
+                })?;
+        Ok(Self(
+            wants_csv(&parts.headers).then(|| query.table().unwrap_or_default()),
+        ))
+    }
 }
 
 /// A solve route's answer: JSON, or one of its tables as CSV.

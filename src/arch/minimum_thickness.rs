@@ -3,9 +3,7 @@
 //! is optional (given, the answer adds the geometric factor of safety), plus an optional
 //! `tolerance` relative to the radius.
 
-use axum::extract::rejection::QueryRejection;
-use axum::extract::{Query, State};
-use axum::http::HeaderMap;
+use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
     rupture_angle_deg, solve_minimum_thickness, CircularArch, LimitSettings, MinimumThickness,
@@ -20,7 +18,7 @@ use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
-use crate::table::{csv, wants_csv, Answer};
+use crate::table::{csv, Answer, CsvTable};
 use crate::validation::number;
 use crate::AppState;
 
@@ -132,11 +130,9 @@ pub struct MinimumThicknessResponse {
 )]
 pub async fn minimum_thickness(
     State(state): State<AppState>,
-    headers: HeaderMap,
-    query: Result<Query<MinimumThicknessTableQuery>, QueryRejection>,
+    CsvTable(table): CsvTable<MinimumThicknessTableQuery>,
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
 ) -> Result<Answer<MinimumThicknessResponse>, ApiError> {
-    let table = crate::table::query(query)?.table;
     let g = &request.geometry;
     let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
     for (field, many) in [
@@ -205,8 +201,8 @@ pub async fn minimum_thickness(
         });
     }
     let answer = response(&arch, &result, given);
-    if wants_csv(&headers) {
-        return match table.unwrap_or_default() {
+    if let Some(table) = table {
+        return match table {
             MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
             MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
         }

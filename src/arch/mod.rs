@@ -18,9 +18,7 @@ pub mod request;
 pub mod response;
 pub mod tables;
 
-use axum::extract::rejection::QueryRejection;
-use axum::extract::{Query, State};
-use axum::http::HeaderMap;
+use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
@@ -31,7 +29,7 @@ use thrustline_solver::arch::{
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::svg::Svg;
-use crate::table::{wants_csv, Answer};
+use crate::table::{Answer, CsvTable};
 use crate::AppState;
 use input::ArchInput;
 use request::{DeadLoadRequest, LiveLoadRequest};
@@ -65,11 +63,9 @@ use tables::{arch_table, ArchTableQuery};
 )]
 pub async fn dead_load(
     State(state): State<AppState>,
-    headers: HeaderMap,
-    query: Result<Query<ArchTableQuery>, QueryRejection>,
+    CsvTable(table): CsvTable<ArchTableQuery>,
     ApiJson(request): ApiJson<DeadLoadRequest>,
 ) -> Result<Answer<DeadLoadResponse>, ApiError> {
-    let table = crate::table::query(query)?.table;
     let solved = solve(
         &state,
         Problem::DeadLoad,
@@ -77,8 +73,7 @@ pub async fn dead_load(
     )
     .await?;
     let answer = DeadLoadResponse::new(&solved);
-    if wants_csv(&headers) {
-        let table = table.unwrap_or_default();
+    if let Some(table) = table {
         return arch_table(&answer.outcome, None, table).map(Answer::Csv);
     }
     Ok(Answer::Json(answer))
@@ -155,11 +150,9 @@ pub async fn dead_load_svg(
 )]
 pub async fn live_load(
     State(state): State<AppState>,
-    headers: HeaderMap,
-    query: Result<Query<ArchTableQuery>, QueryRejection>,
+    CsvTable(table): CsvTable<ArchTableQuery>,
     ApiJson(request): ApiJson<LiveLoadRequest>,
 ) -> Result<Answer<LiveLoadResponse>, ApiError> {
-    let table = crate::table::query(query)?.table;
     let solved = solve(
         &state,
         Problem::LiveLoad,
@@ -167,8 +160,7 @@ pub async fn live_load(
     )
     .await?;
     let answer = LiveLoadResponse::new(&solved);
-    if wants_csv(&headers) {
-        let table = table.unwrap_or_default();
+    if let Some(table) = table {
         return arch_table(&answer.outcome, answer.rolling.as_ref(), table).map(Answer::Csv);
     }
     Ok(Answer::Json(answer))

@@ -8,7 +8,7 @@ use super::fill::RollingOutDto;
 use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
 use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
 use crate::error::ApiError;
-use crate::table::{csv, Csv, Row};
+use crate::table::{csv, Csv, Row, TableQuery};
 
 /// A table of a dead- or live-load answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -39,6 +39,13 @@ pub struct ArchTableQuery {
     pub table: Option<ArchTableDto>,
 }
 
+impl TableQuery for ArchTableQuery {
+    type Table = ArchTableDto;
+    fn table(self) -> Option<ArchTableDto> {
+        self.table
+    }
+}
+
 /// A table of a minimum-thickness answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
@@ -57,6 +64,13 @@ pub struct MinimumThicknessTableQuery {
     /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names).
     /// Defaults to `hinges`. Ignored for JSON.
     pub table: Option<MinimumThicknessTableDto>,
+}
+
+impl TableQuery for MinimumThicknessTableQuery {
+    type Table = MinimumThicknessTableDto;
+    fn table(self) -> Option<MinimumThicknessTableDto> {
+        self.table
+    }
 }
 
 impl Row for InterfaceThrustPointDto {

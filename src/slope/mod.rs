@@ -19,9 +19,7 @@ pub mod warnings;
 
 use std::time::{Duration, Instant};
 
-use axum::extract::rejection::QueryRejection;
-use axum::extract::{Query, State};
-use axum::http::HeaderMap;
+use axum::extract::State;
 use thrustline_solver::slope::{
     factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
     RefinementStatus, SearchSettings, SearchStatus, Sliced, SlopeProblem, SolverFailure,
@@ -31,7 +29,7 @@ use thrustline_solver::slope::{
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::MAX_SLICES;
 use crate::svg::Svg;
-use crate::table::{wants_csv, Answer};
+use crate::table::{Answer, CsvTable};
 use crate::AppState;
 use analysed::Analysed;
 use input::{SectionSearch, SpencerInput, Target};
@@ -97,15 +95,13 @@ use thrustline_solver::slope::section::{Polyline, SectionProblem, SlipShape};
 )]
 pub async fn spencer(
     State(state): State<AppState>,
-    headers: HeaderMap,
-    query: Result<Query<SlopeTableQuery>, QueryRejection>,
+    CsvTable(table): CsvTable<SlopeTableQuery>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Answer<SpencerResponse>, ApiError> {
-    let table = crate::table::query(query)?.table;
     let solved = solve(&state, request.validate()?).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
-    if wants_csv(&headers) {
-        return slope_table(&answer, table.unwrap_or_default()).map(Answer::Csv);
+    if let Some(table) = table {
+        return slope_table(&answer, table).map(Answer::Csv);
     }
     Ok(Answer::Json(answer))
 }

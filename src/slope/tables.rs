@@ -6,7 +6,7 @@ use utoipa::{IntoParams, ToSchema};
 
 use super::response::{BoundaryThrustPointDto, PointDto, SliceDto, SpencerResponse};
 use crate::error::ApiError;
-use crate::table::{csv, Csv, Row};
+use crate::table::{csv, Csv, Row, TableQuery};
 
 /// A table of a Spencer answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -33,6 +33,13 @@ pub struct SlopeTableQuery {
     /// lengths, forces and stresses in the request's units, angles in degrees, empty cells for
     /// null). Defaults to `slices`. Ignored for JSON.
     pub table: Option<SlopeTableDto>,
+}
+
+impl TableQuery for SlopeTableQuery {
+    type Table = SlopeTableDto;
+    fn table(self) -> Option<SlopeTableDto> {
+        self.table
+    }
 }
 
 impl Row for SliceDto {
