@@ -8,6 +8,7 @@
 
 use std::num::NonZeroUsize;
 
+use super::column::{column, ground, pore_pressure, side_water, soil_at, Levels};
 use super::polyline::Polyline;
 use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
@@ -51,6 +52,55 @@ fn shape_crossings(shape: &SlipShape, line: &Polyline, a: f64, b: f64) -> Vec<f6
             .map(|c| c.0)
             .collect(),
         SlipShape::Polyline(surface) => surface.crossings(line, a, b),
+    }
+}
+
+/// Places `shape` on `section` and cuts it, in the solver's frame: mirrored (with `mirror`, the
+/// section seen from behind, when the caller has it) when the crest lies to the left.
+pub(super) fn place(
+    section: &Section,
+    mirror: Option<&Section>,
+    shape: &SlipShape,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    moment_centre: Option<(f64, f64)>,
+) -> Result<Cut, SlopeError> {
+    let (entry, exit) = super::ends::ends(&section.ground, shape)?;
+    let ground = &section.ground;
+    let rises_left = ground.y_at(entry) > ground.y_at(exit)
+        || (ground.y_at(entry) == ground.y_at(exit) && {
+            let p = ground.points();
+            p[0].1 > p[p.len() - 1].1
+        });
+    if rises_left {
+        let owned;
+        let mirrored = match mirror {
+            Some(m) => m,
+            None => {
+                owned = section.mirrored();
+                &owned
+            }
+        };
+        let centre = moment_centre.map(|c| (-c.0, c.1));
+        Cut::new(
+            mirrored,
+            &shape.mirrored(),
+            (-exit, -entry),
+            slices,
+            seismic,
+            centre,
+            true,
+        )
+    } else {
+        Cut::new(
+            section,
+            shape,
+            (entry, exit),
+            slices,
+            seismic,
+            moment_centre,
+            false,
+        )
     }
 }
 
@@ -128,17 +178,7 @@ impl Cut {
             .enumerate()
             .map(|(i, &x)| base_at(i, x))
             .collect();
-        let slices: Vec<BaseSlice> = (0..last)
-            .map(|i| {
-                slice(
-                    section,
-                    (boundaries[i], boundaries[i + 1]),
-                    (base_ys[i], base_ys[i + 1]),
-                    &points,
-                    tolerance,
-                )
-            })
-            .collect();
+        let slices = slice_all(section, &boundaries, &base_ys, &points, tolerance);
         let loads = loads(section, &slices, &points, crack);
         let surface: Vec<(f64, f64)> = boundaries
             .iter()
@@ -227,21 +267,48 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
     sorted_between(xs, a, b, tolerance)
 }
 
-/// Where the lines above the base bend or cross (ground, layer tops, the water line, surcharge
-/// edges): the slice weights and loads are integrated piecewise between these, exactly.
-fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
-    let lines: Vec<&Polyline> = std::iter::once(&section.ground)
-        .chain(section.layers.iter().filter_map(|l| l.top.as_ref()))
-        .chain(section.piezometric_line.as_ref())
+/// Where the lines above the bases bend or cross (ground, layer tops, the water line, surcharge
+/// edges), over the whole section, sorted: the slice weights and loads are integrated piecewise
+/// between these, exactly. Computed once per section.
+pub(super) fn bends(
+    ground: &Polyline,
+    tops: &[&Polyline],
+    water: Option<&Polyline>,
+    surcharges: &[super::Surcharge],
+) -> Vec<f64> {
+    let lines: Vec<&Polyline> = std::iter::once(ground)
+        .chain(tops.iter().copied())
+        .chain(water)
         .collect();
     let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
-    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    xs.extend(surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    // Beyond every vertex the lines run level: no crossing lies outside their range.
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let (lo, hi) = (lo - 1.0, hi + 1.0);
     for (i, line) in lines.iter().enumerate() {
         for other in &lines[i + 1..] {
-            xs.extend(line.crossings(other, a, b));
+            xs.extend(line.crossings(other, lo, hi));
         }
     }
-    sorted_between(xs, a, b, tolerance)
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    xs
+}
+
+/// The bends of the section within (a, b), with a and b at the ends.
+fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+    let first = section.bends.partition_point(|&x| x <= a + tolerance);
+    let last = section.bends.partition_point(|&x| x < b - tolerance);
+    sorted_between(
+        section.bends[first..last.max(first)].to_vec(),
+        a,
+        b,
+        tolerance,
+    )
 }
 
 /// The pieces of [xl, xr] between the top points.
@@ -284,160 +351,114 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
     sides
 }
 
-/// The slice between x_l and x_r with its base from (x_l, b_l) to (x_r, b_r).
+/// The slices between the sides `xs` over the bases through `bs`: the lines are read once at
+/// each side (and at the top points inside a slice, where one bends).
+fn slice_all(
+    section: &Section,
+    xs: &[f64],
+    bs: &[f64],
+    points: &[f64],
+    tolerance: f64,
+) -> Vec<BaseSlice> {
+    let tan_phi: Vec<f64> = section
+        .layers
+        .iter()
+        .map(|l| l.soil.friction_angle_rad.tan())
+        .collect();
+    let mut scratch = Scratch::default();
+    let (mut left, mut right) = (Levels::default(), Levels::default());
+    left.read(section, xs[0]);
+    let mut slices = Vec::with_capacity(xs.len().saturating_sub(1));
+    for i in 0..xs.len().saturating_sub(1) {
+        right.read(section, xs[i + 1]);
+        slices.push(slice(
+            section,
+            (xs[i], xs[i + 1]),
+            (bs[i], bs[i + 1]),
+            (&left, &right),
+            points,
+            (tolerance, &tan_phi),
+            &mut scratch,
+        ));
+        std::mem::swap(&mut left, &mut right);
+    }
+    slices
+}
+
+/// Buffers reused from slice to slice.
+#[derive(Default)]
+struct Scratch {
+    /// Levels at the ends of the current piece and half-way.
+    a: Levels,
+    b: Levels,
+    middle: Levels,
+}
+
+/// The slice between x_l and x_r with its base from (x_l, b_l) to (x_r, b_r), the levels at
+/// its sides read.
 fn slice(
     section: &Section,
     (xl, xr): (f64, f64),
     (bl, br): (f64, f64),
+    (left, right): (&Levels, &Levels),
     points: &[f64],
-    tolerance: f64,
+    (tolerance, tan_phi): (f64, &[f64]),
+    scratch: &mut Scratch,
 ) -> BaseSlice {
-    let ground = &section.ground;
     let width = xr - xl;
     let xm = 0.5 * (xl + xr);
     let bm = 0.5 * (bl + br);
-    let layers = &section.layers;
     let chord = |x: f64| bl + (br - bl) * (x - xl) / width;
-    // Thickness of each layer at x over the base b, and ∫y over it, by the soil rule: layer k
-    // holds the points at or below its top and above every later layer's top.
-    let column = |x: f64| column(section, x, chord(x));
-    let (mut weight, mut moment) = (0.0, 0.0);
     // Between the top points every line is straight: Simpson's rule is exact for the linear
     // thickness and the quadratic ∫y of each piece.
     let first = points.partition_point(|&p| p <= xl);
     let last = points.partition_point(|&p| p < xr);
-    let inner = points[first..last.max(first)].iter().copied();
-    let mut a = xl;
-    let mut ca = column(a);
-    for b in inner.chain(std::iter::once(xr)) {
-        let (cm, cb) = (column(0.5 * (a + b)), column(b));
-        weight += (b - a) / 6.0 * (ca.0 + 4.0 * cm.0 + cb.0);
-        moment += (b - a) / 6.0 * (ca.1 + 4.0 * cm.1 + cb.1);
-        (a, ca) = (b, cb);
-    }
-    let probe = bm + tolerance;
-    let g_m = ground.y_at(xm);
-    let layer = soil_at(section, xm, probe);
-    let soil = &layers[layer].soil;
-    let pore_pressure = match (layers[layer].pore_pressure_ratio, &section.piezometric_line) {
-        (Some(ratio), _) => {
-            // σ_v: the weight of the column above the base middle.
-            ratio * column(xm).0
+    let inner = &points[first..last.max(first)];
+    let (mut weight, mut moment) = (0.0, 0.0);
+    let Scratch { a, b, middle } = scratch;
+    let mut xa = xl;
+    a.clone_from(left);
+    for (k, &xb) in inner.iter().chain(std::iter::once(&xr)).enumerate() {
+        if k == inner.len() {
+            b.clone_from(right);
+        } else {
+            b.read(section, xb);
         }
-        (None, Some(line)) => section.water_unit_weight * (line.y_at(xm) - bm).max(0.0),
-        (None, None) => 0.0,
-    };
+        middle.midway(a.values(), b.values());
+        let ca = column(section, a.values(), chord(xa));
+        let cm = column(section, middle.values(), chord(0.5 * (xa + xb)));
+        let cb = column(section, b.values(), chord(xb));
+        weight += (xb - xa) / 6.0 * (ca.0 + 4.0 * cm.0 + cb.0);
+        moment += (xb - xa) / 6.0 * (ca.1 + 4.0 * cm.1 + cb.1);
+        xa = xb;
+        std::mem::swap(a, b);
+    }
+    // The levels over the base middle: the mean of the sides' unless a line bends between.
+    if inner.is_empty() {
+        middle.midway(left.values(), right.values());
+    } else {
+        middle.read(section, xm);
+    }
+    let levels = middle.values();
+    let layer = soil_at(section, levels, bm + tolerance);
+    let soil = &section.layers[layer].soil;
     BaseSlice {
         x_left: xl,
         x_right: xr,
         base_left_y: bl,
         base_right_y: br,
-        top_right_y: ground.y_at(xr),
+        top_right_y: ground(right.values()),
         base_inclination_rad: (br - bl).atan2(width),
         base_length: width.hypot(br - bl),
         base_middle: (xm, bm),
-        height_middle: g_m - bm,
+        height_middle: ground(levels) - bm,
         weight,
         centroid_y: if weight > 0.0 { moment / weight } else { bm },
         cohesion: soil.cohesion,
-        tan_phi: soil.friction_angle_rad.tan(),
-        pore_pressure,
+        tan_phi: tan_phi[layer],
+        pore_pressure: pore_pressure(section, levels, layer, bm),
         layer,
-        side_water: side_water(section, xr, br),
-    }
-}
-
-/// The weight of the column over y at x and its first moment ∫γ·y dy, by the soil rule: layer k
-/// holds the points at or below its top and above every later layer's top.
-fn column(section: &Section, x: f64, y: f64) -> (f64, f64) {
-    let g = section.ground.y_at(x);
-    let mut below = y;
-    let (mut w, mut m) = (0.0, 0.0);
-    for layer in section.layers.iter().rev() {
-        let top = layer.top.as_ref().map_or(g, |t| t.y_at(x));
-        let upper = g.min(top);
-        if upper > below {
-            let gamma = layer.soil.unit_weight;
-            w += gamma * (upper - below);
-            m += gamma * 0.5 * (upper * upper - below * below);
-        }
-        below = below.max(top);
-    }
-    (w, m)
-}
-
-/// The layer whose soil is at (x, y): the last one whose top is at or above y (the first at
-/// the ground).
-fn soil_at(section: &Section, x: f64, y: f64) -> usize {
-    let g = section.ground.y_at(x);
-    let layers = &section.layers;
-    (0..layers.len())
-        .rev()
-        .find(|&k| layers[k].top.as_ref().map_or(g, |t| t.y_at(x)) >= y)
-        .unwrap_or(0)
-}
-
-/// The pore water's force on the vertical through x from the base at y = b up to the ground,
-/// and its height: ∫u dy by Simpson's rule on 8 panels (exact under a water line; the r_u
-/// pressures of layered soils are piecewise linear, to ~1e-4 there).
-fn side_water(section: &Section, x: f64, b: f64) -> (f64, f64) {
-    let g = section.ground.y_at(x);
-    if g <= b {
-        return (0.0, b);
-    }
-    let layers = &section.layers;
-    if layers.iter().all(|l| l.pore_pressure_ratio.is_none()) {
-        // Water line only (or none): u = γ_w·(y_p − y) below it, closed form.
-        let Some(line) = &section.piezometric_line else {
-            return (0.0, b);
-        };
-        let yp = line.y_at(x);
-        let top = yp.min(g);
-        if top <= b {
-            return (0.0, b);
-        }
-        let gw = section.water_unit_weight;
-        // ∫_b^top γ_w (y_p − y) dy and its moment ∫ γ_w (y_p − y)·y dy.
-        let force = gw * ((yp - b).powi(2) - (yp - top).powi(2)) / 2.0;
-        let moment = gw * (yp * (top * top - b * b) / 2.0 - (top.powi(3) - b.powi(3)) / 3.0);
-        return if force > 0.0 {
-            (force, moment / force)
-        } else {
-            (0.0, b)
-        };
-    }
-    let u = |y: f64| -> f64 {
-        match (
-            layers[soil_at(section, x, y)].pore_pressure_ratio,
-            &section.piezometric_line,
-        ) {
-            (Some(ratio), _) => ratio * column(section, x, y).0,
-            (None, Some(line)) => section.water_unit_weight * (line.y_at(x) - y).max(0.0),
-            (None, None) => 0.0,
-        }
-    };
-    const PANELS: usize = 8;
-    let h = (g - b) / PANELS as f64;
-    let (mut force, mut moment) = (0.0, 0.0);
-    for i in 0..=PANELS {
-        let y = b + h * i as f64;
-        let w = if i == 0 || i == PANELS {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        let p = u(y);
-        force += w * p;
-        moment += w * p * y;
-    }
-    force *= h / 3.0;
-    moment *= h / 3.0;
-    if force > 0.0 {
-        (force, moment / force)
-    } else {
-        (0.0, b)
+        side_water: side_water(section, right.values(), br),
     }
 }
 
@@ -461,7 +482,7 @@ fn loads(
     };
     for (i, s) in slices.iter().enumerate() {
         let (xl, xr) = (s.x_left, s.x_right);
-        if let Some(line) = &section.piezometric_line {
+        if let Some(line) = section.piezometric_line.as_ref().filter(|_| section.ponded) {
             // Ponded water: pressure γ_w·d normal to the ground, d linear on each piece.
             for (a, b) in pieces(points, xl, xr) {
                 let (ga, gb) = (ground.y_at(a), ground.y_at(b));

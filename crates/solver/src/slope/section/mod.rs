@@ -7,6 +7,7 @@
 //! sliding mass into [`SliceModel`] slices in the solver's frame (crest towards +x: a section
 //! whose crest lies to the left is mirrored, x → −x, and mirrored back for the answer).
 
+mod column;
 mod cut;
 mod ends;
 #[cfg(test)]
@@ -84,6 +85,10 @@ pub struct Section {
     pub(crate) surcharges: Vec<Surcharge>,
     pub(crate) line_loads: Vec<LineLoad>,
     pub(crate) tension_crack: Option<TensionCrack>,
+    /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
+    bends: Vec<f64>,
+    /// Whether the piezometric line lies above the ground anywhere (ponded water).
+    ponded: bool,
 }
 
 /// Everything a [`Section`] is built from.
@@ -280,7 +285,29 @@ impl Section {
             surcharges: parts.surcharges,
             line_loads: parts.line_loads,
             tension_crack: parts.tension_crack,
-        })
+            bends: Vec::new(),
+            ponded: false,
+        }
+        .with_bends())
+    }
+
+    /// The section with its bends found.
+    fn with_bends(mut self) -> Self {
+        let tops: Vec<&Polyline> = self.layers.iter().filter_map(|l| l.top.as_ref()).collect();
+        self.bends = cut::bends(
+            &self.ground,
+            &tops,
+            self.piezometric_line.as_ref(),
+            &self.surcharges,
+        );
+        // Between the bends both lines are straight, beyond them level: the water stands above
+        // the ground somewhere only if it does at a bend.
+        self.ponded = self.piezometric_line.as_ref().is_some_and(|line| {
+            self.bends
+                .iter()
+                .any(|&x| line.y_at(x) > self.ground.y_at(x))
+        });
+        self
     }
 
     /// The ground line.
@@ -354,7 +381,10 @@ impl Section {
                 })
                 .collect(),
             tension_crack: self.tension_crack,
+            bends: Vec::new(),
+            ponded: false,
         }
+        .with_bends()
     }
 }
 
@@ -382,55 +412,6 @@ impl SlipShape {
             },
             Self::Polyline(line) => Self::Polyline(line.mirrored()),
         }
-    }
-}
-
-/// Places `shape` on `section` and cuts it, in the solver's frame: mirrored (with `mirror`, the
-/// section seen from behind, when the caller has it) when the crest lies to the left.
-fn place(
-    section: &Section,
-    mirror: Option<&Section>,
-    shape: &SlipShape,
-    slices: NonZeroUsize,
-    seismic: Seismic,
-    moment_centre: Option<(f64, f64)>,
-) -> Result<cut::Cut, SlopeError> {
-    let (entry, exit) = ends::ends(&section.ground, shape)?;
-    let ground = &section.ground;
-    let rises_left = ground.y_at(entry) > ground.y_at(exit)
-        || (ground.y_at(entry) == ground.y_at(exit) && {
-            let p = ground.points();
-            p[0].1 > p[p.len() - 1].1
-        });
-    if rises_left {
-        let owned;
-        let mirrored = match mirror {
-            Some(m) => m,
-            None => {
-                owned = section.mirrored();
-                &owned
-            }
-        };
-        let centre = moment_centre.map(|c| (-c.0, c.1));
-        cut::Cut::new(
-            mirrored,
-            &shape.mirrored(),
-            (-exit, -entry),
-            slices,
-            seismic,
-            centre,
-            true,
-        )
-    } else {
-        cut::Cut::new(
-            section,
-            shape,
-            (entry, exit),
-            slices,
-            seismic,
-            moment_centre,
-            false,
-        )
     }
 }
 
@@ -507,7 +488,7 @@ impl SectionProblem {
                 });
             }
         }
-        let cut = place(&section, None, &shape, slices, seismic, moment_centre)?;
+        let cut = cut::place(&section, None, &shape, slices, seismic, moment_centre)?;
         Ok(Self {
             section,
             shape,

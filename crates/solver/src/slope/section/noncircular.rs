@@ -8,8 +8,9 @@
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
+use super::cut::place;
 use super::polyline::Polyline;
-use super::{place, Section, SlipShape};
+use super::{Section, SlipShape};
 use crate::numerics::nelder_mead;
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
 

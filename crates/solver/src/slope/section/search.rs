@@ -12,7 +12,8 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use super::{place, Section, SlipShape};
+use super::cut::place;
+use super::{Section, SlipShape};
 use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
 use crate::slope::search::{spaced, FactorGrid, SearchStatus};

@@ -34,6 +34,7 @@ mod equations;
 pub mod methods;
 mod newton;
 mod problem;
+mod scan;
 mod solution;
 #[cfg(test)]
 mod tests;
@@ -143,7 +144,8 @@ fn is_physical(equations: &Equations, f: f64, theta: f64) -> bool {
         .iter()
         .map(|t| {
             let q = Equations::q(t, f, (sin_t, cos_t)).q;
-            let normal = t.a_n + q * (t.alpha - theta).sin();
+            // sin(α − θ) from the stored sin α, cos α.
+            let normal = t.a_n + q * (t.sin_alpha * cos_t - t.cos_alpha * sin_t);
             (normal - t.pore_force) * t.tan_phi
         })
         .sum();

@@ -121,14 +121,12 @@ fn fallback(
     const STEP_DEG: f64 = 4.0;
     const LIMIT_DEG: f64 = 88.0;
     let mut evaluations = 0;
+    // F_m is not looked for where F_f has no value: the difference is undefined either way.
     let difference = |theta: f64, evaluations: &mut usize| -> f64 {
-        match (
-            equations.f_at_theta(theta, false, evaluations),
-            equations.f_at_theta(theta, true, evaluations),
-        ) {
-            (Some(ff), Some(fm)) => ff - fm,
-            _ => f64::NAN,
-        }
+        equations
+            .f_at_theta(theta, false, evaluations)
+            .and_then(|ff| Some(ff - equations.f_at_theta(theta, true, evaluations)?))
+            .unwrap_or(f64::NAN)
     };
     let origin = difference(0.0, &mut evaluations);
     // A bracket [a, b] of F_f − F_m: Brent, then Newton on both equations from there.

@@ -299,3 +299,77 @@ fn the_effective_line_of_thrust_is_the_total_less_the_side_water() {
     let by_hand = (t.force * cos_t * t.y.unwrap() - water * y_water) / horizontal;
     assert!((e.y.unwrap() - by_hand).abs() < 1e-9 * by_hand.abs().max(1.0));
 }
+
+/// The first crossing of a scan that evaluates all 49 samples, written out.
+fn full_scan(e: &Equations, theta: f64, moment: bool) -> Option<(f64, f64, f64, f64)> {
+    let (lo, hi) = e.admissible_f(theta)?;
+    let residual = |f: f64| {
+        let r = e.evaluate(f, theta);
+        if moment {
+            r.moment
+        } else {
+            r.force
+        }
+    };
+    let ratio = (hi / lo).powf(1.0 / 48.0);
+    let (mut a, mut fa) = (lo, residual(lo));
+    for i in 1..=48 {
+        let b = if i == 48 { hi } else { lo * ratio.powi(i) };
+        let fb = residual(b);
+        if fa.is_finite() && fb.is_finite() && fa < 0.0 && fb >= 0.0 {
+            return Some((a, fa, b, fb));
+        }
+        (a, fa) = (b, fb);
+    }
+    None
+}
+
+#[test]
+fn bounded_scan_finds_the_full_scans_crossing_bit_for_bit() {
+    // Spencer's example with weak to strong soils and dry to saturated pore pressures, at θ
+    // from −85° to 85°: crossings, curves that do not exist and curves with poles.
+    let (mut cases, mut samples, mut crossings) = (0, 0, 0);
+    for (c_scale, phi, ru) in [
+        (1.0, 40.0, 0.5),
+        (0.0, 40.0, 0.0),
+        (3.0, 10.0, 0.9),
+        (0.2, 5.0, 0.0),
+    ] {
+        let problem = SlopeProblem::new(
+            spencer_1967::embankment(),
+            spencer_1967::circle(),
+            NonZeroUsize::new(50).unwrap(),
+            Soil::new(20.0, c_scale * 0.02 * 20.0 * 10.0, phi, ru).unwrap(),
+            Seismic::default(),
+            Vec::new(),
+        )
+        .unwrap();
+        let e = Equations::new(&problem.model());
+        for k in -17..=17 {
+            let theta = (5.0 * f64::from(k)).to_radians();
+            for moment in [false, true] {
+                let Some(range) = e.admissible_f(theta) else {
+                    continue;
+                };
+                let mut scan = e.scan(theta, moment, range);
+                let found = scan.first_crossing();
+                crossings += usize::from(found.is_some());
+                assert_eq!(
+                    found,
+                    full_scan(&e, theta, moment),
+                    "θ = {}°, moment {moment}",
+                    5 * k
+                );
+                cases += 1;
+                samples += scan.evaluations;
+            }
+        }
+    }
+    // Both kinds of answer occur.
+    assert!(
+        cases > 200 && crossings > 20 && crossings < cases - 20,
+        "{crossings}/{cases}"
+    );
+    // The bounds settle most stretches: far fewer samples than 49 a scan.
+    assert!(samples < cases * 20, "{samples} samples for {cases} scans");
+}

@@ -1,0 +1,147 @@
+//! A vertical through the section: the heights of its lines there (the levels) and what the
+//! soil rule makes of them — the weight of the column above a point, the soil at a point, the
+//! pore water's force on the vertical.
+//!
+//! Levels are read once per slice side; between the points where a line bends or two lines
+//! cross every line is straight, so the levels half-way are the mean of the levels at the ends.
+
+use super::Section;
+
+/// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
+/// layer k (the ground for k = 0), index L the piezometric line (NaN without one).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Levels(Vec<f64>);
+
+impl Levels {
+    /// Reads the section's lines at x.
+    pub fn read(&mut self, section: &Section, x: f64) {
+        self.0.clear();
+        let g = section.ground.y_at(x);
+        self.0.extend(
+            section
+                .layers
+                .iter()
+                .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x))),
+        );
+        self.0.push(
+            section
+                .piezometric_line
+                .as_ref()
+                .map_or(f64::NAN, |l| l.y_at(x)),
+        );
+    }
+
+    /// The levels half-way between `a` and `b` on a stretch where every line is straight.
+    pub fn midway(&mut self, a: &[f64], b: &[f64]) {
+        self.0.clear();
+        self.0.extend(a.iter().zip(b).map(|(p, q)| 0.5 * (p + q)));
+    }
+
+    /// The values, as [`Levels::read`] left them.
+    pub fn values(&self) -> &[f64] {
+        &self.0
+    }
+}
+
+/// The ground at these levels.
+pub(super) fn ground(levels: &[f64]) -> f64 {
+    levels[0]
+}
+
+/// The piezometric line at these levels (NaN without one).
+pub(super) fn water(levels: &[f64]) -> f64 {
+    levels[levels.len() - 1]
+}
+
+/// The weight of the column over y and its first moment ∫γ·y dy, by the soil rule: layer k
+/// holds the points at or below its top and above every later layer's top.
+pub(super) fn column(section: &Section, levels: &[f64], y: f64) -> (f64, f64) {
+    let g = ground(levels);
+    let mut below = y;
+    let (mut w, mut m) = (0.0, 0.0);
+    for (layer, &top) in section.layers.iter().zip(levels).rev() {
+        let upper = g.min(top);
+        if upper > below {
+            let gamma = layer.soil.unit_weight;
+            w += gamma * (upper - below);
+            m += gamma * 0.5 * (upper * upper - below * below);
+        }
+        below = below.max(top);
+    }
+    (w, m)
+}
+
+/// The layer whose soil is at height y: the last one whose top is at or above y (the first at
+/// the ground).
+pub(super) fn soil_at(section: &Section, levels: &[f64], y: f64) -> usize {
+    (0..section.layers.len())
+        .rev()
+        .find(|&k| levels[k] >= y)
+        .unwrap_or(0)
+}
+
+/// The pore pressure at height y: r_u times the column's weight where the soil there has its
+/// own r_u, else γ_w times the depth below the piezometric line, else none.
+pub(super) fn pore_pressure(section: &Section, levels: &[f64], layer: usize, y: f64) -> f64 {
+    match (
+        section.layers[layer].pore_pressure_ratio,
+        &section.piezometric_line,
+    ) {
+        (Some(ratio), _) => ratio * column(section, levels, y).0,
+        (None, Some(_)) => section.water_unit_weight * (water(levels) - y).max(0.0),
+        (None, None) => 0.0,
+    }
+}
+
+/// The pore water's force on the vertical from the base at y = b up to the ground, and its
+/// height: closed form under a water line, else ∫u dy by Simpson's rule on 8 panels (the r_u
+/// pressures of layered soils are piecewise linear, to ~1e-4 there).
+pub(super) fn side_water(section: &Section, levels: &[f64], b: f64) -> (f64, f64) {
+    let g = ground(levels);
+    if g <= b {
+        return (0.0, b);
+    }
+    let layers = &section.layers;
+    if layers.iter().all(|l| l.pore_pressure_ratio.is_none()) {
+        if section.piezometric_line.is_none() {
+            return (0.0, b);
+        }
+        let yp = water(levels);
+        let top = yp.min(g);
+        if top <= b {
+            return (0.0, b);
+        }
+        let gw = section.water_unit_weight;
+        // ∫_b^top γ_w (y_p − y) dy and its moment ∫ γ_w (y_p − y)·y dy.
+        let force = gw * ((yp - b).powi(2) - (yp - top).powi(2)) / 2.0;
+        let moment = gw * (yp * (top * top - b * b) / 2.0 - (top.powi(3) - b.powi(3)) / 3.0);
+        return if force > 0.0 {
+            (force, moment / force)
+        } else {
+            (0.0, b)
+        };
+    }
+    const PANELS: usize = 8;
+    let h = (g - b) / PANELS as f64;
+    let (mut force, mut moment) = (0.0, 0.0);
+    for i in 0..=PANELS {
+        let y = b + h * i as f64;
+        let w = if i == 0 || i == PANELS {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        let p = pore_pressure(section, levels, soil_at(section, levels, y), y);
+        force += w * p;
+        moment += w * p * y;
+    }
+    force *= h / 3.0;
+    moment *= h / 3.0;
+    if force > 0.0 {
+        (force, moment / force)
+    } else {
+        (0.0, b)
+    }
+}
