@@ -110,23 +110,16 @@ impl Equations {
     }
 
     /// Q and its derivatives for one slice (m_α may be ≤ 0: the callers check it).
-    pub fn q(t: &SliceTerms, f: f64, trig: (f64, f64)) -> SliceResultant {
-        Self::q_over(t, f.recip(), trig)
-    }
-
-    /// [`Equations::q`] from 1/F: one division per slice (the rest are products), so that the
-    /// equations of 50 slices cost ~0.1 µs rather than five divisions a slice.
-    fn q_over(t: &SliceTerms, inv_f: f64, (sin_t, cos_t): (f64, f64)) -> SliceResultant {
+    pub fn q(t: &SliceTerms, f: f64, (sin_t, cos_t): (f64, f64)) -> SliceResultant {
         // sin(α−θ) and cos(α−θ) from the stored sin α, cos α.
         let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
         let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
-        let numerator = t.a_t - t.resistance * inv_f;
-        let m_alpha = c + d * t.tan_phi * inv_f;
-        let inv_m = m_alpha.recip();
-        let q = numerator * inv_m;
-        let inv_m2 = inv_m * inv_m;
-        let dq_df = (t.resistance * m_alpha + numerator * d * t.tan_phi) * (inv_f * inv_f) * inv_m2;
-        let dq_dtheta = -numerator * (d - c * t.tan_phi * inv_f) * inv_m2;
+        let numerator = t.a_t - t.resistance / f;
+        let m_alpha = c + d * t.tan_phi / f;
+        let q = numerator / m_alpha;
+        let dq_df =
+            (t.resistance * m_alpha + numerator * d * t.tan_phi) / (f * f * m_alpha * m_alpha);
+        let dq_dtheta = -numerator * (d - c * t.tan_phi / f) / (m_alpha * m_alpha);
         SliceResultant {
             q,
             dq_df,
@@ -137,7 +130,6 @@ impl Equations {
 
     pub fn evaluate(&self, f: f64, theta: f64) -> Residuals {
         let (sin_t, cos_t) = theta.sin_cos();
-        let inv_f = f.recip();
         let mut r = Residuals {
             force: 0.0,
             moment: -self.known_moment,
@@ -151,7 +143,7 @@ impl Equations {
                 dq_df,
                 dq_dtheta: dq_dt,
                 m_alpha,
-            } = Self::q_over(t, inv_f, (sin_t, cos_t));
+            } = Self::q(t, f, (sin_t, cos_t));
             let arm = t.arm.0 * sin_t - t.arm.1 * cos_t;
             let d_arm = t.arm.0 * cos_t + t.arm.1 * sin_t;
             r.force += q;
