@@ -252,8 +252,11 @@ async fn a_layered_section_with_water_loads_and_a_crack_is_drawn() {
         .unwrap();
     assert_eq!(response.status(), 200);
     let svg = response.text().await.unwrap();
+    // Each layer filled in its colour and named with its soil in the legend.
     for label in [
-        "top of layer 2",
+        "layer 1: γ = ",
+        "layer 2: γ = ",
+        "fill-opacity",
         "bedrock",
         "piezometric line",
         "one slip circle",

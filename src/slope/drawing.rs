@@ -4,6 +4,7 @@
 use thrustline_solver::slope::Sliced;
 
 use super::analysed::{Analysed, PlacedCircle};
+use super::fills::{layer_fills, LAYER_COLOURS};
 use super::report::SolvedSlope;
 use crate::svg::{escape, heat, Canvas};
 
@@ -23,12 +24,8 @@ struct Scene {
     loads: Vec<(f64, f64)>,
 }
 
-/// A line of the section: points, colour, label.
+/// A line of the section: points, colour, label (empty: not in the legend).
 type Line = (Vec<(f64, f64)>, &'static str, String);
-
-const LAYER_COLOURS: [&str; 6] = [
-    "#6d4c41", "#1565c0", "#2e7d32", "#6a1b9a", "#ef6c00", "#00838f",
-];
 
 fn scene(problem: &Analysed) -> Scene {
     let model = problem.model();
@@ -61,7 +58,8 @@ fn scene(problem: &Analysed) -> Scene {
                     lines.push((
                         top.points().to_vec(),
                         LAYER_COLOURS[i % LAYER_COLOURS.len()],
-                        format!("top of layer {}", i + 1),
+                        // In the legend as the layer's fill.
+                        String::new(),
                     ));
                 }
             }
@@ -186,8 +184,22 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     ground.push((right.max(last.0), bottom));
     ground.push((left.min(first.0), bottom));
     canvas.polygon(&ground, "fill=\"#d7ccc8\" stroke=\"none\"");
+    let mut legend: Vec<(&str, String)> = Vec::new();
+    if let Analysed::Section(p) = &solved.problem {
+        // Each layer in its colour, over the plain ground colour.
+        let fills = layer_fills(p.section(), left.min(first.0), right.max(last.0), bottom);
+        for fill in fills.iter().filter(|_| p.section().layers().len() > 1) {
+            canvas.polygon(
+                &fill.polygon,
+                &format!(
+                    "fill=\"{}\" fill-opacity=\"0.18\" stroke=\"none\"",
+                    fill.colour
+                ),
+            );
+            legend.push((fill.colour, fill.label.clone()));
+        }
+    }
     canvas.polyline(&outline, "stroke=\"#5d4037\" stroke-width=\"1.2\"");
-    let mut legend = Vec::new();
     for (points, colour, label) in &scene.lines {
         let mut line = vec![(left.min(points[0].0), points[0].1)];
         line.extend(points.iter().copied());
@@ -202,7 +214,9 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             &line,
             &format!("stroke=\"{colour}\" stroke-width=\"1.2\"{dash}"),
         );
-        legend.push((colour, label.clone()));
+        if !label.is_empty() {
+            legend.push((*colour, label.clone()));
+        }
     }
     for (a, b) in &scene.loads {
         let y = |x: f64| {
@@ -281,7 +295,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             );
         }
         legend.push((
-            &"#c62828",
+            "#c62828",
             format!("○ {outside} boundaries where the line of thrust leaves its slice (not drawn)"),
         ));
     }
@@ -301,7 +315,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
         );
         legend.push((
-            &"#c62828",
+            "#c62828",
             "line of thrust of the effective forces (dashed)".to_owned(),
         ));
     }

@@ -7,6 +7,7 @@
 
 pub mod analysed;
 pub mod drawing;
+pub mod fills;
 pub mod input;
 pub mod methods;
 pub mod outputs;
