@@ -105,9 +105,10 @@ pub enum ApiError {
         /// Seconds until a worker is likely free (the `Retry-After`).
         retry_after: u64,
     },
-    /// The solver stopped itself at the solve time limit: the request asks for more work than
-    /// one solve may do (a limit of the request, like the body size).
-    #[error("{field}: the calculation did not finish within the solve time limit of {seconds} s: {advice}")]
+    /// The solver stopped itself at the solve time limit. Alone on the pool: the request asks
+    /// for more work than one solve may do (422, a limit of the request like the body size);
+    /// with other solves beside it (`busy`: the `Retry-After`), 503.
+    #[error("{field}: the calculation did not finish within the solve time limit of {seconds} s{}: {advice}", busy.map_or(String::new(), |s| format!(" while the service was busy (retry after {s} s)")))]
     OverTimeLimit {
         /// The field that sets the amount of work.
         field: String,
@@ -115,6 +116,8 @@ pub enum ApiError {
         seconds: f64,
         /// What to change.
         advice: &'static str,
+        /// Seconds until a retry is likely to run alone, when other solves ran beside it.
+        busy: Option<u64>,
     },
     /// A fault of the server (a panic in a solve, a lost worker).
     #[error("internal error: {0}")]
@@ -134,6 +137,7 @@ impl ApiError {
     pub fn status(&self) -> StatusCode {
         match self {
             Self::BadRequest { status, .. } => *status,
+            Self::OverTimeLimit { busy: Some(_), .. } => StatusCode::SERVICE_UNAVAILABLE,
             Self::Invalid { .. } | Self::OverTimeLimit { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             Self::Unauthorized => StatusCode::UNAUTHORIZED,
             Self::Overloaded { .. } => StatusCode::SERVICE_UNAVAILABLE,
@@ -168,7 +172,10 @@ impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
         let status = self.status();
         if status.is_server_error()
-            && !matches!(self, Self::Overloaded { .. } | Self::TimedOut { .. })
+            && !matches!(
+                self,
+                Self::Overloaded { .. } | Self::TimedOut { .. } | Self::OverTimeLimit { .. }
+            )
         {
             // The one place a 5xx is logged; the client gets no internals.
             tracing::error!(error = %self, "request failed");
@@ -177,7 +184,13 @@ impl IntoResponse for ApiError {
         let mut response = (status, body).into_response();
         let headers = response.headers_mut();
         headers.insert(header::CONTENT_TYPE, HeaderValue::from_static(PROBLEM_JSON));
-        if let Self::Overloaded { retry_after, .. } | Self::TimedOut { retry_after, .. } = self {
+        if let Self::Overloaded { retry_after, .. }
+        | Self::TimedOut { retry_after, .. }
+        | Self::OverTimeLimit {
+            busy: Some(retry_after),
+            ..
+        } = self
+        {
             headers.insert(header::RETRY_AFTER, HeaderValue::from(retry_after.max(1)));
         }
         if matches!(self, Self::Unauthorized) {

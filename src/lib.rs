@@ -10,7 +10,8 @@
 //!   the [`pool`] → `response` (built whole) and `drawing`;
 //! - [`limits`] (every size and magnitude limit), [`fields`] (solver parameter → JSON field),
 //!   [`error`] (problem+json; the outcome rule of the README: a solver stopped at the time limit
-//!   is 422 naming the field that sets the work, capacity and the pool deadline are 503);
+//!   is 422 naming the field that sets the work when it ran alone, 503 when other solves ran
+//!   beside it; capacity and the pool deadline are 503);
 //! - [`app`] builds the router (used by `main` and by the tests with `oneshot`);
 //! - [`serve`] runs it on a listener until the shutdown future completes.
 

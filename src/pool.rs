@@ -6,6 +6,7 @@
 //! tracing span. `spawn_blocking` cannot be cancelled, so every solve carries its own iteration
 //! and time limits; the deadline here only stops the client from waiting past it.
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -23,6 +24,17 @@ pub struct SolvePool {
     max_queued: usize,
     deadline: Duration,
     metrics: Arc<Metrics>,
+    /// Solves started since the pool was made.
+    started: Arc<AtomicU64>,
+}
+
+/// A solve's value, the time it ran, and whether another solve ran at any moment beside it
+/// (then its time limit was shared with other work: see [`SolvePool::judge`]).
+#[derive(Debug)]
+pub struct Ran<T> {
+    pub value: T,
+    pub elapsed: Duration,
+    pub shared: bool,
 }
 
 impl SolvePool {
@@ -42,6 +54,7 @@ impl SolvePool {
             max_queued,
             deadline,
             metrics,
+            started: Arc::default(),
         }
     }
 
@@ -68,8 +81,9 @@ impl SolvePool {
         wait.ceil().clamp(1.0, most) as u64
     }
 
-    /// Runs `solve` on the blocking pool and returns its value with the time it took.
-    pub async fn run<T, F>(&self, solve: F) -> Result<(T, Duration), ApiError>
+    /// Runs `solve` on the blocking pool and returns its value with the time it took and
+    /// whether it ran alone.
+    pub async fn run<T, F>(&self, solve: F) -> Result<Ran<T>, ApiError>
     where
         T: Send + 'static,
         F: FnOnce() -> T + Send + 'static,
@@ -91,27 +105,60 @@ impl SolvePool {
                 .await
                 .map_err(|_| ApiError::Internal("solve pool closed".to_owned()))?;
             let span = tracing::Span::current();
+            let (semaphore, started, max_running) =
+                (self.running.clone(), self.started.clone(), self.max_running);
             let task = tokio::task::spawn_blocking(move || {
                 let _entered = span.enter();
-                let _running = running;
+                let busy = || max_running - semaphore.available_permits();
+                let before = (busy(), started.fetch_add(1, Ordering::Relaxed));
                 let start = Instant::now();
                 let value = solve();
-                (value, start.elapsed())
+                let elapsed = start.elapsed();
+                // Others running when it began or ended, or begun and ended within it.
+                let shared =
+                    before.0 > 1 || busy() > 1 || started.load(Ordering::Relaxed) > before.1 + 1;
+                drop(running);
+                Ran {
+                    value,
+                    elapsed,
+                    shared,
+                }
             });
             task.await.map_err(|join_error| {
                 ApiError::Internal(format!("solve task failed: {join_error}"))
             })
         };
         match tokio::time::timeout(self.deadline, work).await {
-            Ok(Ok(result)) => {
-                self.metrics.observe_solve(result.1);
-                Ok(result)
+            Ok(Ok(ran)) => {
+                self.metrics.observe_solve(ran.elapsed);
+                Ok(ran)
             }
             Ok(Err(error)) => Err(error),
             Err(_) => Err(ApiError::TimedOut {
                 seconds: self.deadline.as_secs_f64(),
                 retry_after: self.retry_after_secs(),
             }),
+        }
+    }
+
+    /// The README's outcome rule for a solver stopped at its time limit: alone on the pool it
+    /// is the request's size (the 422 naming the field that sets the work); beside other solves
+    /// it may be the load (the same request can finish on an idle service), so it is the
+    /// service's condition: 503 with `Retry-After`, the field still named.
+    pub fn judge(&self, error: ApiError, shared: bool) -> ApiError {
+        match error {
+            ApiError::OverTimeLimit {
+                field,
+                seconds,
+                advice,
+                busy: None,
+            } if shared => ApiError::OverTimeLimit {
+                field,
+                seconds,
+                advice,
+                busy: Some(self.retry_after_secs()),
+            },
+            other => other,
         }
     }
 }
@@ -172,5 +219,51 @@ mod tests {
         for task in busy {
             let _ = task.await;
         }
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn a_solve_knows_whether_it_ran_alone() {
+        let pool = SolvePool::new(2, 4, Duration::from_secs(10), Arc::default());
+        assert!(!pool.run(|| ()).await.unwrap().shared);
+        // A long solve with a short one started and finished inside it: both shared.
+        let long = {
+            let pool = pool.clone();
+            tokio::spawn(async move {
+                pool.run(|| std::thread::sleep(Duration::from_millis(300)))
+                    .await
+            })
+        };
+        tokio::time::sleep(Duration::from_millis(50)).await;
+        let short = pool.run(|| ()).await.unwrap();
+        assert!(short.shared);
+        assert!(long.await.unwrap().unwrap().shared);
+        assert!(!pool.run(|| ()).await.unwrap().shared, "alone again");
+    }
+
+    #[test]
+    fn a_time_limit_hit_beside_other_solves_is_503_with_retry_after() {
+        use axum::response::IntoResponse;
+        let pool = SolvePool::new(1, 2, Duration::from_secs(60), Arc::default());
+        let hit = || ApiError::OverTimeLimit {
+            field: "search".to_owned(),
+            seconds: 30.0,
+            advice: "use a coarser grid",
+            busy: None,
+        };
+        let alone = pool.judge(hit(), false).into_response();
+        assert_eq!(alone.status(), 422);
+        assert!(alone.headers().get("retry-after").is_none());
+        let busy = pool.judge(hit(), true);
+        assert!(
+            busy.to_string().contains("while the service was busy"),
+            "{busy}"
+        );
+        assert!(busy.to_string().starts_with("search: "));
+        let busy = busy.into_response();
+        assert_eq!(busy.status(), 503);
+        assert_eq!(busy.headers()["retry-after"], "1");
+        // Other errors pass through unchanged.
+        let other = pool.judge(ApiError::invalid("slices", "too many"), true);
+        assert_eq!(other.into_response().status(), 422);
     }
 }

@@ -173,7 +173,7 @@ pub async fn minimum_thickness(
         time_limit: Some(state.solve_time_limit),
         ..MinimumThicknessSettings::default()
     };
-    let (result, elapsed) = state
+    let ran = state
         .pool
         .run(move || {
             let result = solve_minimum_thickness(
@@ -186,7 +186,8 @@ pub async fn minimum_thickness(
             (arch, result)
         })
         .await?;
-    let (arch, result) = result;
+    let (elapsed, shared) = (ran.elapsed, ran.shared);
+    let (arch, result) = ran.value;
     let result = result?;
     tracing::info!(
         evaluations = result.evaluations,
@@ -194,11 +195,13 @@ pub async fn minimum_thickness(
         "minimum thickness solved"
     );
     if result.outcome == MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime) {
-        return Err(ApiError::OverTimeLimit {
+        let error = ApiError::OverTimeLimit {
             field: "tolerance".to_owned(),
             seconds: state.solve_time_limit_secs(),
             advice: "use a larger tolerance or fewer voussoirs",
-        });
+            busy: None,
+        };
+        return Err(state.pool.judge(error, shared));
     }
     let answer = response(&arch, &result, given);
     if let Some(table) = table {

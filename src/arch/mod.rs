@@ -207,9 +207,10 @@ enum Problem {
     LiveLoad,
 }
 
-/// Solves on the pool; the solver's time limit becomes the 422 of the README's outcome rule.
+/// Solves on the pool; the solver's time limit becomes the README's outcome rule's 422 (or 503
+/// when other solves ran beside it).
 async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<SolvedArch, ApiError> {
-    let (solved, elapsed) = state
+    let ran = state
         .pool
         .run(move || {
             let mut input = input;
@@ -240,7 +241,8 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
             (input, solution, rolling, friction)
         })
         .await?;
-    let (input, solution, rolling, friction) = solved;
+    let (elapsed, shared) = (ran.elapsed, ran.shared);
+    let (input, solution, rolling, friction) = ran.value;
     let mut solution = solution?;
     tracing::info!(
         problem = ?which,
@@ -250,12 +252,15 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         load_factor = solution.load_factor,
         "arch solved"
     );
-    let mut status =
-        ArchStatusDto::try_from(solution.status).map_err(|_| ApiError::OverTimeLimit {
+    let mut status = ArchStatusDto::try_from(solution.status).map_err(|_| {
+        let error = ApiError::OverTimeLimit {
             field: "geometry".to_owned(),
             seconds: state.solve_time_limit_secs(),
             advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
-        })?;
+            busy: None,
+        };
+        state.pool.judge(error, shared)
+    })?;
     if input.non_associative && friction.as_ref().is_some_and(|f| !f.settled) {
         // No factor the iteration cannot vouch for; its steps are in `non_associative`.
         status = ArchStatusDto::NotSettled;

@@ -137,12 +137,12 @@ pub async fn spencer_svg(
 
 async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, ApiError> {
     let time_limit = state.solve_time_limit;
-    let (solved, elapsed) = state
+    let ran = state
         .pool
         .run(move || solve_blocking(input, time_limit))
         .await?;
-    let mut solved = solved?;
-    solved.solve_time_ms = elapsed.as_secs_f64() * 1e3;
+    let mut solved = ran.value.map_err(|e| state.pool.judge(e, ran.shared))?;
+    solved.solve_time_ms = ran.elapsed.as_secs_f64() * 1e3;
     tracing::info!(
         slices = solved.problem.slice_count(),
         iterations = solved.solution.iterations,
@@ -159,14 +159,16 @@ async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, Api
 const MAX_RADIUS_OVER_SIZE: f64 = 50.0;
 
 /// Runs on the blocking pool: the search if asked, then the full solution of the circle (refined
-/// if asked), then the curves if asked. A solver stopped by the time limit is the 422 of the
-/// README's outcome rule, naming the field that sets the work.
+/// if asked), then the curves if asked. A solver stopped by the time limit is the README's
+/// outcome rule's 422 naming the field that sets the work ([`crate::pool::SolvePool::judge`] makes it 503
+/// when other solves ran beside it).
 fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlope, ApiError> {
     let deadline = Instant::now() + time_limit;
     let over_time = |field: &str, advice| ApiError::OverTimeLimit {
         field: field.to_owned(),
         seconds: time_limit.as_secs_f64(),
         advice,
+        busy: None,
     };
     let spencer = SpencerSettings {
         negative_effective_stress: input.negative_effective_stress,
