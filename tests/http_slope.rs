@@ -351,4 +351,24 @@ async fn slope_drawing_with_the_f_map() {
     let polygons = svg.matches("<polygon").count();
     assert!((2..=31).contains(&polygons), "{polygons}");
     assert_eq!(svg.matches("<circle").count(), 1);
+    // The key names the refined critical circle's F (the JSON answer's, to 4 decimals), which
+    // is no more than the grid's least; each contour drawn is labelled.
+    let (_, _, answer) = server.post("/slope/spencer", &body).await;
+    let f = answer["factor_of_safety"].as_f64().unwrap();
+    assert!(svg.contains(&format!("F = {f:.4}")), "{f}");
+    let key = svg.split("F over centres: red ").nth(1).unwrap();
+    let least: f64 = key.split(' ').next().unwrap().parse().unwrap();
+    assert!(f <= least + 5e-4, "refined {f} above the grid's least {least}");
+    let contours: usize = key
+        .split(';')
+        .nth(1)
+        .unwrap()
+        .trim()
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let labels = svg.matches("font-size=\"9\"").count();
+    assert_eq!(labels, contours, "one label per contour");
 }

@@ -4,6 +4,7 @@
 use thrustline_solver::slope::Sliced;
 
 use super::analysed::{Analysed, PlacedCircle};
+use super::contours::{contour, refine};
 use super::fills::{layer_fills, LAYER_COLOURS};
 use super::report::SolvedSlope;
 use crate::svg::{escape, heat, Canvas};
@@ -161,17 +162,58 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
                 );
             }
         }
-        // Contours F = F_min·(1.02, 1.05, 1.1, 1.2, 1.4, 1.7), by marching squares.
+        // Contours F = F_min·(1.02, 1.05, 1.1, 1.2, 1.4, 1.7) on the grid refined 4 times per
+        // cell (cubic), each labelled with its F at its rightmost point inside the grid (nested
+        // contours spread their labels along x; the grid's edges crowd them).
         let absolute_xs: Vec<f64> = grid.xs.iter().map(|x| lower_end.0 + x).collect();
         let absolute_ys: Vec<f64> = grid.ys.iter().map(|y| lower_end.1 + y).collect();
+        let (fine_xs, fine_ys, fine) = refine(&absolute_xs, &absolute_ys, &grid.factors, 4);
+        let mut levels = Vec::new();
         for factor in [1.02, 1.05, 1.1, 1.2, 1.4, 1.7] {
             let level = lo * factor;
-            for segment in contour(&absolute_xs, &absolute_ys, &grid.factors, level) {
-                canvas.polyline(&segment, "stroke=\"#4e342e\" stroke-width=\"0.8\"");
+            let segments = contour(&fine_xs, &fine_ys, &fine, level);
+            for segment in &segments {
+                canvas.polyline(segment, "stroke=\"#4e342e\" stroke-width=\"0.8\"");
+            }
+            let (x_edge, y_edge) = (
+                0.02 * (fine_xs[fine_xs.len() - 1] - fine_xs[0]).abs(),
+                0.02 * (fine_ys[fine_ys.len() - 1] - fine_ys[0]).abs(),
+            );
+            let inside = |p: &(f64, f64)| {
+                p.0 < fine_xs[fine_xs.len() - 1] - x_edge
+                    && p.1 > fine_ys[0] + y_edge
+                    && p.1 < fine_ys[fine_ys.len() - 1] - y_edge
+            };
+            let top = segments
+                .iter()
+                .flatten()
+                .copied()
+                .filter(inside)
+                .max_by(|a, b| a.0.total_cmp(&b.0));
+            if let Some(top) = top {
+                canvas.text(
+                    top,
+                    (3.0, -3.0),
+                    &format!("{level:.3}"),
+                    "font-size=\"9\" font-family=\"sans-serif\" fill=\"#4e342e\" stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\"",
+                );
+                levels.push(level);
             }
         }
+        // The key names the refined critical circle's F, which the grid's least F bounds above.
+        let critical = match (solution.factor_of_safety, scene.circle) {
+            (Some(f), Some(c)) => format!(
+                "; ● refined centre ({:.2}, {:.2}): F = {f:.4}",
+                c.centre.0, c.centre.1
+            ),
+            _ => String::new(),
+        };
         canvas.raw(&format!(
-            "<text x=\"60\" y=\"44\" font-size=\"11\" font-family=\"sans-serif\" fill=\"#b71c1c\">F over centres: red {lo:.3} … blue ≥ {cap:.3}; contours F_min × 1.02 … 1.7; blank: no valid circle</text>"
+            "<text x=\"60\" y=\"44\" font-size=\"11\" font-family=\"sans-serif\" fill=\"#b71c1c\">{}</text>",
+            escape(&format!(
+                "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {} labelled contours{critical}",
+                levels.len()
+            ))
         ));
     }
     // The ground, continued level to the edges.
@@ -352,63 +394,5 @@ fn cell(values: &[f64]) -> f64 {
         1.0
     } else {
         (values[values.len() - 1] - values[0]) / (values.len() - 1) as f64
-    }
-}
-
-/// The segments of the contour `level` of the values `f[j][i]` at (xs[i], ys[j]) (marching
-/// squares; cells with a missing corner are skipped).
-pub fn contour(xs: &[f64], ys: &[f64], f: &[Vec<Option<f64>>], level: f64) -> Vec<[(f64, f64); 2]> {
-    let mut segments = Vec::new();
-    for j in 0..ys.len().saturating_sub(1) {
-        for i in 0..xs.len().saturating_sub(1) {
-            let corners = [
-                ((xs[i], ys[j]), f[j][i]),
-                ((xs[i + 1], ys[j]), f[j][i + 1]),
-                ((xs[i + 1], ys[j + 1]), f[j + 1][i + 1]),
-                ((xs[i], ys[j + 1]), f[j + 1][i]),
-            ];
-            let Some(values) = corners.iter().map(|c| c.1).collect::<Option<Vec<f64>>>() else {
-                continue;
-            };
-            // Crossing points on the four edges, in order.
-            let mut crossings = Vec::with_capacity(4);
-            for k in 0..4 {
-                let (a, b) = (k, (k + 1) % 4);
-                let (va, vb) = (values[a] - level, values[b] - level);
-                if (va < 0.0) != (vb < 0.0) {
-                    let t = va / (va - vb);
-                    let (pa, pb) = (corners[a].0, corners[b].0);
-                    crossings.push((pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1)));
-                }
-            }
-            // Two crossings: one segment; four (a saddle): two, pairing neighbours.
-            for pair in crossings.chunks_exact(2) {
-                segments.push([pair[0], pair[1]]);
-            }
-        }
-    }
-    segments
-}
-
-#[cfg(test)]
-mod tests {
-    use super::contour;
-
-    #[test]
-    fn contour_of_a_cone_is_a_ring_at_the_right_radius() {
-        // f = distance from the origin on a 41 × 41 grid: the level-1 contour lies on the unit
-        // circle up to the linear interpolation error (h²/8 with h = 0.1: 2e-3).
-        let axis: Vec<f64> = (0..41).map(|i| -2.0 + 0.1 * f64::from(i)).collect();
-        let f: Vec<Vec<Option<f64>>> = axis
-            .iter()
-            .map(|&y| axis.iter().map(|&x| Some(x.hypot(y))).collect())
-            .collect();
-        let segments = contour(&axis, &axis, &f, 1.0);
-        assert!(segments.len() > 40);
-        for [a, b] in segments {
-            for p in [a, b] {
-                assert!((p.0.hypot(p.1) - 1.0).abs() < 5e-3, "{p:?}");
-            }
-        }
     }
 }

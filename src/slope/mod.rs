@@ -6,6 +6,7 @@
 //! the lower end of the slip surface, as the thesis prints them.
 
 pub mod analysed;
+pub mod contours;
 pub mod drawing;
 pub mod fills;
 pub mod input;
