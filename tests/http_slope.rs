@@ -358,7 +358,10 @@ async fn slope_drawing_with_the_f_map() {
     assert!(svg.contains(&format!("F = {f:.4}")), "{f}");
     let key = svg.split("F over centres: red ").nth(1).unwrap();
     let least: f64 = key.split(' ').next().unwrap().parse().unwrap();
-    assert!(f <= least + 5e-4, "refined {f} above the grid's least {least}");
+    assert!(
+        f <= least + 5e-4,
+        "refined {f} above the grid's least {least}"
+    );
     let contours: usize = key
         .split(';')
         .nth(1)
