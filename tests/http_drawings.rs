@@ -85,3 +85,72 @@ async fn every_drawing_parses_as_xml() {
         );
     }
 }
+
+#[tokio::test]
+async fn hinge_labels_overlap_no_dot_no_arrow_and_no_other_label() {
+    // The README's live-load arch and a thinner one with loads near two hinges: every hinge
+    // label's box (0.6 em a character, 11 px text) clear of every hinge dot, of the load arrows
+    // and of the other labels, and inside the drawing.
+    let server = Server::start().await;
+    for body in [
+        json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+               "loads": [{"block": 26, "fy": -1.0}]}),
+        json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 40},
+               "loads": [{"block": 8, "fy": -1.0}, {"block": 30, "fy": -0.5}]}),
+    ] {
+        let text = svg(&server, "/arch/live-load/svg", &body).await;
+        let document = roxmltree::Document::parse(&text).unwrap();
+        let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let green = |n: &roxmltree::Node| n.attribute("fill") == Some("#1b5e20");
+        let dots: Vec<(f64, f64)> = document
+            .descendants()
+            .filter(|n| n.has_tag_name("circle") && green(n))
+            .map(|n| (number(n, "cx"), number(n, "cy")))
+            .collect();
+        let labels: Vec<[f64; 4]> = document
+            .descendants()
+            .filter(|n| n.has_tag_name("text") && green(n) && n.text().unwrap().contains('°'))
+            .map(|n| {
+                let (x, y) = (number(n, "x"), number(n, "y"));
+                let w = 0.6 * 11.0 * n.text().unwrap().chars().count() as f64;
+                [x, y - 9.0, x + w, y + 2.0]
+            })
+            .collect();
+        let arrows: Vec<[f64; 4]> = document
+            .descendants()
+            .filter(|n| n.has_tag_name("line") && n.attribute("marker-end").is_some())
+            .map(|n| {
+                let (x1, y1, x2, y2) = (
+                    number(n, "x1"),
+                    number(n, "y1"),
+                    number(n, "x2"),
+                    number(n, "y2"),
+                );
+                [x1.min(x2), y1.min(y2), x1.max(x2), y1.max(y2)]
+            })
+            .collect();
+        assert!(
+            dots.len() >= 4 && labels.len() == dots.len(),
+            "{} dots, {} labels",
+            dots.len(),
+            labels.len()
+        );
+        let overlaps =
+            |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+        for (i, l) in labels.iter().enumerate() {
+            assert!(l[0] >= 60.0 && l[2] <= 800.0, "label {i} outside: {l:?}");
+            for d in &dots {
+                assert!(
+                    !overlaps(l, &[d.0 - 5.0, d.1 - 5.0, d.0 + 5.0, d.1 + 5.0]),
+                    "label {i} on a dot {d:?}"
+                );
+            }
+            for a in &arrows {
+                assert!(!overlaps(l, a), "label {i} on an arrow {a:?}");
+            }
+            for m in &labels[i + 1..] {
+                assert!(!overlaps(l, m), "labels {l:?} and {m:?} overlap");
+            }
+        }
+    }
+}

@@ -6,7 +6,7 @@ use thrustline_solver::arch::HingeSide;
 
 use super::fill::RollingOutDto;
 use super::response::SolvedArch;
-use crate::svg::{escape, Canvas, WIDTH};
+use crate::svg::{escape, Canvas, Labels, WIDTH};
 
 /// Chains of more blocks than this are drawn as one outline.
 const MERGED_ABOVE: usize = 200;
@@ -190,7 +190,10 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             canvas.dot(*point, 2.5, "fill=\"#c62828\"");
         }
     }
-    // Hinges at the intrados or extrados end of their interface, with their polar angle.
+    // Hinges at the intrados or extrados end of their interface; their labels (polar angle and
+    // side) are placed after the loads, clear of the dots, the arrows and each other.
+    let mut hinge_labels = Vec::new();
+    let mut labels = Labels::default();
     for hinge in mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default() {
         let Some(interface) = assembly.interfaces.get(hinge.interface) else {
             continue;
@@ -204,16 +207,14 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             5.0,
             "fill=\"#1b5e20\" stroke=\"white\" stroke-width=\"1.5\"",
         );
-        let offset = (
-            outward * 14.0 * interface.tangent.0,
-            -outward * 14.0 * interface.tangent.1,
+        let p = canvas.px(point);
+        labels.avoid([p.0 - 6.0, p.1 - 6.0, p.0 + 6.0, p.1 + 6.0]);
+        // Away from the arch: outwards at the extrados, inwards at the intrados (pixels, y down).
+        let direction = (
+            outward * interface.tangent.0,
+            -outward * interface.tangent.1,
         );
-        canvas.text(
-            point,
-            offset,
-            &format!("{:.1}° {location}", hinge.angle_deg),
-            "font-size=\"11\" fill=\"#1b5e20\" font-family=\"sans-serif\" text-anchor=\"middle\"",
-        );
+        hinge_labels.push((p, direction, format!("{:.1}° {location}", hinge.angle_deg)));
     }
     // Live loads: arrows ending at their point, 12 % of the span long.
     let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
@@ -228,6 +229,16 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             load.point.1 - length * load.fy / magnitude,
         );
         canvas.arrow(from, load.point, "stroke=\"#1565c0\" stroke-width=\"2\"");
+        labels.avoid_segment(canvas.px(from), canvas.px(load.point), 6.0);
+    }
+    let area = canvas.plot_area();
+    for (p, direction, text) in hinge_labels {
+        let (x, y) = labels.place(p, direction, (text.chars().count(), 11.0), area);
+        canvas.raw(&format!(
+            "<text x=\"{x:.2}\" y=\"{:.2}\" font-size=\"11\" fill=\"#1b5e20\" font-family=\"sans-serif\">{}</text>",
+            y + 9.0,
+            escape(&text)
+        ));
     }
     // Passive pressure where mobilised: horizontal arrows onto the extrados.
     let problem = &solved.input.problem;
