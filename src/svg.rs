@@ -333,8 +333,11 @@ impl Labels {
         let chosen = (0..16)
             .map(|k| {
                 // 0, +1, −1, +2, −2, … steps from the preferred direction.
-                let turn = if k % 2 == 1 { (k + 1) / 2 } else { 0 } as f64
-                    - if k % 2 == 0 { k / 2 } else { 0 } as f64;
+                let turn = if k % 2 == 1 {
+                    ((k + 1) / 2) as f64
+                } else {
+                    -((k / 2) as f64)
+                };
                 box_at(start + turn * step)
             })
             .find(|b| fits(b) && !self.taken.iter().any(|t| overlaps(b, t)))

@@ -168,7 +168,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         let absolute_xs: Vec<f64> = grid.xs.iter().map(|x| lower_end.0 + x).collect();
         let absolute_ys: Vec<f64> = grid.ys.iter().map(|y| lower_end.1 + y).collect();
         let (fine_xs, fine_ys, fine) = refine(&absolute_xs, &absolute_ys, &grid.factors, 4);
-        let mut levels = Vec::new();
+        let mut labelled = 0;
         for factor in [1.02, 1.05, 1.1, 1.2, 1.4, 1.7] {
             let level = lo * factor;
             let segments = contour(&fine_xs, &fine_ys, &fine, level);
@@ -197,7 +197,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
                     &format!("{level:.3}"),
                     "font-size=\"9\" font-family=\"sans-serif\" fill=\"#4e342e\" stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\"",
                 );
-                levels.push(level);
+                labelled += 1;
             }
         }
         // The key names the refined critical circle's F, which the grid's least F bounds above.
@@ -212,7 +212,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             "<text x=\"60\" y=\"44\" font-size=\"11\" font-family=\"sans-serif\" fill=\"#b71c1c\">{}</text>",
             escape(&format!(
                 "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {} labelled contours{critical}",
-                levels.len()
+                labelled
             ))
         ));
     }

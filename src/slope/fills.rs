@@ -30,17 +30,10 @@ pub fn layer_fills(section: &Section, left: f64, right: f64, bottom: f64) -> Vec
                 .filter_map(|l| l.top.as_ref()),
         )
         .collect();
-    // Every line is straight between the vertices and the crossings: the edges are exact
-    // through these x.
+    // Every line is straight between the section's bends: the edges are exact through these x.
     let mut xs: Vec<f64> = vec![left, right];
-    for (i, line) in tops.iter().enumerate() {
-        xs.extend(line.xs().filter(|&x| x > left && x < right));
-        for other in &tops[i + 1..] {
-            xs.extend(line.crossings(other, left, right));
-        }
-    }
+    xs.extend(section.bends().iter().filter(|&&x| x > left && x < right));
     xs.sort_by(f64::total_cmp);
-    xs.dedup();
     let mut fills = Vec::new();
     for (k, layer) in section.layers().iter().enumerate() {
         let upper = |x: f64| tops[k].y_at(x).min(ground.y_at(x));

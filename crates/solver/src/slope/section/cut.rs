@@ -270,18 +270,13 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
 /// Where the lines above the bases bend or cross (ground, layer tops, the water line, surcharge
 /// edges), over the whole section, sorted: the slice weights and loads are integrated piecewise
 /// between these, exactly. Computed once per section.
-pub(super) fn bends(
-    ground: &Polyline,
-    tops: &[&Polyline],
-    water: Option<&Polyline>,
-    surcharges: &[super::Surcharge],
-) -> Vec<f64> {
-    let lines: Vec<&Polyline> = std::iter::once(ground)
-        .chain(tops.iter().copied())
-        .chain(water)
+pub(super) fn bends(section: &Section) -> Vec<f64> {
+    let lines: Vec<&Polyline> = std::iter::once(&section.ground)
+        .chain(section.layers.iter().filter_map(|l| l.top.as_ref()))
+        .chain(section.piezometric_line.as_ref())
         .collect();
     let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
-    xs.extend(surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
     // Beyond every vertex the lines run level: no crossing lies outside their range.
     let (lo, hi) = xs
         .iter()
@@ -433,10 +428,9 @@ fn slice(
         xa = xb;
         std::mem::swap(a, b);
     }
-    // The levels over the base middle: the mean of the sides' unless a line bends between.
-    if inner.is_empty() {
-        middle.midway(left.values(), right.values());
-    } else {
+    // The levels over the base middle: with no bend inside, the single piece's half-way levels
+    // the loop left in `middle`; else read there.
+    if !inner.is_empty() {
         middle.read(section, xm);
     }
     let levels = middle.values();

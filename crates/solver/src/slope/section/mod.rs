@@ -293,13 +293,7 @@ impl Section {
 
     /// The section with its bends found.
     fn with_bends(mut self) -> Self {
-        let tops: Vec<&Polyline> = self.layers.iter().filter_map(|l| l.top.as_ref()).collect();
-        self.bends = cut::bends(
-            &self.ground,
-            &tops,
-            self.piezometric_line.as_ref(),
-            &self.surcharges,
-        );
+        self.bends = cut::bends(&self);
         // Between the bends both lines are straight, beyond them level: the water stands above
         // the ground somewhere only if it does at a bend.
         self.ponded = self.piezometric_line.as_ref().is_some_and(|line| {
@@ -343,6 +337,12 @@ impl Section {
     /// The tension crack.
     pub fn tension_crack(&self) -> Option<TensionCrack> {
         self.tension_crack
+    }
+
+    /// Where the ground, layer tops and water line bend or cross, and the surcharge edges,
+    /// sorted: between two of these every line of the section is straight.
+    pub fn bends(&self) -> &[f64] {
+        &self.bends
     }
 
     /// The section seen from behind (x → −x).
