@@ -16,7 +16,7 @@ use thrustline_solver::slope::{
 use super::analysed::Analysed;
 use super::methods::{interslice_function, MethodName};
 use super::request::{CircleDto, SearchDto, SpencerRequest};
-use super::section::{polyline, search_region, section_from, soil as soil_from};
+use super::section::{polyline, search_region, section_from, soil as soil_from, Noncircular};
 use crate::error::ApiError;
 use crate::limits::{
     DEFAULT_WATER_UNIT_WEIGHT, MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES,
@@ -68,8 +68,8 @@ pub struct SectionSearch {
     pub slices: NonZeroUsize,
     /// Seismic coefficients.
     pub seismic: Seismic,
-    /// With a non-circular search: the polyline's vertices.
-    pub noncircular: Option<usize>,
+    /// With a non-circular search: its polyline.
+    pub noncircular: Option<Noncircular>,
 }
 
 /// The ground and soil: a section, or the simple slope with its soil.

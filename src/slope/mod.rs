@@ -265,15 +265,19 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                 };
                 let mut problem = SectionProblem::new(section, shape, slices, seismic, None)?;
                 let mut report = SearchReport::of_section(&found, hard);
-                if let Some(vertices) = noncircular {
+                if let Some(noncircular) = noncircular {
+                    let budget = noncircular
+                        .budget
+                        .and_then(|b| std::time::Instant::now().checked_add(b))
+                        .map_or(deadline, |end| end.min(deadline));
                     let better = search_noncircular(
                         problem.section(),
                         &problem.surface(),
-                        vertices,
+                        noncircular.vertices,
                         slices,
                         seismic,
                         &spencer,
-                        Some(deadline),
+                        Some(budget),
                     );
                     if let Some(better) = better {
                         let line = Polyline::new(better.surface.clone())
@@ -287,6 +291,7 @@ fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlo
                         )?;
                         report.evaluations += better.evaluations;
                         report.path = Some(better.path);
+                        report.path_ms = Some(better.path_ms);
                         report.timed_out = better.timed_out;
                     }
                 }

@@ -40,10 +40,14 @@ pub struct SearchOutDto {
     /// Whether circles without a solution lie at or next to the grid centre of the minimum
     /// (the least F found may then not be the least F there is).
     pub unsolved_near_minimum: bool,
-    /// With `shape: noncircular`: F after each round of the polyline search, starting from the
-    /// critical circle's polyline.
+    /// With `shape: noncircular`: the least F found so far, first on the critical circle's
+    /// polyline, then each time a round of the polyline search lowered it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub path: Option<Vec<f64>>,
+    /// With `shape: noncircular`: when each F of `path` was reached, in milliseconds from the
+    /// start of the polyline search (F against time: what a shorter `time_budget_ms` gives).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path_ms: Option<Vec<f64>>,
 }
 
 /// Spencer's figure: F from each equation alone against θ; they cross at the answer.

@@ -32,8 +32,11 @@ pub struct SearchReport {
     pub unsolved_bishop_minimum: Option<f64>,
     /// Whether unsolved circles lie at or next to the grid centre of the minimum.
     pub unsolved_near_minimum: bool,
-    /// A non-circular search's F after each round, the critical circle's polyline first.
+    /// A non-circular search's least F so far, the critical circle's polyline first, then each
+    /// time a round lowered it.
     pub path: Option<Vec<f64>>,
+    /// When each of `path` was reached, in milliseconds from the start of the polyline search.
+    pub path_ms: Option<Vec<f64>>,
     /// Whether the time limit ended a non-circular search (its answer is the best so far).
     pub timed_out: bool,
 }
@@ -53,6 +56,7 @@ impl SearchReport {
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
+            path_ms: None,
             timed_out: false,
         }
     }
@@ -70,6 +74,7 @@ impl SearchReport {
             unsolved_bishop_minimum: s.unsolved_bishop_minimum,
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
+            path_ms: None,
             timed_out: false,
         }
     }

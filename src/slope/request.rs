@@ -240,6 +240,13 @@ pub struct SearchDto {
     #[serde(default)]
     #[schema(minimum = 4, maximum = 40)]
     pub vertices: Option<usize>,
+    /// Section only, with `shape: noncircular`: the most the polyline search may spend after
+    /// the critical circle is found, in milliseconds (0 < t ≤ 600000; the request's time limit
+    /// still applies). When it ends the search, the answer is its best surface so far and a
+    /// warning says so. Defaults to the time limit.
+    #[serde(default)]
+    #[schema(exclusive_minimum = 0.0, maximum = 600000.0)]
+    pub time_budget_ms: Option<f64>,
     /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
     /// range; at most 101.
     #[serde(default)]

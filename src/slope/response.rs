@@ -369,6 +369,7 @@ impl SpencerResponse {
                 unsolved_bishop_minimum: search.unsolved_bishop_minimum,
                 unsolved_near_minimum: search.unsolved_near_minimum,
                 path: search.path.clone(),
+                path_ms: search.path_ms.clone(),
             }),
             grid: solved.search.as_ref().map(|search| GridDto {
                 xs: search.grid.xs.clone(),

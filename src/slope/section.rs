@@ -1,6 +1,8 @@
 //! The validation of a `section` (SPEC §4.1) into the solver's [`Section`], and of a `surface`:
 //! every point and number checked, each failure naming its field path.
 
+use std::time::Duration;
+
 use thrustline_solver::slope::section::search::{CircleRegion, Radii};
 use thrustline_solver::slope::section::{
     Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
@@ -18,13 +20,22 @@ use crate::validation::{count, number};
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
 
-/// The region of a search over a section, whether its bounds were given (hard), and with a
-/// non-circular search its polyline's vertices.
+/// A non-circular search: its polyline's vertices and its time budget.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Noncircular {
+    /// Vertices of the polyline.
+    pub vertices: usize,
+    /// The most the polyline search may spend.
+    pub budget: Option<Duration>,
+}
+
+/// The region of a search over a section, whether its bounds were given (hard), and a
+/// non-circular search's polyline.
 pub fn search_region(
     search: &SearchDto,
     section: &Section,
     slices: usize,
-) -> Result<(CircleRegion, bool, Option<usize>), ApiError> {
+) -> Result<(CircleRegion, bool, Option<Noncircular>), ApiError> {
     let noncircular = match search.shape.unwrap_or_default() {
         SearchShapeDto::Circular if search.vertices.is_some() => {
             return Err(ApiError::invalid(
@@ -32,13 +43,21 @@ pub fn search_region(
                 "is for shape: noncircular",
             ))
         }
+        SearchShapeDto::Circular if search.time_budget_ms.is_some() => {
+            return Err(ApiError::invalid(
+                "search.time_budget_ms",
+                "is for shape: noncircular",
+            ))
+        }
         SearchShapeDto::Circular => None,
-        SearchShapeDto::Noncircular => Some(count(
-            "search.vertices",
-            search.vertices.unwrap_or(12),
-            4,
-            40,
-        )?),
+        SearchShapeDto::Noncircular => Some(Noncircular {
+            vertices: count("search.vertices", search.vertices.unwrap_or(12), 4, 40)?,
+            budget: search
+                .time_budget_ms
+                .map(|t| number("search.time_budget_ms", t, 0.0, true, 6e5))
+                .transpose()?
+                .map(|t| Duration::from_secs_f64(t / 1e3)),
+        }),
     };
     if search.lower_end_factor != 0.0 || search.lower_end_factor_max.is_some() {
         return Err(ApiError::invalid(

@@ -95,7 +95,8 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
         if search.timed_out {
             warnings.push(
                 "the non-circular search ran out of time: the surface is the best found so far, \
-                 a lower F may exist (fewer vertices or slices, or a longer time limit)"
+                 a lower F may exist (fewer vertices or slices, a larger time_budget_ms or a longer \
+                 time limit)"
                     .to_owned(),
             );
         }

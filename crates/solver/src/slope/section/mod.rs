@@ -7,6 +7,7 @@
 //! sliding mass into [`SliceModel`] slices in the solver's frame (crest towards +x: a section
 //! whose crest lies to the left is mirrored, x → −x, and mirrored back for the answer).
 
+mod blocks;
 mod column;
 mod cut;
 mod ends;

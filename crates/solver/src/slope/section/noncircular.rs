@@ -1,18 +1,25 @@
-//! The critical non-circular surface (SPEC §4.4): from a circle (the critical one, say), a
-//! polyline of `vertices` points at fixed fractions of the way from entry to exit, whose interior
-//! heights and whose entry and exit move to lower Spencer's F (Nelder–Mead, restarted from its
-//! own answer while that still lowers F), under a time budget. Kinematically admissible: the
-//! base never bends back upwards by more than `REVERSE_BEND_DEG` between segments (the surface
-//! is concave upwards but for that), stays below the ground and above bedrock.
+//! The critical non-circular surface (SPEC §4.4). Two starts: the critical circle's polyline
+//! (`vertices` points at equal steps from entry to exit), and the best block surface along the
+//! section's layer boundaries ([`blocks`]: a grid of x₁, x₂ on each, then Nelder–Mead), which
+//! is where a thin weak layer's surface lies and where no polyline moved from a circle gets.
+//! From the lower start first, then the other while time remains, the interior heights and the
+//! entry and exit move to lower Spencer's F (Nelder–Mead, restarted from its own answer while
+//! that still lowers F), under a time budget. Kinematically admissible: the base never bends
+//! back upwards by more than `REVERSE_BEND_DEG` between segments (the surface is concave
+//! upwards but for that), stays below the ground and above bedrock.
 
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
+use super::blocks;
 use super::cut::place;
 use super::polyline::Polyline;
 use super::{Section, SlipShape};
 use crate::numerics::nelder_mead;
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
+
+/// A surface's points, left to right.
+type Points = [(f64, f64)];
 
 /// The most a segment may turn downwards from the one before it, in degrees.
 const REVERSE_BEND_DEG: f64 = 10.0;
@@ -24,52 +31,181 @@ pub struct NoncircularSearch {
     pub surface: Vec<(f64, f64)>,
     /// Its factor of safety.
     pub factor_of_safety: f64,
-    /// F after each round of the search, the start first.
+    /// The least F found so far, the critical circle's polyline first, then each time a round
+    /// of the search lowered it.
     pub path: Vec<f64>,
+    /// When each of `path` was reached, in milliseconds from the start of the search.
+    pub path_ms: Vec<f64>,
     /// Surfaces evaluated.
     pub evaluations: usize,
     /// Whether the time budget ended the search.
     pub timed_out: bool,
 }
 
-/// The surface of `v`: entry x, exit x, then the interior heights as depths below the ground.
-fn surface_of(section: &Section, v: &[f64]) -> Option<Vec<(f64, f64)>> {
-    let (a, b) = (v[0], v[1]);
-    if b <= a || b.is_nan() || a.is_nan() {
-        return None;
-    }
-    let n = v.len();
-    let ground = &section.ground;
-    // The ends sit just above the ground so that the surface crosses it there.
-    let lift = 1e-6 * (b - a);
-    let mut points = Vec::with_capacity(n);
-    points.push((a, ground.y_at(a) + lift));
-    for (i, depth) in v[2..].iter().enumerate() {
-        let x = a + (b - a) * (i + 1) as f64 / (n - 1) as f64;
-        if *depth <= 0.0 {
-            return None;
-        }
-        let y = ground.y_at(x) - depth;
-        if section.bedrock.as_ref().is_some_and(|r| y < r.y_at(x)) {
-            return None;
-        }
-        points.push((x, y));
-    }
-    points.push((b, ground.y_at(b) + lift));
-    // Concave upwards but for small reverse bends.
+/// Whether a surface (left to right) may slide: its interior points below the ground, above
+/// bedrock, and concave upwards but for reverse bends of up to `REVERSE_BEND_DEG`.
+fn admissible(section: &Section, points: &[(f64, f64)]) -> bool {
+    let inside = points.len() >= 2
+        && points[1..points.len() - 1].iter().all(|&(x, y)| {
+            y < section.ground.y_at(x) && section.bedrock.as_ref().is_none_or(|r| y >= r.y_at(x))
+        });
     let limit = REVERSE_BEND_DEG.to_radians();
     let angles: Vec<f64> = points
         .windows(2)
         .map(|w| (w[1].1 - w[0].1).atan2(w[1].0 - w[0].0))
         .collect();
     // Whichever way the slope faces, a bowl's segments steepen from left to right.
-    angles
-        .windows(2)
-        .all(|w| w[1] >= w[0] - limit)
-        .then_some(points)
+    inside && angles.windows(2).all(|w| w[1] >= w[0] - limit)
 }
 
-/// Searches from `start` (a circle's polyline, left to right) with `vertices` points.
+/// The surface of `v`: entry x, exit x, then the interior heights as depths below the ground at
+/// `fractions` of the way from entry to exit (k/m as (k, m), which for the circle's equal steps
+/// i/(n − 1) rounds as `(b − a)·i/(n − 1)` always has).
+fn surface_of(section: &Section, fractions: &[(f64, f64)], v: &[f64]) -> Option<Vec<(f64, f64)>> {
+    let (a, b) = (v[0], v[1]);
+    if b <= a || b.is_nan() || a.is_nan() {
+        return None;
+    }
+    let ground = &section.ground;
+    // The ends sit just above the ground so that the surface crosses it there.
+    let lift = 1e-6 * (b - a);
+    let mut points = Vec::with_capacity(v.len());
+    points.push((a, ground.y_at(a) + lift));
+    for ((k, m), depth) in fractions.iter().zip(&v[2..]) {
+        if *depth <= 0.0 {
+            return None;
+        }
+        let x = a + (b - a) * k / m;
+        points.push((x, ground.y_at(x) - depth));
+    }
+    points.push((b, ground.y_at(b) + lift));
+    admissible(section, &points).then_some(points)
+}
+
+/// A surface's parameters for [`surface_of`]: its interior points' fractions of the way from
+/// entry to exit, and entry, exit and their depths.
+fn parameters(section: &Section, points: &[(f64, f64)]) -> (Vec<(f64, f64)>, Vec<f64>) {
+    let (a, b) = (points[0].0, points[points.len() - 1].0);
+    let inner = &points[1..points.len() - 1];
+    let fractions = inner.iter().map(|p| (p.0 - a, b - a)).collect();
+    let v = [a, b]
+        .into_iter()
+        .chain(
+            inner
+                .iter()
+                .map(|p| (section.ground.y_at(p.0) - p.1).max(1e-6 * (b - a))),
+        )
+        .collect();
+    (fractions, v)
+}
+
+/// `points` with points added in the middle of the longest segments until there are `n`.
+fn refined(mut points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
+    while points.len() < n {
+        let Some(i) = (1..points.len()).max_by(|&i, &j| {
+            let length = |k: usize| points[k].0 - points[k - 1].0;
+            length(i).total_cmp(&length(j))
+        }) else {
+            break;
+        };
+        let (p, q) = (points[i - 1], points[i]);
+        points.insert(i, (0.5 * (p.0 + q.0), 0.5 * (p.1 + q.1)));
+    }
+    points
+}
+
+/// Rounds of Nelder–Mead on [`surface_of`]'s parameters from `v`, restarted while F still falls
+/// by 0.1 %, telling `round` F after each: the best parameters, their F, and whether time ran
+/// out.
+fn polish(
+    factor: &dyn Fn(&[f64]) -> f64,
+    mut v: Vec<f64>,
+    mut best: f64,
+    late: &dyn Fn() -> bool,
+    round: &mut dyn FnMut(f64),
+) -> (Vec<f64>, f64, bool) {
+    let n = v.len();
+    let span = v[1] - v[0];
+    let mut timed_out = false;
+    for _ in 0..8 {
+        let depth = v[2..].iter().fold(0.0f64, |m, d| m.max(*d));
+        let mut step = vec![0.05 * span, 0.05 * span];
+        step.extend(std::iter::repeat_n(0.15 * depth.max(1e-3 * span), n - 2));
+        let found = nelder_mead(factor, &v, &step, 1e-7 * span, 400 * n);
+        if late() {
+            timed_out = true;
+        }
+        if found.value >= best || found.value.is_nan() {
+            break;
+        }
+        let settled = found.value >= best * (1.0 - 1e-3);
+        best = found.value;
+        v = found.point;
+        round(best);
+        if settled || timed_out {
+            break;
+        }
+    }
+    (v, best, timed_out)
+}
+
+/// The best block surface ([`blocks`]): on every base, x₁ and x₂ over a grid of its stretch
+/// below the ground with the rays at 45° ± φ/2 (the steeper, active, one under the higher
+/// ground), then the best base's best block moved by Nelder–Mead in (x₁, x₂, both angles).
+fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<(f64, f64)>, f64)> {
+    const GRID: usize = 12;
+    let phi = section.layers[0].soil.friction_angle_rad;
+    let (active, passive) = (
+        std::f64::consts::FRAC_PI_4 + 0.5 * phi,
+        std::f64::consts::FRAC_PI_4 - 0.5 * phi,
+    );
+    let angles = |x1: f64, x2: f64| {
+        if section.ground.y_at(x1) >= section.ground.y_at(x2) {
+            (active, passive)
+        } else {
+            (passive, active)
+        }
+    };
+    let mut best: Option<(usize, [f64; 4], f64)> = None;
+    let bases = blocks::bases(section);
+    for (k, base) in bases.iter().enumerate() {
+        let at = |i: usize| base.from + (base.to - base.from) * i as f64 / GRID as f64;
+        for i in 0..GRID {
+            for j in i + 1..=GRID {
+                let (x1, x2) = (at(i), at(j));
+                let (l, r) = angles(x1, x2);
+                let Some(points) = blocks::block(section, base, (x1, x2), (l, r)) else {
+                    continue;
+                };
+                let f = trial(&points);
+                if best.is_none_or(|b| f < b.2) {
+                    best = Some((k, [x1, x2, l, r], f));
+                }
+            }
+        }
+    }
+    let (k, start, f) = best.filter(|b| b.2.is_finite())?;
+    let base = &bases[k];
+    let of = |p: &[f64]| blocks::block(section, base, (p[0], p[1]), (p[2], p[3]));
+    let span = base.to - base.from;
+    let step = [0.5 * span / GRID as f64, 0.5 * span / GRID as f64, 0.1, 0.1];
+    let found = nelder_mead(
+        |p| of(p).map_or(f64::INFINITY, |points| trial(&points)),
+        &start,
+        &step,
+        1e-7 * span,
+        400,
+    );
+    let (point, value) = if found.value < f {
+        (found.point, found.value)
+    } else {
+        (start.to_vec(), f)
+    };
+    Some((of(&point)?, value))
+}
+
+/// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
+/// the best block surface along the section's layer boundaries when that is lower.
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
@@ -90,14 +226,8 @@ pub fn search_noncircular(
     // A trial's F at the search's slices, if four times as many give it again (to 1 %): a
     // surface can have a root at one slicing only, which an optimiser would happily exploit.
     let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
-    let factor = |v: &[f64]| -> f64 {
-        if late() {
-            return f64::INFINITY;
-        }
-        let Some(points) = surface_of(section, v) else {
-            return f64::INFINITY;
-        };
-        let Ok(line) = Polyline::new(points) else {
+    let evaluate = |points: &[(f64, f64)]| -> f64 {
+        let Ok(line) = Polyline::new(points.to_vec()) else {
             return f64::INFINITY;
         };
         evaluations.set(evaluations.get() + 1);
@@ -114,48 +244,68 @@ pub fn search_noncircular(
             _ => f64::INFINITY,
         }
     };
+    // Past the deadline every trial fails, so that the optimisers stop.
+    let trial = |points: &[(f64, f64)]| {
+        if late() {
+            f64::INFINITY
+        } else {
+            evaluate(points)
+        }
+    };
     // The start: the circle's surface resampled at the vertices.
     let (a, b) = (start.first()?.0, start.last()?.0);
     let start_line = Polyline::new(start.to_vec()).ok()?;
     let n = vertices.max(3);
+    let fractions: Vec<(f64, f64)> = (1..n - 1).map(|i| (i as f64, (n - 1) as f64)).collect();
     let mut v = vec![a, b];
-    for i in 1..n - 1 {
-        let x = a + (b - a) * i as f64 / (n - 1) as f64;
+    for (k, m) in &fractions {
+        let x = a + (b - a) * k / m;
         v.push((section.ground.y_at(x) - start_line.y_at(x)).max(1e-6 * (b - a)));
     }
-    let mut best = factor(&v);
-    if !best.is_finite() {
+    let factor = |fractions: &[(f64, f64)], v: &[f64]| {
+        surface_of(section, fractions, v).map_or(f64::INFINITY, |p| trial(&p))
+    };
+    let began = Instant::now();
+    // The start is evaluated whatever the time, so that a search out of time still answers.
+    let first = surface_of(section, &fractions, &v).map_or(f64::INFINITY, |p| evaluate(&p));
+    if !first.is_finite() {
         return None;
     }
-    let mut path = vec![best];
-    let span = b - a;
+    let mut starts = vec![(fractions, v, first)];
+    if let Some((points, f)) = best_block(section, &trial) {
+        let (fractions, w) = parameters(section, &refined(points, n));
+        starts.push((fractions, w, f));
+    }
+    // The lower start first: what the time budget leaves for the other is its bonus.
+    starts.sort_by(|p, q| p.2.total_cmp(&q.2));
+    let mut best = (starts[0].0.clone(), starts[0].1.clone(), starts[0].2);
+    let mut path = vec![first];
+    let mut path_ms = vec![0.0];
+    let mut note = |f: f64| {
+        if f < path[path.len() - 1] {
+            path.push(f);
+            path_ms.push(began.elapsed().as_secs_f64() * 1e3);
+        }
+    };
+    note(best.2);
     let mut timed_out = false;
-    for _ in 0..8 {
-        let depth = v[2..].iter().fold(0.0f64, |m, d| m.max(*d));
-        let mut step = vec![0.05 * span, 0.05 * span];
-        step.extend(std::iter::repeat_n(0.15 * depth.max(1e-3 * span), n - 2));
-        let found = nelder_mead(factor, &v, &step, 1e-7 * span, 400 * n);
+    for (fractions, v, f) in starts {
         if late() {
             timed_out = true;
-        }
-        if found.value >= best || found.value.is_nan() {
             break;
         }
-        let settled = found.value >= best * (1.0 - 1e-3);
-        best = found.value;
-        v = found.point;
-        path.push(best);
-        if settled {
-            break;
-        }
-        if timed_out {
-            break;
+        let (v, g, late_here) = polish(&|v| factor(&fractions, v), v, f, &late, &mut note);
+        timed_out |= late_here;
+        if g < best.2 {
+            best = (fractions, v, g);
         }
     }
+    let (fractions, v, f) = best;
     Some(NoncircularSearch {
-        surface: surface_of(section, &v)?,
-        factor_of_safety: best,
+        surface: surface_of(section, &fractions, &v)?,
+        factor_of_safety: f,
         path,
+        path_ms,
         evaluations: evaluations.get(),
         timed_out,
     })
