@@ -38,11 +38,18 @@ layered = {"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
 bench("section, 3 layers + water table, one circle, 100 slices", "/slope/spencer", dict(layered, circle={"centre": [12, 28], "radius": 26}, slices=100), lambda d: d["solve_time_ms"])
 bench("same, with Morgenstern–Price, Bishop, Janbu and ordinary", "/slope/spencer", dict(layered, circle={"centre": [12, 28], "radius": 26}, slices=100, methods=["morgenstern_price", "bishop", "janbu", "ordinary"]), lambda d: d["solve_time_ms"])
 fk = {"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]], "layers": [{"top": None, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]}}
-surface = [[40 + 6.5 * i, 62 - 40 * (1 - ((i - 10) / 10) ** 2) ** 0.5 if i not in (0, 20) else 62] for i in range(21)]
-surface = [[x, min(y, 61.9 if x < 60 else 62)] for x, y in surface]
-bench("F&K section, a 21-vertex polyline surface, 100 slices", "/slope/spencer", dict(fk, surface=[[40, 62], [50, 45], [70, 32], [90, 25], [110, 21], [130, 19], [150, 18], [165, 21]], slices=100), lambda d: d["solve_time_ms"])
+# 20 points on Fredlund & Krahn's case-1 circle (centre (120, 90), R = 80), ends above the ground.
+surface = [[45 + 114 * i / 19, 90 - (6400 - (45 + 114 * i / 19 - 120) ** 2) ** 0.5] for i in range(20)]
+bench("F&K section, a 20-vertex polyline surface, 100 slices", "/slope/spencer", dict(fk, surface=surface, slices=100), lambda d: d["solve_time_ms"])
+bench("same, with Morgenstern–Price, Bishop, Janbu and ordinary (moment centre given)", "/slope/spencer", dict(fk, surface=surface, slices=100, moment_centre=[120, 90], methods=["morgenstern_price", "bishop", "janbu", "ordinary"]), lambda d: d["solve_time_ms"])
 acads = {"section": {"ground": [[20, 25], [30, 25], [50, 35], [70, 35]], "layers": [{"top": None, "soil": {"unit_weight": 20, "cohesion": 3, "friction_angle_deg": 19.6}}]}}
 bench("ACADS 1(a) search {}: 21 × 21 centres × 10 radii + refinement, 50 slices", "/slope/spencer", dict(acads, search={}, slices=50), lambda d: d["solve_time_ms"])
+seam = {"section": {"ground": [[10, 50], [15, 50], [19, 48], [31.9, 41.55], [32, 41.5], [35, 41.5]],
+    "layers": [{"top": None, "soil": {"unit_weight": 19, "cohesion": 15, "friction_angle_deg": 20}},
+               {"top": [[10, 48.5], [19, 48], [32, 41.5], [35, 41.5]], "soil": {"unit_weight": 19, "cohesion": 17, "friction_angle_deg": 21}},
+               {"top": [[10, 46.25], [31.9, 41.55], [32, 41.5], [35, 41.5]], "soil": {"unit_weight": 19, "cohesion": 5, "friction_angle_deg": 10}},
+               {"top": [[10, 46.2], [32, 41.5], [35, 41.5]], "soil": {"unit_weight": 19, "cohesion": 35, "friction_angle_deg": 28}}]}}
+bench("non-circular search, Cheng et al. ex. 4 (5 cm seam), 12 vertices, 50 slices", "/slope/spencer", dict(seam, search={"shape": "noncircular"}, slices=50), lambda d: d["solve_time_ms"])
 bench("3-layer section search: 50 × 50 centres × 10 radii + refinement, 50 slices", "/slope/spencer", dict(layered, search={"nx": 50, "ny": 50, "nr": 10}, slices=50), lambda d: d["solve_time_ms"])
 arch = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.0, "voussoirs": 100}, "fill": {"unit_weight": 1.8, "surface": 11.5}}
 bench("arch with fill, N = 100, a road load (chain)", "/arch/live-load", dict(arch, road_loads=[{"x": -4, "fy": -10, "length": 0.3}]), lambda d: d["solver"]["time_ms"])
