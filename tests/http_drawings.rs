@@ -154,3 +154,38 @@ async fn hinge_labels_overlap_no_dot_no_arrow_and_no_other_label() {
         }
     }
 }
+
+#[tokio::test]
+async fn the_effective_line_of_thrust_is_drawn_only_inside_its_slices() {
+    // With r_u = 0.5 the effective inter-slice force nearly vanishes near the crest, and its
+    // line of thrust there falls far below the slip surface (9 of 99 boundaries, flagged
+    // `inside_slice: false`): the dashed line leaves those points out.
+    let server = Server::start().await;
+    let body = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {},
+                      "soil": {"unit_weight": 10, "cohesion": 6.096, "friction_angle_deg": 40,
+                               "pore_pressure_ratio": 0.5}});
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let line = answer["effective_thrust_line"].as_array().unwrap();
+    let inside = line
+        .iter()
+        .filter(|t| t["inside_slice"] == true && t["y"].is_number())
+        .count();
+    assert!(inside < line.len(), "the case must have points outside");
+    let drawing = svg(&server, "/slope/spencer/svg", &body).await;
+    let drawn: usize = drawing
+        .lines()
+        .filter(|l| l.starts_with("<polyline") && l.contains("stroke-dasharray=\"5 3\""))
+        .map(|l| {
+            let points = l
+                .split("points=\"")
+                .nth(1)
+                .unwrap()
+                .split('"')
+                .next()
+                .unwrap();
+            points.split_whitespace().count()
+        })
+        .sum();
+    assert_eq!(drawn, inside);
+}

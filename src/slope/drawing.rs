@@ -347,10 +347,14 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         .zip(&solution.effective_thrust_line)
         .any(|(t, e)| t.y != e.y);
     if has_water {
+        // Broken where it leaves its slice, like the total one.
         let effective: Vec<(f64, f64)> = solution
             .effective_thrust_line
             .iter()
-            .map(|t| (solved.problem.request_x(t.x), t.y.unwrap_or(f64::NAN)))
+            .map(|t| match t.y {
+                Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+                _ => (f64::NAN, f64::NAN),
+            })
             .collect();
         canvas.polyline(
             &effective,
@@ -358,7 +362,9 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         );
         legend.push((
             "#c62828",
-            "line of thrust of the effective forces (dashed)".to_owned(),
+            "line of thrust of the effective forces (dashed; not drawn where it leaves its \
+             slice)"
+                .to_owned(),
         ));
     }
     let caption = match (solution.factor_of_safety, solution.theta_rad) {
