@@ -344,3 +344,25 @@ async fn a_time_budget_bounds_the_polyline_search() {
         assert_problem(status, &content_type, &answer, 422, "search.time_budget_ms");
     }
 }
+
+#[tokio::test]
+async fn the_simple_slope_refuses_a_noncircular_search_instead_of_ignoring_it() {
+    // It used to answer the critical circle as if the shape had not been asked for.
+    let server = Server::start().await;
+    let simple = json!({"slope": {"height": 10, "length": 20},
+                        "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 30}});
+    for (search, field) in [
+        (json!({"shape": "noncircular"}), "search.shape"),
+        (json!({"vertices": 8}), "search.vertices"),
+        (json!({"time_budget_ms": 50}), "search.time_budget_ms"),
+    ] {
+        let mut body = simple.clone();
+        body["search"] = search;
+        let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
+    let mut body = simple;
+    body["search"] = json!({"shape": "circular"});
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+}

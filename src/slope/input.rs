@@ -15,7 +15,7 @@ use thrustline_solver::slope::{
 
 use super::analysed::Analysed;
 use super::methods::{interslice_function, MethodName};
-use super::request::{CircleDto, SearchDto, SpencerRequest};
+use super::request::{CircleDto, SearchDto, SearchShapeDto, SpencerRequest};
 use super::section::{polyline, search_region, section_from, soil as soil_from, Noncircular};
 use crate::error::ApiError;
 use crate::limits::{
@@ -372,6 +372,21 @@ fn search_from(
             *field,
             "is for a search over a section; on the simple slope the radius follows from the \
              centre and the lower end",
+        ));
+    }
+    let noncircular = [
+        (
+            "search.shape",
+            search.shape == Some(SearchShapeDto::Noncircular),
+        ),
+        ("search.vertices", search.vertices.is_some()),
+        ("search.time_budget_ms", search.time_budget_ms.is_some()),
+    ];
+    if let Some((field, _)) = noncircular.iter().find(|f| f.1) {
+        return Err(ApiError::invalid(
+            *field,
+            "is for a search over a section: give the slope as a section (its ground and one \
+             layer) to search for a non-circular surface",
         ));
     }
     let lower_end_factor = number(
