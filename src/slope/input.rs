@@ -15,8 +15,10 @@ use thrustline_solver::slope::{
 
 use super::analysed::Analysed;
 use super::methods::{interslice_function, MethodName};
-use super::request::{CircleDto, SearchDto, SearchShapeDto, SpencerRequest};
-use super::section::{polyline, search_region, section_from, soil as soil_from, Noncircular};
+use super::request::{CircleDto, SearchDto, SpencerRequest};
+use super::section::{
+    polyline, refuse_section_only, search_region, section_from, soil as soil_from, Noncircular,
+};
 use crate::error::ApiError;
 use crate::limits::{
     DEFAULT_WATER_UNIT_WEIGHT, MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES,
@@ -358,37 +360,7 @@ fn search_from(
     slices: NonZeroUsize,
     seismic: Seismic,
 ) -> Result<Target, ApiError> {
-    let section_only = [
-        ("search.radius_min", search.radius_min.is_some()),
-        ("search.radius_max", search.radius_max.is_some()),
-        ("search.nr", search.nr.is_some()),
-        (
-            "search.tangent_elevations",
-            search.tangent_elevations.is_some(),
-        ),
-    ];
-    if let Some((field, _)) = section_only.iter().find(|f| f.1) {
-        return Err(ApiError::invalid(
-            *field,
-            "is for a search over a section; on the simple slope the radius follows from the \
-             centre and the lower end",
-        ));
-    }
-    let noncircular = [
-        (
-            "search.shape",
-            search.shape == Some(SearchShapeDto::Noncircular),
-        ),
-        ("search.vertices", search.vertices.is_some()),
-        ("search.time_budget_ms", search.time_budget_ms.is_some()),
-    ];
-    if let Some((field, _)) = noncircular.iter().find(|f| f.1) {
-        return Err(ApiError::invalid(
-            *field,
-            "is for a search over a section: give the slope as a section (its ground and one \
-             layer) to search for a non-circular surface",
-        ));
-    }
+    refuse_section_only(search)?;
     let lower_end_factor = number(
         "search.lower_end_factor",
         search.lower_end_factor,

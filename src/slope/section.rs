@@ -20,6 +20,43 @@ use crate::validation::{count, number};
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
 
+/// A search on the simple slope: the options only a section's search has are refused, each
+/// naming its field (none is silently ignored).
+pub fn refuse_section_only(search: &SearchDto) -> Result<(), ApiError> {
+    let section_only = [
+        ("search.radius_min", search.radius_min.is_some()),
+        ("search.radius_max", search.radius_max.is_some()),
+        ("search.nr", search.nr.is_some()),
+        (
+            "search.tangent_elevations",
+            search.tangent_elevations.is_some(),
+        ),
+    ];
+    if let Some((field, _)) = section_only.iter().find(|f| f.1) {
+        return Err(ApiError::invalid(
+            *field,
+            "is for a search over a section; on the simple slope the radius follows from the \
+             centre and the lower end",
+        ));
+    }
+    let noncircular = [
+        (
+            "search.shape",
+            search.shape == Some(SearchShapeDto::Noncircular),
+        ),
+        ("search.vertices", search.vertices.is_some()),
+        ("search.time_budget_ms", search.time_budget_ms.is_some()),
+    ];
+    if let Some((field, _)) = noncircular.iter().find(|f| f.1) {
+        return Err(ApiError::invalid(
+            *field,
+            "is for a search over a section: give the slope as a section (its ground and one \
+             layer) to search for a non-circular surface",
+        ));
+    }
+    Ok(())
+}
+
 /// A non-circular search: its polyline's vertices and its time budget.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Noncircular {
