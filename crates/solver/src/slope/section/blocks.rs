@@ -18,6 +18,8 @@ pub(super) struct Base {
     pub line: Polyline,
     pub from: f64,
     pub to: f64,
+    /// The section's extent, within which the end rays must reach the ground.
+    pub extent: (f64, f64),
 }
 
 /// The section's extent: from the leftmost to the rightmost point of its ground, layer tops
@@ -41,9 +43,13 @@ pub(super) fn bases(section: &Section) -> Vec<Base> {
         return Vec::new();
     }
     let ground = &section.ground;
-    let ys: Vec<f64> = ground.points().iter().map(|p| p.1).collect();
-    let height = ys.iter().fold(f64::NEG_INFINITY, |m, &y| m.max(y))
-        - ys.iter().fold(f64::INFINITY, |m, &y| m.min(y));
+    let (low, high) = ground
+        .points()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p.1), h.max(p.1))
+        });
+    let height = high - low;
     let scale = (hi - lo).max(height);
     let hair = HAIR * scale;
     let deep = 1e-3 * height.max(1e-3 * scale);
@@ -53,32 +59,30 @@ pub(super) fn bases(section: &Section) -> Vec<Base> {
         .chain(section.bedrock.as_ref().map(|r| (r, hair)));
     let mut out = Vec::new();
     for (line, shift) in boundaries {
-        {
-            let mut xs: Vec<f64> = std::iter::once(lo)
-                .chain(line.xs().chain(ground.xs()).filter(|&x| x > lo && x < hi))
-                .chain(std::iter::once(hi))
-                .collect();
-            xs.sort_by(f64::total_cmp);
-            xs.dedup();
-            let points: Vec<(f64, f64)> = line
-                .xs()
-                .filter(|&x| x > lo && x < hi)
-                .chain([lo, hi])
-                .map(|x| (x, line.y_at(x) + shift))
-                .collect();
-            let mut points = points;
-            points.sort_by(|a, b| a.0.total_cmp(&b.0));
-            points.dedup_by(|a, b| a.0 == b.0);
-            let Ok(moved) = Polyline::new(points) else {
-                continue;
-            };
-            if let Some((from, to)) = below_ground(ground, &moved, &xs, deep) {
-                out.push(Base {
-                    line: moved,
-                    from,
-                    to,
-                });
-            }
+        let mut xs: Vec<f64> = std::iter::once(lo)
+            .chain(line.xs().chain(ground.xs()).filter(|&x| x > lo && x < hi))
+            .chain(std::iter::once(hi))
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        let mut points: Vec<(f64, f64)> = line
+            .xs()
+            .filter(|&x| x > lo && x < hi)
+            .chain([lo, hi])
+            .map(|x| (x, line.y_at(x) + shift))
+            .collect();
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        points.dedup_by(|a, b| a.0 == b.0);
+        let Ok(moved) = Polyline::new(points) else {
+            continue;
+        };
+        if let Some((from, to)) = below_ground(ground, &moved, &xs, deep) {
+            out.push(Base {
+                line: moved,
+                from,
+                to,
+                extent: (lo, hi),
+            });
         }
     }
     out
@@ -99,14 +103,14 @@ fn below_ground(ground: &Polyline, line: &Polyline, xs: &[f64], deep: f64) -> Op
         let (a, b) = (w[0], w[1]);
         let (da, db) = (depth(a), depth(b));
         // Between vertices both lines are straight: depth is linear.
-        let cross = |_: ()| a + (b - a) * da / (da - db);
+        let cross = || a + (b - a) * da / (da - db);
         match (start, da > 0.0, db > 0.0) {
             (None, true, _) => start = Some(a),
-            (None, false, true) => start = Some(cross(())),
+            (None, false, true) => start = Some(cross()),
             _ => {}
         }
         if let (Some(s), false) = (start, db > 0.0) {
-            let end = if da > 0.0 { cross(()) } else { a };
+            let end = if da > 0.0 { cross() } else { a };
             consider(s, end, &mut best);
             start = None;
         }
@@ -170,7 +174,7 @@ pub(super) fn block(
         return None;
     }
     let ground = &section.ground;
-    let span = extent(section);
+    let span = base.extent;
     let (y1, y2) = (base.line.y_at(x1), base.line.y_at(x2));
     let a = ray_to_ground(ground, (x1, y1), left, -1.0, span)?;
     let b = ray_to_ground(ground, (x2, y2), right, 1.0, span)?;
