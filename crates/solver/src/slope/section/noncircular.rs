@@ -149,10 +149,11 @@ fn polish(
     (v, best, timed_out)
 }
 
-/// The best block surface ([`blocks`]): on every base, x₁ and x₂ over a grid of its stretch
-/// below the ground with the rays at 45° ± φ/2 (the steeper, active, one under the higher
-/// ground), then the best base's best block moved by Nelder–Mead in (x₁, x₂, both angles).
-fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<(f64, f64)>, f64)> {
+/// The best admissible block surface ([`blocks`]): on every base, x₁ and x₂ over a grid of its
+/// stretch below the ground with the rays at 45° ± φ/2 (the steeper, active, one under the
+/// higher ground), then the best base's best block moved by Nelder–Mead in (x₁, x₂, both
+/// angles).
+fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<Vec<(f64, f64)>> {
     const GRID: usize = 12;
     let phi = section.layers[0].soil.friction_angle_rad;
     let (active, passive) = (
@@ -166,6 +167,10 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<
             (passive, active)
         }
     };
+    let block = |base: &blocks::Base, p: [f64; 4]| {
+        blocks::block(section, base, (p[0], p[1]), (p[2], p[3]))
+            .filter(|points| admissible(section, points))
+    };
     let mut best: Option<(usize, [f64; 4], f64)> = None;
     let bases = blocks::bases(section);
     for (k, base) in bases.iter().enumerate() {
@@ -174,7 +179,7 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<
             for j in i + 1..=GRID {
                 let (x1, x2) = (at(i), at(j));
                 let (l, r) = angles(x1, x2);
-                let Some(points) = blocks::block(section, base, (x1, x2), (l, r)) else {
+                let Some(points) = block(base, [x1, x2, l, r]) else {
                     continue;
                 };
                 let f = trial(&points);
@@ -186,7 +191,7 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<
     }
     let (k, start, f) = best.filter(|b| b.2.is_finite())?;
     let base = &bases[k];
-    let of = |p: &[f64]| blocks::block(section, base, (p[0], p[1]), (p[2], p[3]));
+    let of = |p: &[f64]| block(base, [p[0], p[1], p[2], p[3]]);
     let span = base.to - base.from;
     let step = [0.5 * span / GRID as f64, 0.5 * span / GRID as f64, 0.1, 0.1];
     let found = nelder_mead(
@@ -196,12 +201,11 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<(Vec<
         1e-7 * span,
         400,
     );
-    let (point, value) = if found.value < f {
-        (found.point, found.value)
+    of(if found.value < f {
+        &found.point
     } else {
-        (start.to_vec(), f)
-    };
-    Some((of(&point)?, value))
+        &start
+    })
 }
 
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
@@ -272,9 +276,13 @@ pub fn search_noncircular(
         return None;
     }
     let mut starts = vec![(fractions, v, first)];
-    if let Some((points, f)) = best_block(section, &trial) {
+    if let Some(points) = best_block(section, &trial) {
+        // Its F as polished and answered: with the vertices it will be moved by.
         let (fractions, w) = parameters(section, &refined(points, n));
-        starts.push((fractions, w, f));
+        let f = factor(&fractions, &w);
+        if f.is_finite() {
+            starts.push((fractions, w, f));
+        }
     }
     // The lower start first: what the time budget leaves for the other is its bonus.
     starts.sort_by(|p, q| p.2.total_cmp(&q.2));
@@ -309,4 +317,48 @@ pub fn search_noncircular(
         evaluations: evaluations.get(),
         timed_out,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+
+    use super::*;
+    use crate::slope::section::tests::{line, one_soil};
+    use crate::slope::section::Layer;
+    use crate::slope::Soil;
+
+    #[test]
+    fn block_starts_are_admissible_surfaces() {
+        // A weak layer whose top rises to a ridge under the face: a base along it bends back
+        // upwards by far more than 10°, so the block start must not follow it over the ridge.
+        let mut parts = one_soil(
+            &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
+            19.0,
+            10.0,
+            30.0,
+        );
+        parts.layers.push(Layer {
+            top: Some(line(&[
+                (-20.0, 3.0),
+                (2.0, 3.0),
+                (8.0, 6.5),
+                (14.0, 1.0),
+                (40.0, 1.0),
+            ])),
+            soil: Soil::new(19.0, 0.5, 5.0, 0.0).unwrap(),
+            pore_pressure_ratio: None,
+        });
+        let section = Section::new(parts).unwrap();
+        let calls = std::cell::Cell::new(0);
+        let trial = |points: &Points| {
+            calls.set(calls.get() + 1);
+            assert!(admissible(&section, points), "tried {points:?}");
+            // Lower the longer the surface runs under the ground: it would follow the ridge.
+            -(points[points.len() - 1].0 - points[0].0)
+        };
+        let points = best_block(&section, &trial).unwrap();
+        assert!(admissible(&section, &points));
+        assert!(calls.get() > 100);
+    }
 }
