@@ -5,6 +5,10 @@
 
 use std::fmt::Write;
 
+mod labels;
+
+pub use labels::Labels;
+
 /// An `image/svg+xml` answer.
 pub struct Svg(pub String);
 
@@ -27,14 +31,24 @@ const MARGIN: f64 = 60.0;
 /// Points closer than this many pixels to the last one drawn are left out of a line.
 const DETAIL: f64 = 0.75;
 
-/// A picture of the region [x0, x1] × [y0, y1] of the section, y up.
+/// A picture of the region [x0, x1] × [y0, y1] of the section, y up, under a title and a key.
 pub struct Canvas {
     x0: f64,
     y1: f64,
     scale: f64,
     height: f64,
+    /// The plot inside the axes in pixels [x0, y0, x1, y1]: what [`Canvas::clip_begin`] keeps.
+    plot: [f64; 4],
     body: String,
+    /// The scale bar, drawn in the title's row.
+    scale_bar: String,
+    /// Items of the key: (text, colour, font size, whether it starts a new line).
+    key: Vec<(String, String, f64, bool)>,
 }
+
+/// Baseline of the key's first line, and the distance between its lines (pixels).
+const KEY_TOP: f64 = 44.0;
+const KEY_LINE: f64 = 14.0;
 
 impl Canvas {
     /// A canvas showing the bounding box of `points`, padded by 5 %.
@@ -70,8 +84,13 @@ impl Canvas {
             y1,
             scale,
             height,
+            plot: [0.0; 4],
             body: String::new(),
+            scale_bar: String::new(),
+            key: Vec::new(),
         };
+        let (a, b) = (canvas.px((x0, y1)), canvas.px((x1, y0)));
+        canvas.plot = [a.0, a.1, b.0, b.1];
         canvas.axes(x0, x1, y0, y1);
         canvas
     }
@@ -104,6 +123,24 @@ impl Canvas {
     /// A length of the section in pixels.
     pub fn length(&self, l: f64) -> f64 {
         l * self.scale
+    }
+
+    /// Everything drawn until [`Canvas::clip_end`] is cut at the axes (a map larger than the
+    /// scene).
+    pub fn clip_begin(&mut self) {
+        self.raw("<g clip-path=\"url(#plot)\">");
+    }
+
+    /// Ends what [`Canvas::clip_begin`] started.
+    pub fn clip_end(&mut self) {
+        self.raw("</g>");
+    }
+
+    /// An item of the key above the plot, after the previous one on its line (or on a new line
+    /// when `new_line` or when the line is full); the plot moves down to make room.
+    pub fn key(&mut self, text: &str, colour: &str, font_size: f64, new_line: bool) {
+        self.key
+            .push((text.to_owned(), colour.to_owned(), font_size, new_line));
     }
 
     /// Appends raw SVG.
@@ -233,27 +270,54 @@ impl Canvas {
         // Scale bar: one step, top right.
         let bar = self.length(step);
         let (sx, sy) = (WIDTH - MARGIN - bar, MARGIN - 30.0);
-        self.raw(&format!(
+        self.scale_bar = format!(
             "<line x1=\"{sx:.2}\" y1=\"{sy:.2}\" x2=\"{:.2}\" y2=\"{sy:.2}\" stroke=\"#333\" stroke-width=\"3\"/>\
              <text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" {label}>{} (scale)</text>",
             sx + bar,
             sx + bar / 2.0,
             sy - 6.0,
             tick(step)
-        ));
+        );
     }
 
-    /// The finished document, with a title.
+    /// The key laid out in lines from [`KEY_TOP`] down: the SVG and the pixels the plot must
+    /// move down by (none for one line, as the plot's top margin holds it).
+    fn key_lines(&self) -> (String, f64) {
+        let (mut x, mut y) = (MARGIN, KEY_TOP);
+        let mut svg = String::new();
+        for (i, (text, colour, size, new_line)) in self.key.iter().enumerate() {
+            let width = 0.6 * size * text.chars().count() as f64;
+            if i > 0 && (*new_line || x + width > WIDTH - 10.0) {
+                (x, y) = (MARGIN, y + KEY_LINE);
+            }
+            let _ = writeln!(
+                svg,
+                "<text x=\"{x:.0}\" y=\"{y:.0}\" font-size=\"{size}\" font-family=\"sans-serif\" fill=\"{colour}\">{}</text>",
+                escape(text)
+            );
+            x += width + 18.0;
+        }
+        (svg, y - KEY_TOP)
+    }
+
+    /// The finished document, with a title, the scale bar and the key above the plot.
     pub fn finish(self, title: &str) -> String {
+        let (key, shift) = self.key_lines();
+        let [px0, py0, px1, py1] = self.plot;
         format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\">\n\
-             <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker></defs>\n\
+             <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker>\
+             <clipPath id=\"plot\"><rect x=\"{px0:.2}\" y=\"{py0:.2}\" width=\"{pw:.2}\" height=\"{ph:.2}\"/></clipPath></defs>\n\
              <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
-             <text x=\"{m}\" y=\"22\" font-size=\"15\" font-family=\"sans-serif\" fill=\"#222\">{t}</text>\n{b}</svg>\n",
+             <text x=\"{m}\" y=\"22\" font-size=\"15\" font-family=\"sans-serif\" fill=\"#222\">{t}</text>\n{bar}\n{key}\
+             <g transform=\"translate(0 {shift:.0})\">\n{b}</g>\n</svg>\n",
             w = WIDTH,
-            h = self.height,
+            h = self.height + shift,
             m = MARGIN,
             t = escape(title),
+            bar = self.scale_bar,
+            pw = px1 - px0,
+            ph = py1 - py0,
             b = self.body
         )
     }
@@ -279,71 +343,6 @@ fn tick(v: f64) -> String {
         "0".to_owned()
     } else {
         s.to_owned()
-    }
-}
-
-/// Labels placed one by one where they overlap nothing placed before them: other labels, the
-/// obstacles given (dots, arrows) and the edges of the plot. Boxes are in pixels, estimated from
-/// the text's length (0.6 em a character).
-#[derive(Default)]
-pub struct Labels {
-    taken: Vec<[f64; 4]>,
-}
-
-impl Labels {
-    /// Keeps labels off the pixel box [x0, y0, x1, y1].
-    pub fn avoid(&mut self, b: [f64; 4]) {
-        self.taken.push(b);
-    }
-
-    /// Keeps labels off the segment from `a` to `b` (pixels), padded by `pad`.
-    pub fn avoid_segment(&mut self, a: (f64, f64), b: (f64, f64), pad: f64) {
-        self.avoid([
-            a.0.min(b.0) - pad,
-            a.1.min(b.1) - pad,
-            a.0.max(b.0) + pad,
-            a.1.max(b.1) + pad,
-        ]);
-    }
-
-    /// The top-left corner of a label of `chars` characters at `font` px beside the pixel point
-    /// `p`: 8 px away in the first of 16 directions, turning both ways from `preferred`, whose
-    /// box is free and inside `bounds`; the preferred place when none is. The box is then taken.
-    pub fn place(
-        &mut self,
-        p: (f64, f64),
-        preferred: (f64, f64),
-        (chars, font): (usize, f64),
-        bounds: [f64; 4],
-    ) -> (f64, f64) {
-        let (w, h) = (0.6 * font * chars as f64, font);
-        let start = preferred.1.atan2(preferred.0);
-        let box_at = |angle: f64| {
-            let d = (angle.cos(), angle.sin());
-            let reach = 8.0 + 0.5 * (d.0.abs() * w + d.1.abs() * h);
-            let c = (p.0 + d.0 * reach, p.1 + d.1 * reach);
-            [c.0 - w / 2.0, c.1 - h / 2.0, c.0 + w / 2.0, c.1 + h / 2.0]
-        };
-        let overlaps =
-            |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
-        let fits = |b: &[f64; 4]| {
-            b[0] >= bounds[0] && b[1] >= bounds[1] && b[2] <= bounds[2] && b[3] <= bounds[3]
-        };
-        let step = std::f64::consts::PI / 8.0;
-        let chosen = (0..16)
-            .map(|k| {
-                // 0, +1, −1, +2, −2, … steps from the preferred direction.
-                let turn = if k % 2 == 1 {
-                    ((k + 1) / 2) as f64
-                } else {
-                    -((k / 2) as f64)
-                };
-                box_at(start + turn * step)
-            })
-            .find(|b| fits(b) && !self.taken.iter().any(|t| overlaps(b, t)))
-            .unwrap_or_else(|| box_at(start));
-        self.taken.push(chosen);
-        (chosen[0], chosen[1])
     }
 }
 

@@ -189,3 +189,97 @@ async fn the_effective_line_of_thrust_is_drawn_only_inside_its_slices() {
         .sum();
     assert_eq!(drawn, inside);
 }
+
+/// The number in `translate(0 S)` of the group holding the plot.
+fn plot_shift(document: &roxmltree::Document) -> f64 {
+    let group = document
+        .root_element()
+        .children()
+        .find(|n| n.has_tag_name("g") && n.attribute("transform").is_some())
+        .unwrap();
+    let transform = group.attribute("transform").unwrap();
+    transform
+        .trim_start_matches("translate(0 ")
+        .trim_end_matches(')')
+        .parse()
+        .unwrap()
+}
+
+#[tokio::test]
+async fn the_key_lies_above_the_plot_and_a_search_map_is_cut_at_the_axes() {
+    // Issue 19: the key's lines ran down over the top of the plot, and the F map of a search
+    // filled most of the picture. Every key line must lie above the plot's top edge (the
+    // clip rectangle's top, moved down with the plot); the map is drawn inside the clip
+    // group, and what is labelled of it (contour levels, the critical centre) lies inside
+    // the clip rectangle.
+    let server = Server::start().await;
+    let simple = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
+                        "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
+                                 "pore_pressure_ratio": 0.5}});
+    let acads = json!({"section": {"ground": [[20, 25], [30, 25], [50, 35], [70, 35]],
+                                   "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 3,
+                                                                     "friction_angle_deg": 19.6}}]},
+                       "search": {}, "slices": 50});
+    for (what, body, key_lines) in [("simple, r_u", &simple, 4), ("ACADS 1(a), dry", &acads, 3)] {
+        let text = svg(&server, "/slope/spencer/svg", body).await;
+        let document = roxmltree::Document::parse(&text).unwrap();
+        let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let shift = plot_shift(&document);
+        let rect = document
+            .descendants()
+            .find(|n| n.has_tag_name("clipPath"))
+            .and_then(|c| c.children().find(|n| n.has_tag_name("rect")))
+            .unwrap();
+        let (x0, y0) = (number(rect, "x"), number(rect, "y"));
+        let (x1, y1) = (x0 + number(rect, "width"), y0 + number(rect, "height"));
+        // Key lines: texts outside the plot's group below the title row.
+        let key: Vec<(f64, String)> = document
+            .root_element()
+            .children()
+            .filter(|n| n.has_tag_name("text") && number(*n, "y") > 30.0)
+            .map(|n| (number(n, "y"), n.text().unwrap().to_owned()))
+            .collect();
+        let rows: std::collections::BTreeSet<i64> = key.iter().map(|k| k.0 as i64).collect();
+        assert_eq!(rows.len(), key_lines, "{what}: key {key:?}");
+        for (y, line) in &key {
+            assert!(
+                *y <= y0 + shift - 6.0,
+                "{what}: '{line}' at {y} runs into the plot (top {})",
+                y0 + shift
+            );
+        }
+        // A dry section has no separate effective line of thrust in its key.
+        let effective = key.iter().any(|k| k.1.contains("effective"));
+        assert_eq!(effective, what.contains("r_u"), "{what}: {key:?}");
+        let clipped = document
+            .descendants()
+            .find(|n| n.attribute("clip-path") == Some("url(#plot)"))
+            .unwrap();
+        let cells = clipped
+            .children()
+            .filter(|n| n.has_tag_name("polygon"))
+            .count();
+        assert!(cells > 100, "{what}: {cells} map cells in the clip group");
+        let inside = |x: f64, y: f64| x >= x0 && x <= x1 && y >= y0 && y <= y1;
+        let labels: Vec<(f64, f64)> = clipped
+            .children()
+            .filter(|n| n.has_tag_name("text"))
+            .map(|n| (number(n, "x"), number(n, "y")))
+            .collect();
+        assert!(labels.len() >= 3, "{what}: {} contour labels", labels.len());
+        for (x, y) in labels {
+            assert!(
+                inside(x, y),
+                "{what}: contour label at ({x}, {y}) outside the plot"
+            );
+        }
+        let centre = document
+            .descendants()
+            .find(|n| n.has_tag_name("circle") && n.attribute("r") == Some("4"))
+            .unwrap();
+        assert!(
+            inside(number(centre, "cx"), number(centre, "cy")),
+            "{what}: centre outside"
+        );
+    }
+}

@@ -279,17 +279,9 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     if !loads.is_empty() {
         legend.push(("#1565c0", "→ live loads"));
     }
-    let mut x = 60.0;
-    let mut items = String::from("<g font-size=\"11\" font-family=\"sans-serif\">");
     for (colour, text) in &legend {
-        items.push_str(&format!(
-            "<text x=\"{x:.0}\" y=\"44\" fill=\"{colour}\">{}</text>",
-            escape(text)
-        ));
-        x += 7.0 * text.chars().count() as f64 + 18.0;
+        canvas.key(text, colour, 11.0, false);
     }
-    items.push_str("</g>");
-    canvas.raw(&items);
     if let Some(curve) = &solved.rolling {
         rolling_curve(&mut canvas, curve);
     }

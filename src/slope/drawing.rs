@@ -7,7 +7,7 @@ use super::analysed::{Analysed, PlacedCircle};
 use super::contours::{contour, refine};
 use super::fills::{layer_fills, LAYER_COLOURS};
 use super::report::SolvedSlope;
-use crate::svg::{escape, heat, Canvas};
+use crate::svg::{heat, Canvas};
 
 /// What is drawn of the ground, in the request's coordinates.
 struct Scene {
@@ -117,7 +117,8 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     let bottom = y_lo - 0.2 * size;
     let mut extent = vec![(left, bottom), (right, y_hi + 0.2 * size)];
     if let Some(c) = scene.circle {
-        extent.push(c.centre);
+        // The centre with room above it for its label and the map around it.
+        extent.push((c.centre.0, c.centre.1 + 0.15 * size));
         extent.push((c.centre.0, (c.centre.1 - c.radius).max(bottom)));
     }
     let lower_end = solved.search.as_ref().map_or((0.0, 0.0), |s| s.origin);
@@ -133,10 +134,24 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
                 .collect()
         })
         .unwrap_or_default();
-    extent.extend(grid_centres.iter().copied());
+    // A map larger than the scene is cut at the axes: the picture stays on the slope and the
+    // critical centre. Without a critical circle the whole grid is shown.
+    if scene.circle.is_none() {
+        extent.extend(grid_centres.iter().copied());
+    }
+    let visible = extent.iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| [b[0].min(p.0), b[1].min(p.1), b[2].max(p.0), b[3].max(p.1)],
+    );
     let mut canvas = Canvas::fitting(extent);
     // The F map of a search: one cell per grid point, coloured from the least F (red) up.
     if let Some(grid) = grid {
+        canvas.clip_begin();
         let values: Vec<f64> = grid.factors.iter().flatten().flatten().copied().collect();
         let (lo, hi) = values
             .iter()
@@ -179,10 +194,15 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
                 0.02 * (fine_xs[fine_xs.len() - 1] - fine_xs[0]).abs(),
                 0.02 * (fine_ys[fine_ys.len() - 1] - fine_ys[0]).abs(),
             );
+            // Inside the grid and inside the picture.
             let inside = |p: &(f64, f64)| {
                 p.0 < fine_xs[fine_xs.len() - 1] - x_edge
                     && p.1 > fine_ys[0] + y_edge
                     && p.1 < fine_ys[fine_ys.len() - 1] - y_edge
+                    && p.0 > visible[0]
+                    && p.0 < visible[2] - 0.05 * (visible[2] - visible[0])
+                    && p.1 > visible[1]
+                    && p.1 < visible[3]
             };
             let top = segments
                 .iter()
@@ -208,13 +228,16 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             ),
             _ => String::new(),
         };
-        canvas.raw(&format!(
-            "<text x=\"60\" y=\"44\" font-size=\"11\" font-family=\"sans-serif\" fill=\"#b71c1c\">{}</text>",
-            escape(&format!(
-                "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {} labelled contours{critical}",
-                labelled
-            ))
-        ));
+        canvas.clip_end();
+        canvas.key(
+            &format!(
+                "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {labelled} labelled \
+                 contours{critical}"
+            ),
+            "#b71c1c",
+            11.0,
+            true,
+        );
     }
     // The ground, continued level to the edges.
     let first = scene.ground[0];
@@ -341,11 +364,15 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             format!("○ {outside} boundaries where the line of thrust leaves its slice (not drawn)"),
         ));
     }
+    // Pore water moves the effective line off the total one by more than rounding.
     let has_water = solution
         .thrust_line
         .iter()
         .zip(&solution.effective_thrust_line)
-        .any(|(t, e)| t.y != e.y);
+        .any(|(t, e)| match (t.y, e.y) {
+            (Some(a), Some(b)) => (a - b).abs() > 1e-9 * size,
+            (a, b) => a.is_some() != b.is_some(),
+        });
     if has_water {
         // Broken where it leaves its slice, like the total one.
         let effective: Vec<(f64, f64)> = solution
@@ -380,17 +407,14 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         }
         _ => "no solution for this slip surface".to_owned(),
     };
-    let mut y = if grid.is_some() { 58 } else { 44 };
-    canvas.raw(&format!(
-        "<text x=\"60\" y=\"{y}\" font-size=\"12\" font-family=\"sans-serif\" fill=\"#c62828\">— line of thrust. {}</text>",
-        escape(&caption)
-    ));
+    canvas.key(
+        &format!("— line of thrust. {caption}"),
+        "#c62828",
+        12.0,
+        true,
+    );
     for (colour, label) in legend {
-        y += 14;
-        canvas.raw(&format!(
-            "<text x=\"60\" y=\"{y}\" font-size=\"11\" font-family=\"sans-serif\" fill=\"{colour}\">— {}</text>",
-            escape(&label)
-        ));
+        canvas.key(&format!("— {label}"), colour, 11.0, true);
     }
     canvas.finish(title)
 }
