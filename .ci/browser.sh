@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
-# loads the page from a running release server with ?run=all, which submits the Milankovitch,
-# live-load, bridge (fill, passive, rolling), Spencer and section examples; the test reads the rendered
-# DOM for the numbers and the five drawings, and keeps a screenshot in target/ci-artifacts/page.png.
+# loads the page from a running release server; the page solves its seven examples on load
+# (Milankovitch's dead load, a live load, the minimum thickness, a bridge with fill, passive
+# restraint and rolling axles, Spencer's circle, the critical circle, a layered section). The
+# test reads the rendered DOM for the numbers and the seven drawings, and keeps a screenshot in
+# target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,7 +31,7 @@ flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run
 url="http://127.0.0.1:$port/?run=all"
 dom=$(timeout 180 chromium "${flags[@]}" --dump-dom "$url" 2> /dev/null)
 mkdir -p target/ci-artifacts
-timeout 180 chromium "${flags[@]}" --window-size=1280,2600 --screenshot=target/ci-artifacts/page.png "$url" > /dev/null 2>&1 || true
+timeout 180 chromium "${flags[@]}" --window-size=1280,5200 --screenshot=target/ci-artifacts/page.png "$url" > /dev/null 2>&1 || true
 
 failures=0
 expect() {
@@ -49,12 +51,16 @@ expect "load_factor: 22.99688965"
 expect "factor_of_safety: 1.06957"
 expect "morgenstern_price: "
 expect "solver: solved, assembly, 37 stops"
-drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer" src="blob:' <<< "$dom" || true) | wc -l)
-if [ "$drawings" -eq 5 ]; then echo "ok: five drawings"; else echo "FAILED: $drawings drawings, expected 5" >&2; failures=$((failures + 1)); fi
+# Milankovitch's minimum D/R = 0.1075 (N = 200 voussoirs) and the README's critical circle.
+expect "thickness_to_radius: 0.1074"
+expect "search: 871 circles, 0 unsolved"
+expect "factor_of_safety: 1.01457"
+drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer"[^>]*src="blob:' <<< "$dom" || true) | wc -l)
+if [ "$drawings" -eq 7 ]; then echo "ok: seven drawings"; else echo "FAILED: $drawings drawings, expected 7" >&2; failures=$((failures + 1)); fi
 # Each drawing decoded: its onload recorded a non-zero naturalWidth (a broken SVG stays at 0).
 decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
-if [ "$decoded" -eq 5 ]; then echo "ok: five drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 5" >&2; failures=$((failures + 1)); fi
+if [ "$decoded" -eq 7 ]; then echo "ok: seven drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 7" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
-passed=$((9 - failures))
+passed=$((12 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

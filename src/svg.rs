@@ -300,12 +300,15 @@ impl Canvas {
         (svg, y - KEY_TOP)
     }
 
-    /// The finished document, with a title, the scale bar and the key above the plot.
+    /// The finished document, with a title, the scale bar and the key above the plot. The root's
+    /// `data-frame` = "x0 top y1 scale" maps pixels back to the section (the page's clicks):
+    /// x = x0 + (px − 60)/scale, y = y1 − (py − top)/scale.
     pub fn finish(self, title: &str) -> String {
         let (key, shift) = self.key_lines();
         let [px0, py0, px1, py1] = self.plot;
         format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\">\n\
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\" \
+             data-frame=\"{x0} {top} {y1} {scale}\">\n\
              <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker>\
              <clipPath id=\"plot\"><rect x=\"{px0:.2}\" y=\"{py0:.2}\" width=\"{pw:.2}\" height=\"{ph:.2}\"/></clipPath></defs>\n\
              <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
@@ -313,6 +316,10 @@ impl Canvas {
              <g transform=\"translate(0 {shift:.0})\">\n{b}</g>\n</svg>\n",
             w = WIDTH,
             h = self.height + shift,
+            x0 = self.x0,
+            top = MARGIN + shift,
+            y1 = self.y1,
+            scale = self.scale,
             m = MARGIN,
             t = escape(title),
             bar = self.scale_bar,
