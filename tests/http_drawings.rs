@@ -283,3 +283,51 @@ async fn the_key_lies_above_the_plot_and_a_search_map_is_cut_at_the_axes() {
         );
     }
 }
+
+#[tokio::test]
+async fn the_data_frame_maps_pixels_back_to_coordinates() {
+    // The page places a live load where the arch is clicked from the root's data-frame
+    // ("x0 top y1 scale"): each hinge dot, mapped back, must land on that hinge's x and y in
+    // the JSON answer (to the 0.01 px the drawing rounds to).
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
+                      "loads": [{"block": 26, "fy": -1.0}]});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let text = svg(&server, "/arch/live-load/svg", &body).await;
+    let document = roxmltree::Document::parse(&text).unwrap();
+    let frame: Vec<f64> = document
+        .root_element()
+        .attribute("data-frame")
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let [x0, top, y1, scale] = frame[..] else {
+        panic!("{frame:?}")
+    };
+    let shift = plot_shift(&document);
+    let dots: Vec<(f64, f64)> = document
+        .descendants()
+        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("#1b5e20"))
+        .map(|n| {
+            let (cx, cy): (f64, f64) = (
+                n.attribute("cx").unwrap().parse().unwrap(),
+                n.attribute("cy").unwrap().parse().unwrap(),
+            );
+            // Dots are drawn inside the plot's group: add its shift to reach the picture's pixels.
+            (x0 + (cx - 60.0) / scale, y1 - (cy + shift - top) / scale)
+        })
+        .collect();
+    let hinges = answer["hinges"].as_array().unwrap();
+    assert_eq!(dots.len(), hinges.len());
+    let tolerance = 0.011 / scale;
+    for h in hinges {
+        let (x, y) = (h["x"].as_f64().unwrap(), h["y"].as_f64().unwrap());
+        assert!(
+            dots.iter()
+                .any(|d| (d.0 - x).abs() <= tolerance && (d.1 - y).abs() <= tolerance),
+            "hinge ({x}, {y}) not among {dots:?}"
+        );
+    }
+}
