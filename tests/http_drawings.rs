@@ -331,3 +331,47 @@ async fn the_data_frame_maps_pixels_back_to_coordinates() {
         );
     }
 }
+
+#[tokio::test]
+async fn sliding_joints_are_drawn_with_the_direction_of_slip() {
+    // Issue 17: a wall panel's top block pushed to the right at its top-left corner slides on
+    // the block below at μ·W = 0.3 (μ = 0.3). The drawing marks each sliding joint (purple,
+    // dashed) and the slip of the upper block relative to the lower one: to the right.
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "assembly",
+        "blocks": [{"polygon": [[-1, 0], [1, 0], [1, 1], [-1, 1]]},
+                   {"polygon": [[-0.5, 1], [0.5, 1], [0.5, 2], [-0.5, 2]]}],
+        "supports": [{"polygon": [[-3, -1], [3, -1], [3, 0], [-3, 0]]}]},
+        "friction_coefficient": 0.3,
+        "loads": [{"block": 2, "x": -0.5, "y": 2, "fx": 1}]});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let sliding = answer["sliding_interfaces"].as_array().unwrap().len();
+    assert!(sliding >= 1, "{answer}");
+    let text = svg(&server, "/arch/live-load/svg", &body).await;
+    let document = roxmltree::Document::parse(&text).unwrap();
+    let purple = |n: &roxmltree::Node| n.attribute("stroke") == Some("#7b1fa2");
+    let joints = document
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && purple(n))
+        .count();
+    assert_eq!(joints, sliding);
+    let arrows: Vec<f64> = document
+        .descendants()
+        .filter(|n| n.has_tag_name("line") && purple(n))
+        .map(|n| {
+            let x = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+            x("x2") - x("x1")
+        })
+        .collect();
+    assert!(
+        !arrows.is_empty() && arrows.iter().all(|dx| *dx > 0.0),
+        "{arrows:?}"
+    );
+    assert!(text.contains("sliding joints"));
+    // Without friction nothing slides and nothing is drawn in that colour.
+    let mut tipping = body.clone();
+    tipping["friction_coefficient"] = Value::Null;
+    let text = svg(&server, "/arch/live-load/svg", &tipping).await;
+    assert!(!text.contains("#7b1fa2"));
+}

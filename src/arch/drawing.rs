@@ -267,6 +267,48 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         }
         legend.push(("#ef6c00", "▮ crushing"));
     }
+    // Sliding joints: the joint drawn along, with the slip of the block on the normal's side
+    // relative to the other (of the block, on a support) as a short arrow at its middle.
+    if let Some(m) = mechanism.filter(|m| !m.sliding.is_empty()) {
+        for &k in &m.sliding {
+            if let Some(i) = assembly.interfaces.get(k) {
+                canvas.polyline(
+                    &[i.intrados, i.extrados],
+                    "stroke=\"#7b1fa2\" stroke-width=\"3\" stroke-dasharray=\"2 2\"",
+                );
+                if let Some(slip) = slip(assembly, &m.velocities, i) {
+                    let middle = (
+                        0.5 * (i.intrados.0 + i.extrados.0),
+                        0.5 * (i.intrados.1 + i.extrados.1),
+                    );
+                    let (t, n) = (
+                        (slip * i.tangent.0, slip * i.tangent.1),
+                        (-i.tangent.1, i.tangent.0),
+                    );
+                    let (half, head) = (0.04 * span, 0.015 * span);
+                    let tip = (middle.0 + half * t.0, middle.1 + half * t.1);
+                    let (a, b) = (
+                        canvas.px((middle.0 - half * t.0, middle.1 - half * t.1)),
+                        canvas.px(tip),
+                    );
+                    canvas.raw(&format!(
+                        "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"#7b1fa2\" stroke-width=\"1.4\"/>",
+                        a.0, a.1, b.0, b.1
+                    ));
+                    let back = (tip.0 - head * t.0, tip.1 - head * t.1);
+                    canvas.polygon(
+                        &[
+                            tip,
+                            (back.0 + 0.5 * head * n.0, back.1 + 0.5 * head * n.1),
+                            (back.0 - 0.5 * head * n.0, back.1 - 0.5 * head * n.1),
+                        ],
+                        "fill=\"#7b1fa2\" stroke=\"none\"",
+                    );
+                }
+            }
+        }
+        legend.push(("#7b1fa2", "┊ sliding joints (→ slip)"));
+    }
     if !solved.thrust_line.is_empty() {
         legend.insert(0, ("#c62828", "— line of thrust"));
     }
@@ -341,4 +383,33 @@ fn rolling_curve(canvas: &mut Canvas, curve: &RollingOutDto) {
     }
     svg.push_str("</g>");
     canvas.raw(&svg);
+}
+
+/// The sign of the slip along interface `i` (along its tangent) of its `upper` block relative to
+/// its `lower` one (on a support, of the block on it), at the joint's middle; `None` when the
+/// two move alike there.
+fn slip(
+    assembly: &thrustline_solver::arch::Assembly,
+    velocities: &[[f64; 3]],
+    i: &thrustline_solver::arch::Interface,
+) -> Option<f64> {
+    let middle = (
+        0.5 * (i.intrados.0 + i.extrados.0),
+        0.5 * (i.intrados.1 + i.extrados.1),
+    );
+    let at = |block: Option<usize>| -> (f64, f64) {
+        let Some(b) = block.and_then(|b| velocities.get(b).zip(assembly.blocks.get(b))) else {
+            return (0.0, 0.0);
+        };
+        let ([u, v, w], g) = (b.0, b.1.centroid);
+        (u - w * (middle.1 - g.1), v + w * (middle.0 - g.0))
+    };
+    // On a support (no upper block), the block's slip on it.
+    let (a, b) = match i.upper {
+        Some(_) => (at(i.lower), at(i.upper)),
+        None => (at(i.upper), at(i.lower)),
+    };
+    let along = (b.0 - a.0) * i.tangent.0 + (b.1 - a.1) * i.tangent.1;
+    let scale = a.0.hypot(a.1).max(b.0.hypot(b.1));
+    (along.abs() > 1e-9 * scale && scale > 0.0).then(|| along.signum())
 }
