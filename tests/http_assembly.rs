@@ -145,13 +145,14 @@ async fn bad_assemblies_name_their_field() {
         422,
         "ring_friction_coefficient",
     );
+    // The road of a fill must clear the outer ring's crown (R + D/2 = 11 here).
     let (status, content_type, answer) = server
         .post(
             "/arch/dead-load",
-            &json!({"geometry": circular(json!({"rings": 2})), "fill": {"unit_weight": 1, "surface": 12}}),
+            &json!({"geometry": circular(json!({"rings": 2})), "fill": {"unit_weight": 1, "surface": 10.5}}),
         )
         .await;
-    assert_problem(status, &content_type, &answer, 422, "fill");
+    assert_problem(status, &content_type, &answer, 422, "fill.surface");
 }
 
 #[tokio::test]

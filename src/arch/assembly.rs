@@ -2,7 +2,7 @@
 //! generators of circular arches, and their one validation into the solver's [`Assembly`].
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::arch::generators::{bridge, Piers, RingJoints};
+use thrustline_solver::arch::generators::{bridge, Bridge, Piers, RingJoints};
 use thrustline_solver::arch::{Assembly, CircularArch};
 use utoipa::ToSchema;
 
@@ -92,7 +92,7 @@ impl Generated {
 }
 
 /// A circular arch with rings or spans: the generated assembly.
-pub fn generated(arch: &CircularArch, g: Generated) -> Result<Assembly, ApiError> {
+pub fn generated(arch: &CircularArch, g: Generated) -> Result<Bridge, ApiError> {
     count("geometry.rings", g.rings, 1, 16)?;
     count("geometry.spans", g.spans, 1, 20)?;
     let per_span = arch.voussoirs() * g.rings + g.rings / 2;
@@ -139,5 +139,5 @@ pub fn generated(arch: &CircularArch, g: Generated) -> Result<Assembly, ApiError
         RingJointsDto::Staggered => RingJoints::Staggered,
         RingJointsDto::Aligned => RingJoints::Aligned,
     };
-    Ok(bridge(arch, g.rings, joints, piers)?.assembly)
+    Ok(bridge(arch, g.rings, joints, piers)?)
 }

@@ -10,6 +10,8 @@ use crate::svg::{escape, Canvas, Labels, WIDTH};
 
 /// Chains of more blocks than this are drawn as one outline.
 const MERGED_ABOVE: usize = 200;
+/// Hinges are labelled with their angle when there are at most this many.
+const MAX_HINGE_LABELS: usize = 8;
 
 /// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
 fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
@@ -65,20 +67,25 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     let mut canvas = Canvas::fitting(corners.iter().copied().chain(road.into_iter().flatten()));
     let span = assembly.length_scale();
     let mut legend: Vec<(&str, &str)> = Vec::new();
-    if let (Some((f, shape, road_loads)), Some(road)) = (fill, road) {
-        // Extrados from the right springing to the left (block order), closed along the road.
-        let mut outline: Vec<(f64, f64)> = assembly
-            .blocks
-            .iter()
-            .flat_map(|b| [b.corners[1], b.corners[2]])
-            .collect();
+    if let (Some((f, faces, road_loads)), Some(road)) = (fill, road) {
+        let profile = ExtradosProfile::new(faces);
+        // A chain's extrados from the right springing to the left (block order), a bridge's
+        // upper envelope from the left; closed along the road.
+        let mut outline: Vec<(f64, f64)> = if chain {
+            assembly
+                .blocks
+                .iter()
+                .flat_map(|b| [b.corners[1], b.corners[2]])
+                .collect()
+        } else {
+            profile.envelope().iter().rev().copied().collect()
+        };
         outline.insert(0, road[0]);
         outline.push(road[1]);
         canvas.polygon(&outline, "fill=\"#f3ead7\" stroke=\"none\"");
         canvas.polyline(&road, "stroke=\"#616161\" stroke-width=\"2.5\"");
         legend.push(("#a1887f", "▬ fill and road"));
         // Road loads: the patch on the road and its dispersal lines down to the extrados.
-        let profile = ExtradosProfile::new(assembly, *shape);
         for load in road_loads {
             let ends = profile.dispersal_ends(f, *load);
             let (a, b) = (load.x - 0.5 * load.length, load.x + 0.5 * load.length);
@@ -232,6 +239,12 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         labels.avoid_segment(canvas.px(from), canvas.px(load.point), 6.0);
     }
     let area = canvas.plot_area();
+    // Many hinges (a multi-ring mechanism) would bury the drawing in labels: their angles are
+    // in the JSON; the key says how many.
+    let hinge_count = hinge_labels.len();
+    if hinge_count > MAX_HINGE_LABELS {
+        hinge_labels.clear();
+    }
     for (p, direction, text) in hinge_labels {
         let (x, y) = labels.place(p, direction, (text.chars().count(), 11.0), area);
         canvas.raw(&format!(
@@ -313,7 +326,14 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         legend.insert(0, ("#c62828", "— line of thrust"));
     }
     if mechanism.is_some_and(|m| !m.hinges.is_empty()) {
-        legend.push(("#1b5e20", "● hinges"));
+        legend.push((
+            "#1b5e20",
+            if hinge_count > MAX_HINGE_LABELS {
+                "● hinges (unlabelled: too many)"
+            } else {
+                "● hinges"
+            },
+        ));
     }
     if mechanism.is_some() {
         legend.push(("#546e7a", "- - collapse mechanism"));

@@ -3,8 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::fill::{
-    extrados_top, fill_dead_loads, passive_forces, road_load, road_load_on, Extrados,
-    ExtradosProfile, Fill, Passive, PassiveForce, RoadLoad,
+    fill_dead_loads, passive_forces, road_load, road_load_on, ExtradosFaces, ExtradosProfile, Fill,
+    Passive, PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -166,11 +166,11 @@ pub struct FillLoads {
     pub road: Vec<RoadLoad>,
 }
 
-/// The fill's and the road's loads on `assembly` (whose extrados is `shape`). Nothing to do,
-/// and no extrados sampled, for a request without fill, road loads or rolling.
+/// The fill's and the road's loads on `assembly`, lying on `faces`. Nothing to do for a
+/// request without fill, road loads or rolling.
 pub fn fill_loads(
     assembly: &Assembly,
-    shape: Extrados,
+    faces: &ExtradosFaces,
     fill: Option<&FillDto>,
     road_loads: &[RoadLoadDto],
     rolling: Option<&RollingDto>,
@@ -178,7 +178,7 @@ pub fn fill_loads(
     if fill.is_none() && road_loads.is_empty() && rolling.is_none() {
         return Ok(FillLoads::default());
     }
-    let top = extrados_top(assembly, shape);
+    let top = faces.top();
     let dto_passive = fill.and_then(|f| f.passive.as_ref());
     let fill = match fill {
         Some(dto) => {
@@ -231,13 +231,13 @@ pub fn fill_loads(
             fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
             length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
         };
-        live.extend(road_load(assembly, shape, &carrier, load));
+        live.extend(road_load(faces, &carrier, load));
         road.push(load);
     }
     let rolling = rolling
-        .map(|r| rolling_loads(assembly, shape, &carrier, r))
+        .map(|r| rolling_loads(faces, &carrier, r))
         .transpose()?;
-    let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(assembly, shape, &f));
+    let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(faces, &f));
     let passive = match (fill, dto_passive) {
         (Some(fill), Some(p)) => {
             let passive = Passive {
@@ -250,7 +250,7 @@ pub fn fill_loads(
                 )?,
                 mobilisation: number("fill.passive.mobilisation", p.mobilisation, 0.0, false, 1.0)?,
             };
-            Some(passive_forces(assembly, shape, &fill, &passive))
+            Some(passive_forces(assembly, faces, &fill, &passive))
         }
         _ => None,
     };
@@ -266,8 +266,7 @@ pub fn fill_loads(
 }
 
 fn rolling_loads(
-    assembly: &Assembly,
-    shape: Extrados,
+    faces: &ExtradosFaces,
     carrier: &Fill,
     dto: &RollingDto,
 ) -> Result<Rolling, ApiError> {
@@ -309,7 +308,7 @@ fn rolling_loads(
             }
         })
         .collect();
-    let profile = ExtradosProfile::new(assembly, shape);
+    let profile = ExtradosProfile::new(faces);
     let loads = positions
         .iter()
         .map(|&x| {

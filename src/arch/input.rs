@@ -5,14 +5,14 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::arch::fill::{Extrados, Fill, RoadLoad};
+use thrustline_solver::arch::fill::{Extrados, ExtradosFaces, Fill, RoadLoad};
 use thrustline_solver::arch::{
     ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, InterfaceLimits,
     LimitSettings, LiveLoad, VoussoirShape,
 };
 
 use super::assembly::Generated;
-use super::fill::{fill_loads, FillDto, RoadLoadDto, Rolling, RollingDto};
+use super::fill::{fill_loads, FillDto, FillLoads, RoadLoadDto, Rolling, RollingDto};
 use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
 };
@@ -45,8 +45,8 @@ pub struct ArchInput {
     pub has_passive: bool,
     /// `friction: non_associative`.
     pub non_associative: bool,
-    /// The fill, its extrados' shape and the road loads, for drawings.
-    pub fill: Option<(Fill, Extrados, Vec<RoadLoad>)>,
+    /// The fill, the faces it lies on and the road loads, for drawings.
+    pub fill: Option<(Fill, ExtradosFaces, Vec<RoadLoad>)>,
     /// The details the answer carries (`include`; all when not given).
     pub include: Vec<ArchDetailDto>,
 }
@@ -113,31 +113,46 @@ fn input(
     time_limit_secs: f64,
 ) -> Result<ArchInput, ApiError> {
     let material = material(fields.material)?;
-    let assembly = assembly(fields.geometry)?;
+    let (assembly, bridge_faces) = assembly(fields.geometry)?;
     let is_curved = matches!(fields.geometry, GeometryDto::Circular(c) if c.is_curved_single());
-    if !assembly.is_chain() && (extras.fill.is_some() || extras.rolling.is_some()) {
-        return Err(ApiError::invalid(
-            if extras.fill.is_some() {
-                "fill"
-            } else {
-                "rolling"
-            },
-            "fill and rolling loads are for one-ring, one-span circular arches and block chains \
-             (an assembly has no single extrados): put loads on its blocks with loads",
-        ));
-    }
     let shape = if is_curved {
         Extrados::Arc { centre: (0.0, 0.0) }
     } else {
         Extrados::Straight
     };
-    let filled = fill_loads(
-        &assembly,
-        shape,
-        extras.fill,
-        extras.road_loads,
-        extras.rolling,
-    )?;
+    // What a fill lies on: a chain's extrados, a generated bridge's outer faces; a general
+    // assembly has no single extrados. Sampled only when a fill or road loads need it.
+    let needs_faces =
+        extras.fill.is_some() || !extras.road_loads.is_empty() || extras.rolling.is_some();
+    let faces = match (needs_faces, bridge_faces) {
+        (false, _) => None,
+        (true, Some(faces)) => Some(ExtradosFaces::of_faces(faces)),
+        (true, None) if assembly.is_chain() => Some(ExtradosFaces::of_chain(&assembly, shape)),
+        (true, None) => {
+            return Err(ApiError::invalid(
+                if extras.fill.is_some() {
+                    "fill"
+                } else if extras.rolling.is_some() {
+                    "rolling"
+                } else {
+                    "road_loads"
+                },
+                "fill, road loads and rolling loads are for circular arches (any rings and \
+                 spans) and block chains: a general assembly has no single extrados (put loads \
+                 on its blocks with loads)",
+            ))
+        }
+    };
+    let filled = match &faces {
+        Some(faces) => fill_loads(
+            &assembly,
+            faces,
+            extras.fill,
+            extras.road_loads,
+            extras.rolling,
+        )?,
+        None => FillLoads::default(),
+    };
     let mut live_loads = live_loads(&assembly, loads)?;
     live_loads.extend(filled.live.iter().copied());
     if let Some(rolling) = &filled.rolling {
@@ -227,7 +242,10 @@ fn input(
         rolling: filled.rolling,
         has_passive: filled.passive.is_some(),
         non_associative: fields.friction == FrictionDto::NonAssociative,
-        fill: filled.fill.map(|f| (f, shape, filled.road)),
+        fill: filled
+            .fill
+            .zip(faces)
+            .map(|(f, faces)| (f, faces, filled.road)),
         include: include(fields.include),
     })
 }
@@ -315,7 +333,11 @@ pub fn circular_arch(
     Ok(CircularArch::new(radius, thickness, n, left, right, shape)?)
 }
 
-fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
+/// A generated bridge's fill faces: (block, points along the face).
+type Faces = Vec<(usize, Vec<(f64, f64)>)>;
+
+/// The assembly of a geometry, and for a generated bridge the faces a fill lies on.
+fn assembly(geometry: &GeometryDto) -> Result<(Assembly, Option<Faces>), ApiError> {
     match geometry {
         GeometryDto::Circular(circular) => {
             let thickness = circular.thickness.ok_or_else(|| {
@@ -333,9 +355,10 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
                 pier_height: circular.pier_height,
             };
             if generated.is_plain() {
-                Ok(arch.assembly())
+                Ok((arch.assembly(), None))
             } else {
-                super::assembly::generated(&arch, generated)
+                let bridge = super::assembly::generated(&arch, generated)?;
+                Ok((bridge.assembly, Some(bridge.extrados)))
             }
         }
         GeometryDto::Blocks(BlocksGeometryDto { blocks, .. }) => {
@@ -351,11 +374,11 @@ fn assembly(geometry: &GeometryDto) -> Result<Assembly, ApiError> {
                 .iter()
                 .map(|b| b.corners.map(|[x, y]| (x, y)))
                 .collect();
-            Ok(Assembly::from_quadrilaterals(&corners)?)
+            Ok((Assembly::from_quadrilaterals(&corners)?, None))
         }
         GeometryDto::Assembly(AssemblyGeometryDto {
             blocks, supports, ..
-        }) => super::assembly::assembly(blocks, supports),
+        }) => Ok((super::assembly::assembly(blocks, supports)?, None)),
     }
 }
 

@@ -306,7 +306,9 @@ limit_request! {
         "friction_coefficient": null
     })))]
     pub struct DeadLoadRequest {
-        /// Fill over the arch up to a road: its weight joins the dead load.
+        /// Fill over the arch up to a road: its weight joins the dead load. On circular arches
+        /// (any rings and spans: the outer ring's extrados and the pier tops carry it) and
+        /// block chains.
         #[serde(default)]
         pub fill: Option<super::fill::FillDto>,
     }
@@ -329,7 +331,8 @@ limit_request! {
         #[schema(max_items = 10000)]
         pub loads: Vec<LoadDto>,
         /// Fill over the arch up to a road: its weight joins the dead load, and it spreads
-        /// road loads.
+        /// road loads. On circular arches (any rings and spans: the outer ring's extrados and
+        /// the pier tops carry it) and block chains.
         #[serde(default)]
         pub fill: Option<super::fill::FillDto>,
         /// Live loads on the road (with `fill`), dispersed through the fill to the extrados.

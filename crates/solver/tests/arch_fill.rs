@@ -3,7 +3,9 @@
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
 
-use thrustline_solver::arch::fill::{fill_dead_loads, road_load, Extrados, Fill, RoadLoad};
+use thrustline_solver::arch::fill::{
+    fill_dead_loads, road_load, Extrados, ExtradosFaces, Fill, RoadLoad,
+};
 use thrustline_solver::arch::*;
 use thrustline_solver::reference::semicircle;
 
@@ -23,7 +25,7 @@ fn the_fill_weighs_what_lies_between_the_extrados_and_the_road() {
         road: 12.0,
         dispersal_angle_deg: 30.0,
     };
-    let loads = fill_dead_loads(&arch, ARC, &fill);
+    let loads = fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill);
     let total: f64 = loads.iter().map(|l| -l.fy).sum();
     let re: f64 = 10.75;
     let expected = 18.0 * (2.0 * re * 12.0 - std::f64::consts::PI * re * re / 2.0);
@@ -51,10 +53,9 @@ fn the_supports_carry_the_arch_the_fill_and_the_live_load() {
         road: 11.5,
         dispersal_angle_deg: 30.0,
     };
-    let dead = fill_dead_loads(&arch, ARC, &fill);
+    let dead = fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill);
     let live = road_load(
-        &arch,
-        ARC,
+        &ExtradosFaces::of_chain(&arch, ARC),
         &fill,
         RoadLoad {
             x: -4.0,
@@ -96,8 +97,7 @@ fn weightless_fill_without_dispersal_is_the_plain_live_load_on_the_extrados() {
     };
     let x: f64 = -4.3;
     let loads = road_load(
-        &arch,
-        ARC,
+        &ExtradosFaces::of_chain(&arch, ARC),
         &fill,
         RoadLoad {
             x,
@@ -117,7 +117,7 @@ fn weightless_fill_without_dispersal_is_the_plain_live_load_on_the_extrados() {
         loads.clone(),
     )
     .unwrap()
-    .with_dead_loads(fill_dead_loads(&arch, ARC, &fill))
+    .with_dead_loads(fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill))
     .unwrap();
     let plain = ArchProblem::new(
         arch.clone(),
@@ -159,8 +159,7 @@ fn dispersal_spreads_the_load_over_the_width_the_angle_gives() {
         dispersal_angle_deg: 30.0,
     };
     let loads = road_load(
-        &arch,
-        ARC,
+        &ExtradosFaces::of_chain(&arch, ARC),
         &fill,
         RoadLoad {
             x: 0.0,
@@ -210,8 +209,7 @@ fn a_road_load_beyond_the_springing_puts_only_its_share_on_the_arch() {
     let xc = 0.5 * (a + b);
     let share = (xc + 10.5) / (xc + 12.0);
     let loads = road_load(
-        &arch,
-        ARC,
+        &ExtradosFaces::of_chain(&arch, ARC),
         &fill,
         RoadLoad {
             x: -12.0,

@@ -5,7 +5,8 @@
 #![allow(clippy::unwrap_used)]
 
 use thrustline_solver::arch::fill::{
-    fill_dead_loads, passive_forces, road_load, Extrados, Fill, Passive, PassiveForce, RoadLoad,
+    fill_dead_loads, passive_forces, road_load, Extrados, ExtradosFaces, Fill, Passive,
+    PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::*;
 use thrustline_solver::reference::semicircle;
@@ -25,10 +26,9 @@ fn fill() -> Fill {
 fn bridge(passive: Option<Passive>) -> (ArchProblem, Vec<PassiveForce>, Vec<LiveLoad>) {
     let arch = semicircle(60, 10.0, 1.0).assembly();
     let fill = fill();
-    let dead = fill_dead_loads(&arch, ARC, &fill);
+    let dead = fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill);
     let live = road_load(
-        &arch,
-        ARC,
+        &ExtradosFaces::of_chain(&arch, ARC),
         &fill,
         RoadLoad {
             x: -4.0,
@@ -36,7 +36,9 @@ fn bridge(passive: Option<Passive>) -> (ArchProblem, Vec<PassiveForce>, Vec<Live
             length: 0.3,
         },
     );
-    let forces = passive.map_or(Vec::new(), |p| passive_forces(&arch, ARC, &fill, &p));
+    let forces = passive.map_or(Vec::new(), |p| {
+        passive_forces(&arch, &ExtradosFaces::of_chain(&arch, ARC), &fill, &p)
+    });
     let problem = ArchProblem::new(arch, 1.0, InterfaceLimits::heyman(), None, live.clone())
         .unwrap()
         .with_dead_loads(dead)
@@ -69,7 +71,12 @@ fn capacities_follow_the_passive_pressure_on_a_vertical_face() {
         mobilisation: 0.5,
     };
     let kp = 3.0; // (1 + ½)/(1 − ½)
-    let f = passive_forces(&a, Extrados::Straight, &fill, &p);
+    let f = passive_forces(
+        &a,
+        &ExtradosFaces::of_chain(&a, Extrados::Straight),
+        &fill,
+        &p,
+    );
     assert_eq!(f.len(), 1, "{f:?}");
     let expected = 0.5 * kp * 18.0 * 2.5;
     assert!((f[0].capacity - expected).abs() < 1e-9 * expected, "{f:?}");
@@ -81,9 +88,21 @@ fn capacities_follow_the_passive_pressure_on_a_vertical_face() {
         mobilisation: 0.0,
         ..p
     };
-    assert!(passive_forces(&a, Extrados::Straight, &fill, &none).is_empty());
+    assert!(passive_forces(
+        &a,
+        &ExtradosFaces::of_chain(&a, Extrados::Straight),
+        &fill,
+        &none
+    )
+    .is_empty());
     let low = Fill { road: -1.0, ..fill };
-    assert!(passive_forces(&a, Extrados::Straight, &low, &p).is_empty());
+    assert!(passive_forces(
+        &a,
+        &ExtradosFaces::of_chain(&a, Extrados::Straight),
+        &low,
+        &p
+    )
+    .is_empty());
 }
 
 #[test]
@@ -95,7 +114,7 @@ fn the_semicircle_is_restrained_from_both_sides_by_equal_capacities() {
         friction_angle_deg: 30.0,
         mobilisation: 1.0,
     };
-    let f = passive_forces(&arch, ARC, &fill(), &p);
+    let f = passive_forces(&arch, &ExtradosFaces::of_chain(&arch, ARC), &fill(), &p);
     let total = |dir: f64| -> f64 {
         f.iter()
             .filter(|x| x.direction == dir)

@@ -93,22 +93,73 @@ fn y_at(points: &[(f64, f64)], x: f64) -> Option<f64> {
     })
 }
 
-/// The highest point of the extrados (the crown's, for an arch).
-pub fn extrados_top(assembly: &Assembly, shape: Extrados) -> f64 {
-    (0..assembly.blocks.len())
-        .flat_map(|b| extrados_points(assembly, b, shape))
-        .fold(f64::NEG_INFINITY, |m, p| m.max(p.1))
+/// The faces the fill lies on, each with its block, sampled: a chain's extrados, or the outer
+/// faces of a generated bridge (its outer ring and pier tops).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExtradosFaces {
+    faces: Vec<(usize, Vec<(f64, f64)>)>,
+}
+
+impl ExtradosFaces {
+    /// A chain's extrados: each block's face from its corner 1 to its corner 2, straight or an
+    /// arc, [`SAMPLES`] pieces.
+    pub fn of_chain(assembly: &Assembly, shape: Extrados) -> Self {
+        Self {
+            faces: (0..assembly.blocks.len())
+                .map(|b| (b, extrados_points(assembly, b, shape)))
+                .collect(),
+        }
+    }
+
+    /// Faces given as (block, polyline along the face): each straight piece cut into equal
+    /// parts, [`SAMPLES`] in all per face at least one per piece (the columns are linear on
+    /// each part, but where the road crosses the face).
+    pub fn of_faces(faces: Vec<(usize, Vec<(f64, f64)>)>) -> Self {
+        let faces = faces
+            .into_iter()
+            .filter(|(_, points)| points.len() >= 2)
+            .map(|(b, points)| {
+                let parts = SAMPLES.div_ceil(points.len() - 1).max(1);
+                let mut sampled = vec![points[0]];
+                for w in points.windows(2) {
+                    sampled.extend((1..=parts).map(|k| {
+                        let t = k as f64 / parts as f64;
+                        (
+                            w[0].0 + t * (w[1].0 - w[0].0),
+                            w[0].1 + t * (w[1].1 - w[0].1),
+                        )
+                    }));
+                }
+                (b, sampled)
+            })
+            .collect();
+        Self { faces }
+    }
+
+    /// The highest point of the faces (the crown's, for an arch).
+    pub fn top(&self) -> f64 {
+        self.faces
+            .iter()
+            .flat_map(|f| &f.1)
+            .fold(f64::NEG_INFINITY, |m, p| m.max(p.1))
+    }
+
+    /// The faces: (block, points along the face).
+    pub fn faces(&self) -> &[(usize, Vec<(f64, f64)>)] {
+        &self.faces
+    }
 }
 
 /// The fill's weight on each voussoir: a vertical load at the column's centroid x, on the
 /// extrados. Blocks with no fill above them carry none.
-pub fn fill_dead_loads(assembly: &Assembly, shape: Extrados, fill: &Fill) -> Vec<LiveLoad> {
+pub fn fill_dead_loads(faces: &ExtradosFaces, fill: &Fill) -> Vec<LiveLoad> {
     if fill.unit_weight == 0.0 {
         return Vec::new();
     }
-    (0..assembly.blocks.len())
-        .filter_map(|b| {
-            let points = extrados_points(assembly, b, shape);
+    faces
+        .faces
+        .iter()
+        .filter_map(|(b, points)| {
             let (mut area, mut moment) = (0.0, 0.0);
             for w in points.windows(2) {
                 let (h0, h1) = ((fill.road - w[0].1).max(0.0), (fill.road - w[1].1).max(0.0));
@@ -126,8 +177,8 @@ pub fn fill_dead_loads(assembly: &Assembly, shape: Extrados, fill: &Fill) -> Vec
             (area > 0.0).then(|| {
                 let x = moment / area;
                 LiveLoad {
-                    block: b,
-                    point: (x, y_at(&points, x).unwrap_or(points[SAMPLES / 2].1)),
+                    block: *b,
+                    point: (x, y_at(points, x).unwrap_or(points[points.len() / 2].1)),
                     fx: 0.0,
                     fy: -fill.unit_weight * area,
                     moment: 0.0,
@@ -140,7 +191,8 @@ pub fn fill_dead_loads(assembly: &Assembly, shape: Extrados, fill: &Fill) -> Vec
 /// The extrados of every voussoir, sampled once: what dispersing road loads needs.
 #[derive(Debug, Clone)]
 pub struct ExtradosProfile {
-    blocks: Vec<Vec<(f64, f64)>>,
+    /// (block, points) of each face.
+    blocks: Vec<(usize, Vec<(f64, f64)>)>,
     /// Each block's x-range.
     ranges: Vec<(f64, f64)>,
     /// The upper envelope as a polyline sorted by x.
@@ -149,20 +201,18 @@ pub struct ExtradosProfile {
 
 impl ExtradosProfile {
     /// Samples the extrados of `assembly`.
-    pub fn new(assembly: &Assembly, shape: Extrados) -> Self {
-        let blocks: Vec<Vec<(f64, f64)>> = (0..assembly.blocks.len())
-            .map(|b| extrados_points(assembly, b, shape))
-            .collect();
+    pub fn new(faces: &ExtradosFaces) -> Self {
+        let blocks = faces.faces.clone();
         let ranges = blocks
             .iter()
-            .map(|p| {
+            .map(|(_, p)| {
                 p.iter()
                     .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, c), q| {
                         (a.min(q.0), c.max(q.0))
                     })
             })
             .collect();
-        let mut envelope: Vec<(f64, f64)> = blocks.iter().flatten().copied().collect();
+        let mut envelope: Vec<(f64, f64)> = blocks.iter().flat_map(|f| &f.1).copied().collect();
         envelope.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.total_cmp(&a.1)));
         envelope.dedup_by(|next, kept| next.0 == kept.0);
         Self {
@@ -170,6 +220,11 @@ impl ExtradosProfile {
             ranges,
             envelope,
         }
+    }
+
+    /// The upper envelope of the faces, sorted by x (for drawings).
+    pub fn envelope(&self) -> &[(f64, f64)] {
+        &self.envelope
     }
 
     /// The extrados' height at x (its upper envelope); −∞ outside the arch.
@@ -196,13 +251,8 @@ impl ExtradosProfile {
 /// pressure per horizontal length, shared among the voussoirs by horizontal overlap (what
 /// falls beyond the arch goes to the abutments). A point load (no width left) goes to the
 /// voussoir under it.
-pub fn road_load(
-    assembly: &Assembly,
-    shape: Extrados,
-    fill: &Fill,
-    load: RoadLoad,
-) -> Vec<LiveLoad> {
-    road_load_on(&ExtradosProfile::new(assembly, shape), fill, load)
+pub fn road_load(faces: &ExtradosFaces, fill: &Fill, load: RoadLoad) -> Vec<LiveLoad> {
+    road_load_on(&ExtradosProfile::new(faces), fill, load)
 }
 
 impl ExtradosProfile {
@@ -288,8 +338,8 @@ pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> V
     let right = profile.meet(fill, load.x + 0.5 * load.length, 1.0);
     let width = right - left;
     let mut out = Vec::new();
-    for (b, points) in blocks.iter().enumerate() {
-        let (lo, hi) = profile.ranges[b];
+    for (k, (b, points)) in blocks.iter().enumerate() {
+        let (b, (lo, hi)) = (*b, profile.ranges[k]);
         if width <= 1e-12 * (x_hi - x_lo).max(1.0) {
             // A point load on the voussoir under it (the first one whose extrados spans x).
             if left >= lo && left <= hi && out.is_empty() {
@@ -343,7 +393,7 @@ impl Passive {
 /// force per direction. Pieces above the road carry nothing.
 pub fn passive_forces(
     assembly: &Assembly,
-    shape: Extrados,
+    faces: &ExtradosFaces,
     fill: &Fill,
     passive: &Passive,
 ) -> Vec<PassiveForce> {
@@ -352,8 +402,8 @@ pub fn passive_forces(
         return Vec::new();
     }
     let mut out = Vec::new();
-    for (b, block) in assembly.blocks.iter().enumerate() {
-        let points = extrados_points(assembly, b, shape);
+    for (b, points) in &faces.faces {
+        let (b, block) = (*b, &assembly.blocks[*b]);
         // (force, Σ force·x, Σ force·y) per direction: index 0 towards −x, 1 towards +x.
         let mut sums = [[0.0f64; 3]; 2];
         for w in points.windows(2) {

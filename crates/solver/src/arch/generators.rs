@@ -46,6 +46,9 @@ pub struct Bridge {
     pub assembly: Assembly,
     /// The ring of each block (`None` for piers).
     pub ring: Vec<Option<usize>>,
+    /// The faces a fill lies on, as (block, points along the face): the outer ring's extrados
+    /// of each span and the top of each pier between them.
+    pub extrados: Vec<(usize, Vec<Point>)>,
 }
 
 fn polar(centre: Point, r: f64, degrees: f64) -> Point {
@@ -169,9 +172,21 @@ pub fn bridge(
     let pitch = r_in * c.cos() + piers.width + r_in * b.cos();
     let mut polygons = Vec::new();
     let mut ring_of = Vec::new();
+    let mut extrados = Vec::new();
     for span in 0..piers.spans {
         let centre = (span as f64 * pitch, 0.0);
         for (polygon, ring) in span_blocks(arch, rings, joints, centre) {
+            if ring + 1 == rings {
+                // The corners on the outer circle, in order (a run: the polygon goes inner
+                // start, outer corners, inner corners back).
+                let on_outer = |p: &&Point| {
+                    ((p.0 - centre.0).hypot(p.1 - centre.1) - r_out).abs() <= 1e-9 * r_out
+                };
+                extrados.push((
+                    polygons.len(),
+                    polygon.iter().filter(on_outer).copied().collect(),
+                ));
+            }
             polygons.push(polygon);
             ring_of.push(Some(ring));
         }
@@ -200,6 +215,7 @@ pub fn bridge(
         let (i_l, e_l) = (polar(a, r_in, right), polar(a, r_out, right));
         let (i_r, e_r) = (polar(z, r_in, left), polar(z, r_out, left));
         let bottom = i_l.1.min(i_r.1) - piers.height;
+        extrados.push((polygons.len(), vec![e_r, e_l]));
         polygons.push(vec![(i_l.0, bottom), (i_r.0, bottom), i_r, e_r, e_l, i_l]);
         ring_of.push(None);
         let ground = piers.width.max(depth);
@@ -223,5 +239,6 @@ pub fn bridge(
     Ok(Bridge {
         assembly,
         ring: ring_of,
+        extrados,
     })
 }
