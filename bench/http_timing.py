@@ -67,6 +67,9 @@ bench("two staggered rings, 2 × 100 voussoirs, ring μ = 0.6: dead load", "/arc
 bench("the same: live load on inner-ring block 26 (associative solve; the friction check adds its steps)", "/arch/live-load", dict(rings, loads=[{"block": 26, "fy": -1}]), lambda d: d["solver"]["time_ms"])
 spans = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 60, "spans": 3, "pier_width": 4, "pier_height": 6}}
 bench("three spans × 60 voussoirs on two piers: live load on block 16", "/arch/live-load", dict(spans, loads=[{"block": 16, "fy": -1}]), lambda d: d["solver"]["time_ms"])
+filled_spans = {"geometry": dict(spans["geometry"], rings=2, ring_joints="aligned"),
+    "fill": {"unit_weight": 1.8, "surface": 12.5, "passive": {"friction_angle_deg": 30, "mobilisation": 0.3}}}
+bench("the same as two aligned rings under fill with passive restraint (m = 0.3): a road load", "/arch/live-load", dict(filled_spans, road_loads=[{"x": 4, "fy": -10, "length": 0.3}]), lambda d: d["solver"]["time_ms"])
 wall = {"geometry": {"kind": "assembly",
     "blocks": [{"polygon": [[0, 0], [0.5, 0], [0.5, 2], [0, 2]]}, {"polygon": [[0.5, 0], [1, 0], [1, 2], [0.5, 2]]}, {"polygon": [[0, 2], [1, 2], [1, 2.5], [0, 2.5]]}],
     "supports": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]},
