@@ -164,6 +164,19 @@ async fn fill_and_road_errors_name_their_fields() {
             "road_loads",
         ),
         (json!({"geometry": geometry()}), "loads"),
+        // Beyond the arch (R + D/2 = 10.5): spread at 30° from the road at 12 it reaches the
+        // springing level 6.9 short of x = 20, still beyond the arch; it used to be smeared
+        // over the whole way to the arch's end and give a finite, meaningless λ.
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
+                "road_loads": [{"x": 20, "fy": -1}]}),
+            "road_loads[0].x",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
+                "road_loads": [{"x": 0, "fy": -1}, {"x": 1e9, "fy": -1}]}),
+            "road_loads[1].x",
+        ),
         (
             json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
                 "rolling": {"axles": [{"fy": -1}], "x_start": 20, "x_end": 30}}),

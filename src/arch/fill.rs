@@ -222,6 +222,13 @@ pub fn fill_loads(
         road: top,
         dispersal_angle_deg: 0.0,
     });
+    let span = faces
+        .faces()
+        .iter()
+        .flat_map(|f| &f.1)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
     let mut live = Vec::new();
     let mut road = Vec::with_capacity(road_loads.len());
     for (i, load) in road_loads.iter().enumerate() {
@@ -231,7 +238,18 @@ pub fn fill_loads(
             fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
             length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
         };
-        live.extend(road_load(faces, &carrier, load));
+        let dispersed = road_load(faces, &carrier, load);
+        if dispersed.is_empty() {
+            return Err(ApiError::invalid(
+                field("x"),
+                format!(
+                    "{} puts the load beyond the arch: spread down through the fill it reaches \
+                     the abutment, not the extrados (the arch spans x = {:.6} … {:.6})",
+                    load.x, span.0, span.1
+                ),
+            ));
+        }
+        live.extend(dispersed);
         road.push(load);
     }
     let rolling = rolling

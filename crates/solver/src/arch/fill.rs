@@ -268,10 +268,11 @@ impl ExtradosProfile {
     /// Where a line from (x0, road) going down and outward (`side` −1: left, +1: right) at the
     /// dispersal angle first meets the extrados: the first x beyond x0 with
     /// (road − y_e(x))·tan δ ≤ |x − x0|, found by scanning towards the arch's far end and
-    /// bisecting. Where there is no extrados (beyond the springings) the line meets nothing:
-    /// a line starting beyond the arch and going away from it ends at x0, one that passes over
-    /// the whole arch ends where it reaches the far springing's level (beyond the arch; what
-    /// falls there goes to the abutment).
+    /// bisecting. Beyond the springings y_e is the springing's level: a line starting beyond
+    /// the arch and going away from it ends at x0, one starting beyond it and going towards it
+    /// may reach that level before the arch (and ends there), one that passes over the whole
+    /// arch ends where it reaches the far springing's level (beyond the arch; what falls there
+    /// goes to the abutment).
     fn meet(&self, fill: &Fill, x0: f64, side: f64) -> f64 {
         const STEPS: usize = 256;
         let tan = fill.dispersal_angle_deg.to_radians().tan();
@@ -279,9 +280,11 @@ impl ExtradosProfile {
             return x0;
         }
         let (x_lo, x_hi) = self.x_range();
-        // Above the line at x: positive while the line has not yet reached the extrados.
+        // Above the line at x: positive while the line has not yet reached the extrados; beyond
+        // the arch, the level of the springing on that side (a line from a load beyond the
+        // arch that reaches that level first ends there, on the abutment).
         let above = |x: f64| {
-            let y = self.surface(x);
+            let y = self.surface(x.clamp(x_lo, x_hi));
             if y.is_finite() {
                 (fill.road - y) * tan - (x - x0).abs()
             } else {
