@@ -28,7 +28,7 @@ done
 flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run
        --disable-background-networking --disable-component-update --disable-sync
        --user-data-dir="$profile" --virtual-time-budget=60000)
-url="http://127.0.0.1:$port/?run=all"
+url="http://127.0.0.1:$port/"
 dom=$(timeout 180 chromium "${flags[@]}" --dump-dom "$url" 2> /dev/null)
 mkdir -p target/ci-artifacts
 timeout 180 chromium "${flags[@]}" --window-size=1280,5200 --screenshot=target/ci-artifacts/page.png "$url" > /dev/null 2>&1 || true
