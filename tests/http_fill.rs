@@ -174,6 +174,11 @@ async fn fill_and_road_errors_name_their_fields() {
         ),
         (
             json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
+                "road_loads": [{"x": 2, "fy": 0}]}),
+            "road_loads",
+        ),
+        (
+            json!({"geometry": geometry(), "fill": {"unit_weight": 1, "surface": 12.0},
                 "road_loads": [{"x": 0, "fy": -1}, {"x": 1e9, "fy": -1}]}),
             "road_loads[1].x",
         ),

@@ -154,6 +154,13 @@ fn input(
         None => FillLoads::default(),
     };
     let mut live_loads = live_loads(&assembly, loads)?;
+    let zero = |l: &LiveLoad| l.fx == 0.0 && l.fy == 0.0 && l.moment == 0.0;
+    if live_loads.iter().all(zero) && !filled.live.is_empty() && filled.live.iter().all(zero) {
+        return Err(ApiError::invalid(
+            "road_loads",
+            "every road load is zero: give a non-zero fy",
+        ));
+    }
     live_loads.extend(filled.live.iter().copied());
     if let Some(rolling) = &filled.rolling {
         if rolling.loads.iter().all(Vec::is_empty) {
