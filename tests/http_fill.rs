@@ -239,3 +239,38 @@ async fn crushing_lowers_lambda_and_names_its_hinges() {
     let (status, content_type, answer) = server.post("/arch/live-load", &b).await;
     assert_problem(status, &content_type, &answer, 422, "crushing_planes");
 }
+
+#[tokio::test]
+async fn the_live_load_route_judges_the_dead_load_as_the_dead_load_route_does() {
+    // With crushing, the live-load solve checks the dead load on its first cuts and again on
+    // its final ones (not in between). Across the strength where a thin arch (R = 10, D = 1.2,
+    // 40 quadrilateral voussoirs) stops carrying its own weight, between σ_c = 110 and 120 —
+    // where the first, outer cuts still carry it and the exact curve does not — the live-load
+    // route must say "dead load not carried" exactly where the dead-load route finds λ₀ < 1.
+    let server = Server::start().await;
+    let geometry = json!({"kind": "circular", "radius": 10.0, "thickness": 1.2, "voussoirs": 40,
+                          "voussoir": "quadrilateral"});
+    let mut verdicts = Vec::new();
+    for strength in [100.0, 104.0, 108.0, 112.0, 116.0, 120.0, 130.0] {
+        let dead = json!({"geometry": geometry, "compressive_strength": strength});
+        let (status, _, dead) = server.post("/arch/dead-load", &dead).await;
+        assert_eq!(status, 200, "{dead}");
+        let live = json!({"geometry": geometry, "compressive_strength": strength,
+                          "loads": [{"block": 10, "fy": -1.0}]});
+        let (status, _, live) = server.post("/arch/live-load", &live).await;
+        assert_eq!(status, 200, "{live}");
+        let carried = dead["dead_load_factor"].as_f64().unwrap() >= 1.0 - 1e-9;
+        assert_eq!(live["stable"], json!(carried), "σ_c = {strength}: {live}");
+        assert_eq!(
+            live["load_factor"].is_number(),
+            carried,
+            "σ_c = {strength}: {live}"
+        );
+        verdicts.push(carried);
+    }
+    // The range straddles the threshold.
+    assert!(
+        verdicts.contains(&true) && verdicts.contains(&false),
+        "{verdicts:?}"
+    );
+}

@@ -21,21 +21,7 @@ pub(super) fn refine(
     settings: &LimitSettings,
     solve_once: impl Fn(&ArchProblem, &LimitSettings) -> Result<LimitSolution, ArchError>,
 ) -> Result<LimitSolution, ArchError> {
-    // The cuts can make the programme nearly degenerate (tangents close together): where the
-    // interior-point method stops short of the tolerance, it is asked again 100 times looser
-    // (never looser than 1e-6, still λ to ~1e-7).
-    let solve = |p: &ArchProblem| -> Result<LimitSolution, ArchError> {
-        let first = solve_once(p, settings)?;
-        let reduced = first.status == LimitStatus::SolverFailed(SolverFailure::ReducedAccuracy);
-        if reduced && p.crushing().is_some() && settings.tolerance < 1e-6 {
-            let looser = LimitSettings {
-                tolerance: (settings.tolerance * 100.0).min(1e-6),
-                ..*settings
-            };
-            return solve_once(p, &looser);
-        }
-        Ok(first)
-    };
+    let solve = |p: &ArchProblem| retrying(p, settings, |s| solve_once(p, s));
     let mut solution = solve(problem)?;
     let Some(crushing) = problem.crushing() else {
         return Ok(solution);
@@ -58,6 +44,85 @@ pub(super) fn refine(
     solution.iterations = iterations;
     solution.programmes = programmes;
     Ok(solution)
+}
+
+/// [`refine`] for the live-load problem, whose solve (`solve_once`) checks first that the dead
+/// load is carried unless told its margin: the check is made in the first round and once more
+/// on the final cuts (`final_margin`: the margin and the interior-point iterations), not in the
+/// rounds between — they change only the rows of the live programme, whose λ does not depend
+/// on the check. A dead load the final cuts cannot carry is answered by the full solve.
+pub(super) fn refine_live(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    known_margin: Option<f64>,
+    solve_once: impl Fn(&ArchProblem, &LimitSettings, Option<f64>) -> Result<LimitSolution, ArchError>,
+    final_margin: impl Fn(&ArchProblem, &LimitSettings) -> Option<(f64, u32)>,
+) -> Result<LimitSolution, ArchError> {
+    let solve =
+        |p: &ArchProblem, known: Option<f64>| retrying(p, settings, |s| solve_once(p, s, known));
+    let mut solution = solve(problem, known_margin)?;
+    let Some(crushing) = problem.crushing() else {
+        return Ok(solution);
+    };
+    let carried = solution
+        .dead_load_margin
+        .filter(|m| solution.status == LimitStatus::Solved && *m <= settings.margin_tolerance);
+    let Some(first_margin) = carried else {
+        return Ok(solution);
+    };
+    let mut current = problem.clone();
+    let mut crushing: Crushing = crushing.clone();
+    let (mut iterations, mut programmes) = (solution.iterations, solution.programmes);
+    let mut rounds = 0;
+    for _ in 0..MAX_ROUNDS {
+        let cuts = violations(&current, &crushing, &solution);
+        if cuts.is_empty() {
+            break;
+        }
+        crushing.cuts.extend(cuts);
+        current = current.with_crushing(crushing.clone())?;
+        solution = solve(&current, Some(first_margin))?;
+        iterations += solution.iterations;
+        programmes += solution.programmes;
+        rounds += 1;
+    }
+    if rounds > 0 {
+        match final_margin(&current, settings) {
+            Some((margin, its)) if margin <= settings.margin_tolerance => {
+                solution.dead_load_margin = Some(margin);
+                iterations += its;
+                programmes += 1;
+            }
+            _ => {
+                solution = solve(&current, None)?;
+                iterations += solution.iterations;
+                programmes += solution.programmes;
+            }
+        }
+    }
+    solution.iterations = iterations;
+    solution.programmes = programmes;
+    Ok(solution)
+}
+
+/// `solve` with `settings`; the cuts can make the programme nearly degenerate (tangents close
+/// together): where the interior-point method stops short of the tolerance, it is asked again
+/// 100 times looser (never looser than 1e-6, still λ to ~1e-7).
+fn retrying(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    solve: impl Fn(&LimitSettings) -> Result<LimitSolution, ArchError>,
+) -> Result<LimitSolution, ArchError> {
+    let first = solve(settings)?;
+    let reduced = first.status == LimitStatus::SolverFailed(SolverFailure::ReducedAccuracy);
+    if reduced && problem.crushing().is_some() && settings.tolerance < 1e-6 {
+        let looser = LimitSettings {
+            tolerance: (settings.tolerance * 100.0).min(1e-6),
+            ..*settings
+        };
+        return solve(&looser);
+    }
+    Ok(first)
 }
 
 /// The tangents to add: (interface, N/(σ_c·t)) where the resultant lies beyond the curve.

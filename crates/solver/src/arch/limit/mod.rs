@@ -260,7 +260,15 @@ pub fn solve_live_load(
     problem: &ArchProblem,
     settings: &LimitSettings,
 ) -> Result<LimitSolution, ArchError> {
-    crushing::refine(problem, settings, |p, s| solve_live_load_once(p, s, None))
+    crushing::refine_live(problem, settings, None, solve_live_load_once, final_margin)
+}
+
+/// The dead-load margin of `problem` and the interior-point iterations it took (`None` when
+/// the programme failed), for [`crushing::refine_live`].
+fn final_margin(problem: &ArchProblem, settings: &LimitSettings) -> Option<(f64, u32)> {
+    full_dead_load_margin(problem, settings)
+        .ok()
+        .map(|m| (m.margin, m.iterations))
 }
 
 /// Livesley's dead-load problem with friction that does not dilate (SPEC §5.5): see
@@ -302,5 +310,5 @@ pub fn solve_live_load_after(
 ) -> Result<LimitSolution, ArchError> {
     let carried = dead_load_margin <= settings.margin_tolerance;
     let known = (carried && problem.crushing.is_none()).then_some(dead_load_margin);
-    crushing::refine(problem, settings, |p, s| solve_live_load_once(p, s, known))
+    crushing::refine_live(problem, settings, known, solve_live_load_once, final_margin)
 }
