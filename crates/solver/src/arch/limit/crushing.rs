@@ -22,14 +22,39 @@ pub(super) fn refine(
     solve_once: impl Fn(&ArchProblem, &LimitSettings) -> Result<LimitSolution, ArchError>,
 ) -> Result<LimitSolution, ArchError> {
     let solve = |p: &ArchProblem| retrying(p, settings, |s| solve_once(p, s));
-    let mut solution = solve(problem)?;
-    let Some(crushing) = problem.crushing() else {
-        return Ok(solution);
-    };
+    let first = solve(problem)?;
+    Ok(rounds(problem, first, solve)?.solution)
+}
+
+/// The end of the rounds of cuts.
+struct Rounds {
+    /// The last round's solution, its iterations and programmes the sum of all rounds'.
+    solution: LimitSolution,
+    /// The problem with every cut added.
+    problem: ArchProblem,
+    /// Rounds after the first.
+    count: usize,
+}
+
+/// From the first round's `solution`, adds the cuts where joints lie beyond the curve and
+/// solves again with `solve`, until none does.
+fn rounds(
+    problem: &ArchProblem,
+    first: LimitSolution,
+    solve: impl Fn(&ArchProblem) -> Result<LimitSolution, ArchError>,
+) -> Result<Rounds, ArchError> {
+    let mut solution = first;
     let mut current = problem.clone();
+    let Some(crushing) = problem.crushing() else {
+        return Ok(Rounds {
+            solution,
+            problem: current,
+            count: 0,
+        });
+    };
     let mut crushing: Crushing = crushing.clone();
-    let mut iterations = solution.iterations;
-    let mut programmes = solution.programmes;
+    let (mut iterations, mut programmes) = (solution.iterations, solution.programmes);
+    let mut count = 0;
     for _ in 0..MAX_ROUNDS {
         let cuts = violations(&current, &crushing, &solution);
         if cuts.is_empty() {
@@ -40,10 +65,15 @@ pub(super) fn refine(
         solution = solve(&current)?;
         iterations += solution.iterations;
         programmes += solution.programmes;
+        count += 1;
     }
     solution.iterations = iterations;
     solution.programmes = programmes;
-    Ok(solution)
+    Ok(Rounds {
+        solution,
+        problem: current,
+        count,
+    })
 }
 
 /// [`refine`] for the live-load problem, whose solve (`solve_once`) checks first that the dead
@@ -60,48 +90,33 @@ pub(super) fn refine_live(
 ) -> Result<LimitSolution, ArchError> {
     let solve =
         |p: &ArchProblem, known: Option<f64>| retrying(p, settings, |s| solve_once(p, s, known));
-    let mut solution = solve(problem, known_margin)?;
-    let Some(crushing) = problem.crushing() else {
-        return Ok(solution);
-    };
-    let carried = solution
+    let first = solve(problem, known_margin)?;
+    let carried = first
         .dead_load_margin
-        .filter(|m| solution.status == LimitStatus::Solved && *m <= settings.margin_tolerance);
-    let Some(first_margin) = carried else {
-        return Ok(solution);
+        .filter(|m| first.status == LimitStatus::Solved && *m <= settings.margin_tolerance);
+    let (Some(first_margin), Some(_)) = (carried, problem.crushing()) else {
+        return Ok(first);
     };
-    let mut current = problem.clone();
-    let mut crushing: Crushing = crushing.clone();
-    let (mut iterations, mut programmes) = (solution.iterations, solution.programmes);
-    let mut rounds = 0;
-    for _ in 0..MAX_ROUNDS {
-        let cuts = violations(&current, &crushing, &solution);
-        if cuts.is_empty() {
-            break;
-        }
-        crushing.cuts.extend(cuts);
-        current = current.with_crushing(crushing.clone())?;
-        solution = solve(&current, Some(first_margin))?;
-        iterations += solution.iterations;
-        programmes += solution.programmes;
-        rounds += 1;
-    }
-    if rounds > 0 {
-        match final_margin(&current, settings) {
+    let Rounds {
+        mut solution,
+        problem: last,
+        count,
+    } = rounds(problem, first, |p| solve(p, Some(first_margin)))?;
+    if count > 0 {
+        let (iterations, programmes) = (solution.iterations, solution.programmes);
+        match final_margin(&last, settings) {
             Some((margin, its)) if margin <= settings.margin_tolerance => {
                 solution.dead_load_margin = Some(margin);
-                iterations += its;
-                programmes += 1;
+                solution.iterations = iterations + its;
+                solution.programmes = programmes + 1;
             }
             _ => {
-                solution = solve(&current, None)?;
-                iterations += solution.iterations;
-                programmes += solution.programmes;
+                solution = solve(&last, None)?;
+                solution.iterations += iterations;
+                solution.programmes += programmes;
             }
         }
     }
-    solution.iterations = iterations;
-    solution.programmes = programmes;
     Ok(solution)
 }
 
