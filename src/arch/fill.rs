@@ -3,8 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::fill::{
-    fill_dead_loads, passive_forces, road_load, road_load_on, ExtradosFaces, ExtradosProfile, Fill,
-    Passive, PassiveForce, RoadLoad,
+    fill_dead_loads, passive_forces, road_load_on, ExtradosFaces, ExtradosProfile, Fill, Passive,
+    PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -222,13 +222,9 @@ pub fn fill_loads(
         road: top,
         dispersal_angle_deg: 0.0,
     });
-    let span = faces
-        .faces()
-        .iter()
-        .flat_map(|f| &f.1)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p.0), b.max(p.0))
-        });
+    // The extrados sampled once for the road loads and the rolling stops.
+    let profile =
+        (!road_loads.is_empty() || rolling.is_some()).then(|| ExtradosProfile::new(faces));
     let mut live = Vec::new();
     let mut road = Vec::with_capacity(road_loads.len());
     for (i, load) in road_loads.iter().enumerate() {
@@ -238,8 +234,11 @@ pub fn fill_loads(
             fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
             length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
         };
-        let dispersed = road_load(faces, &carrier, load);
+        // Road loads made the profile.
+        let Some(profile) = &profile else { break };
+        let dispersed = road_load_on(profile, &carrier, load);
         if dispersed.is_empty() {
+            let span = profile.x_range();
             return Err(ApiError::invalid(
                 field("x"),
                 format!(
@@ -253,7 +252,8 @@ pub fn fill_loads(
         road.push(load);
     }
     let rolling = rolling
-        .map(|r| rolling_loads(faces, &carrier, r))
+        .zip(profile.as_ref())
+        .map(|(r, profile)| rolling_loads(profile, &carrier, r))
         .transpose()?;
     let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(faces, &f));
     let passive = match (fill, dto_passive) {
@@ -284,7 +284,7 @@ pub fn fill_loads(
 }
 
 fn rolling_loads(
-    faces: &ExtradosFaces,
+    profile: &ExtradosProfile,
     carrier: &Fill,
     dto: &RollingDto,
 ) -> Result<Rolling, ApiError> {
@@ -326,7 +326,6 @@ fn rolling_loads(
             }
         })
         .collect();
-    let profile = ExtradosProfile::new(faces);
     let loads = positions
         .iter()
         .map(|&x| {
@@ -334,7 +333,7 @@ fn rolling_loads(
                 .iter()
                 .flat_map(|&(offset, fy, length)| {
                     road_load_on(
-                        &profile,
+                        profile,
                         carrier,
                         RoadLoad {
                             x: x + offset,

@@ -122,22 +122,14 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         extent.push((c.centre.0, (c.centre.1 - c.radius).max(bottom)));
     }
     let lower_end = solved.search.as_ref().map_or((0.0, 0.0), |s| s.origin);
-    let grid_centres: Vec<(f64, f64)> = grid
-        .map(|grid| {
-            grid.xs
-                .iter()
-                .flat_map(|&x| {
-                    grid.ys
-                        .iter()
-                        .map(move |&y| (lower_end.0 + x, lower_end.1 + y))
-                })
-                .collect()
-        })
-        .unwrap_or_default();
     // A map larger than the scene is cut at the axes: the picture stays on the slope and the
     // critical centre. Without a critical circle the whole grid is shown.
-    if scene.circle.is_none() {
-        extent.extend(grid_centres.iter().copied());
+    if let (Some(grid), None) = (grid, scene.circle) {
+        extent.extend(grid.xs.iter().flat_map(|&x| {
+            grid.ys
+                .iter()
+                .map(move |&y| (lower_end.0 + x, lower_end.1 + y))
+        }));
     }
     let visible = extent.iter().fold(
         [

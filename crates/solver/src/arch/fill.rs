@@ -257,7 +257,7 @@ pub fn road_load(faces: &ExtradosFaces, fill: &Fill, load: RoadLoad) -> Vec<Live
 
 impl ExtradosProfile {
     /// The x range of the extrados.
-    fn x_range(&self) -> (f64, f64) {
+    pub fn x_range(&self) -> (f64, f64) {
         self.ranges
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {

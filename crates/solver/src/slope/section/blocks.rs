@@ -202,25 +202,12 @@ mod tests {
     #![allow(clippy::unwrap_used)]
 
     use super::*;
-    use crate::slope::section::tests::{line, one_soil};
-    use crate::slope::section::Layer;
-    use crate::slope::Soil;
+    use crate::slope::section::tests::slope_over_layer;
 
     /// A 1:2 slope from (0, 10) down to (20, 0), level either side, with a thin layer whose top
     /// runs 4 m below the crest and meets the face at x = 8.
     fn seam() -> Section {
-        let mut parts = one_soil(
-            &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
-            19.0,
-            10.0,
-            30.0,
-        );
-        parts.layers.push(Layer {
-            top: Some(line(&[(-20.0, 6.0), (40.0, 6.0)])),
-            soil: Soil::new(19.0, 1.0, 10.0, 0.0).unwrap(),
-            pore_pressure_ratio: None,
-        });
-        Section::new(parts).unwrap()
+        slope_over_layer(&[(-20.0, 6.0), (40.0, 6.0)], 1.0, 10.0)
     }
 
     #[test]

@@ -324,32 +324,23 @@ mod tests {
     #![allow(clippy::unwrap_used)]
 
     use super::*;
-    use crate::slope::section::tests::{line, one_soil};
-    use crate::slope::section::Layer;
-    use crate::slope::Soil;
+    use crate::slope::section::tests::slope_over_layer;
 
     #[test]
     fn block_starts_are_admissible_surfaces() {
         // A weak layer whose top rises to a ridge under the face: a base along it bends back
         // upwards by far more than 10°, so the block start must not follow it over the ridge.
-        let mut parts = one_soil(
-            &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
-            19.0,
-            10.0,
-            30.0,
-        );
-        parts.layers.push(Layer {
-            top: Some(line(&[
+        let section = slope_over_layer(
+            &[
                 (-20.0, 3.0),
                 (2.0, 3.0),
                 (8.0, 6.5),
                 (14.0, 1.0),
                 (40.0, 1.0),
-            ])),
-            soil: Soil::new(19.0, 0.5, 5.0, 0.0).unwrap(),
-            pore_pressure_ratio: None,
-        });
-        let section = Section::new(parts).unwrap();
+            ],
+            0.5,
+            5.0,
+        );
         let calls = std::cell::Cell::new(0);
         let trial = |points: &Points| {
             calls.set(calls.get() + 1);

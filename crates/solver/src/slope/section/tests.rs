@@ -11,6 +11,23 @@ pub(super) fn line(points: &[(f64, f64)]) -> Polyline {
     Polyline::new(points.to_vec()).unwrap()
 }
 
+/// A 1:2 slope from (0, 10) down to (20, 0), level either side (γ = 19, c' = 10, φ' = 30°),
+/// over a weaker layer whose top is `top` (c', φ' given, γ = 19).
+pub(super) fn slope_over_layer(top: &[(f64, f64)], c: f64, phi: f64) -> Section {
+    let mut parts = one_soil(
+        &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
+        19.0,
+        10.0,
+        30.0,
+    );
+    parts.layers.push(Layer {
+        top: Some(line(top)),
+        soil: Soil::new(19.0, c, phi, 0.0).unwrap(),
+        pore_pressure_ratio: None,
+    });
+    Section::new(parts).unwrap()
+}
+
 pub(super) fn one_soil(ground: &[(f64, f64)], gamma: f64, c: f64, phi: f64) -> SectionParts {
     SectionParts {
         ground: line(ground),
