@@ -22,8 +22,8 @@ use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    solve_dead_load, solve_dead_load_non_associative, solve_live_load, solve_live_load_after,
-    solve_live_load_non_associative, thrust_line, ArchError, ArchProblem, LimitSolution,
+    solve_dead_load, solve_dead_load_non_associative, solve_live_load,
+    solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError, LimitSolution,
     LimitStatus, SolverFailure,
 };
 
@@ -324,66 +324,51 @@ fn roll(
     stops: &Rolling,
 ) -> Result<(LimitSolution, RollingOutDto), ArchError> {
     let start = std::time::Instant::now();
-    let mut factors = Vec::with_capacity(stops.positions.len());
-    let mut best: Option<(usize, LimitSolution, ArchProblem)> = None;
-    let mut known_margin: Option<f64> = None;
-    let mut first_position_ms = 0.0;
-    for (i, loads) in stops.loads.iter().enumerate() {
-        if loads.is_empty() {
-            factors.push(None);
-            continue;
-        }
-        let stop_start = std::time::Instant::now();
-        let problem = input.problem.clone().with_live_loads(loads.clone())?;
-        // Only the live loads move: the dead-load check of the first stop holds for all.
-        let mut solution = match known_margin {
-            Some(margin) => solve_live_load_after(&problem, &input.settings, margin)?,
-            None => solve_live_load(&problem, &input.settings)?,
-        };
-        if known_margin.is_none() {
-            first_position_ms = stop_start.elapsed().as_secs_f64() * 1e3;
-            if solution.dead_load_carried == Some(true) {
-                known_margin = solution.dead_load_margin;
-            }
-        }
-        if start.elapsed().as_secs_f64() > input.settings.time_limit_secs {
-            // Out of time: the sweep is not finished, and says so through the status.
-            solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
-            let curve = RollingOutDto {
-                positions: stops.positions.clone(),
-                load_factor: factors,
-                critical_position: None,
-                critical_load_factor: None,
-                time_per_position_ms: 0.0,
-                first_position_ms,
-            };
-            return Ok((solution, curve));
-        }
-        factors.push(solution.load_factor);
-        let better = match (&best, solution.load_factor) {
-            (_, None) => false,
-            (None, Some(_)) => true,
-            (Some((_, b, _)), Some(f)) => b.load_factor.is_none_or(|g| f < g),
-        };
-        if better {
-            best = Some((i, solution, problem));
-        }
-    }
+    let sweep = sweep_live_loads(&input.problem, &input.settings, &stops.loads)?;
+    let factors: Vec<Option<f64>> = sweep
+        .stops
+        .iter()
+        .map(|s| s.as_ref().and_then(|s| s.load_factor))
+        .collect();
+    let first_position_ms = sweep.first_stop_secs * 1e3;
+    // The lowest factor; the first of equal ones.
+    let best = factors
+        .iter()
+        .enumerate()
+        .filter_map(|(i, f)| f.map(|f| (i, f)))
+        .fold(None, |best: Option<(usize, f64)>, (i, f)| match best {
+            Some((_, b)) if b <= f => best,
+            _ => Some((i, f)),
+        });
     let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
-    let critical = best
-        .as_ref()
-        .map(|(i, s, _)| (stops.positions[*i], s.load_factor));
-    let curve = RollingOutDto {
+    let mut curve = RollingOutDto {
         positions: stops.positions.clone(),
         load_factor: factors,
-        critical_position: critical.map(|c| c.0),
-        critical_load_factor: critical.and_then(|c| c.1),
+        critical_position: best.map(|(i, _)| stops.positions[i]),
+        critical_load_factor: best.map(|(_, f)| f),
         time_per_position_ms: elapsed_ms / stops.positions.len().max(1) as f64,
         first_position_ms,
     };
-    match best {
-        Some((_, solution, problem)) => {
-            input.problem = problem;
+    let mut solutions = sweep.stops;
+    if sweep.out_of_time {
+        // Out of time: the sweep is not finished, and says so through the status.
+        curve.critical_position = None;
+        curve.critical_load_factor = None;
+        curve.time_per_position_ms = 0.0;
+        let mut solution = solutions
+            .into_iter()
+            .flatten()
+            .next()
+            .map_or_else(|| solve_live_load(&input.problem, &input.settings), Ok)?;
+        solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
+        return Ok((solution, curve));
+    }
+    match best.and_then(|(i, _)| solutions[i].take().map(|s| (i, s))) {
+        Some((i, solution)) => {
+            input.problem = input
+                .problem
+                .clone()
+                .with_live_loads(stops.loads[i].clone())?;
             Ok((solution, curve))
         }
         None => {

@@ -16,6 +16,7 @@
 //! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
 //! - [`mechanism`]: the collapse mechanism read from the multipliers.
 //! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
+//! - [`rolling`]: the live-load factor at each stop of a rolling load.
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
 pub mod chain;
@@ -28,6 +29,7 @@ pub mod geometry;
 pub mod limit;
 pub mod mechanism;
 pub mod minimum_thickness;
+pub mod rolling;
 pub mod thrust_line;
 
 pub use crate::outcome::SolverFailure;
@@ -44,4 +46,5 @@ pub use minimum_thickness::{
     rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,
     MinimumThicknessSettings,
 };
+pub use rolling::{sweep_live_loads, Sweep};
 pub use thrust_line::{support_reactions, thrust_line, SupportReaction, ThrustPoint};

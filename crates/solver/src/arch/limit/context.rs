@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use super::problem::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
 use super::programme::{
-    dot, failure, solve_chain_programme, solve_programme, Programme, ProgrammeSpec,
+    dot, failure, solve_chain_programme, solve_programme, Programme, ProgrammeSpec, Refinement,
 };
 use super::rows::{limit_rows, Row};
 use crate::arch::chain::ChainStatics;
@@ -51,6 +51,7 @@ pub(super) struct Context<'a> {
     rows: Vec<Row>,
     force_scale: f64,
     settings: &'a LimitSettings,
+    refinement: Refinement,
     pub iterations: u32,
     pub programmes: usize,
 }
@@ -72,12 +73,20 @@ impl<'a> Context<'a> {
             }
         };
         let rows = limit_rows(problem, force_scale);
+        // Plain chains (either formulation) are solved as they always were; the programmes of
+        // assemblies, passive restraint and crushing refine only when they must.
+        let refinement = if chain && problem.crushing.is_none() {
+            Refinement::Always
+        } else {
+            Refinement::OnRetry
+        };
         Self {
             problem,
             model,
             rows,
             force_scale,
             settings,
+            refinement,
             iterations: 0,
             programmes: 0,
         }
@@ -112,7 +121,7 @@ impl<'a> Context<'a> {
                     cap: (-1.0, 1.0),
                     objective: 1.0,
                 };
-                solve_programme(eq, &self.rows, &spec, self.settings)
+                solve_programme(eq, &self.rows, &spec, (self.settings, self.refinement))
             }
             Model::Chain(chain) => solve_chain_programme(
                 chain,
@@ -120,7 +129,7 @@ impl<'a> Context<'a> {
                 lambda,
                 |_, _| -1.0,
                 ((-1.0, 1.0), 1.0),
-                self.settings,
+                (self.settings, self.refinement),
             ),
         };
         let programme = self.count(programme)?;
@@ -147,7 +156,10 @@ impl<'a> Context<'a> {
                     cap: (1.0, LIVE_LOAD_CAP),
                     objective: -1.0,
                 };
-                (solve_programme(eq, &self.rows, &spec, self.settings), scale)
+                (
+                    solve_programme(eq, &self.rows, &spec, (self.settings, self.refinement)),
+                    scale,
+                )
             }
             Model::Chain(chain) => {
                 let scale = chain.live_scale;
@@ -158,7 +170,7 @@ impl<'a> Context<'a> {
                     1.0,
                     coefficient,
                     ((1.0, LIVE_LOAD_CAP), -1.0),
-                    self.settings,
+                    (self.settings, self.refinement),
                 );
                 (programme, scale)
             }

@@ -23,6 +23,21 @@ pub(super) struct Programme {
     pub iterations: u32,
 }
 
+/// When Clarabel refines the solutions of its KKT systems iteratively.
+///
+/// Refinement makes each interior-point step dearer (a residual product and a further solve per
+/// refinement step: a third of the time on a two-ring arch), and most programmes of assemblies
+/// reach the tolerances without it; but some (the crushing planes' nearly parallel rows) end in
+/// reduced accuracy. `OnRetry` solves without refinement first and again with it whenever that
+/// ends short of `Solved`, so every answer meets the same tolerances on the same residuals.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Refinement {
+    /// Refine from the start (the programmes of plain chains, answered as they always were).
+    Always,
+    /// Solve without refinement; with it only when that did not solve.
+    OnRetry,
+}
+
 /// One programme over the resultants r and one extra variable x (δ or λ):
 /// min objective·x subject to H r + extra_equilibrium·x = b_eq, the limit rows (each with
 /// `row_extra`·x added), and cap.0·x ≤ cap.1.
@@ -38,7 +53,7 @@ pub(super) fn solve_programme(
     eq: &Equilibrium,
     rows: &[Row],
     spec: &ProgrammeSpec,
-    settings: &LimitSettings,
+    (settings, refinement): (&LimitSettings, Refinement),
 ) -> Programme {
     let ProgrammeSpec {
         extra_equilibrium,
@@ -89,18 +104,41 @@ pub(super) fn solve_programme(
     b.push(cap.1);
     let mut c = vec![0.0; n];
     c[extra] = objective_extra;
-    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, settings)
+    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, (settings, refinement))
 }
 
-/// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq).
+/// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq); with
+/// [`Refinement::OnRetry`] first without iterative refinement (the iterations of both attempts
+/// counted).
 fn run_clarabel(
     (m, n, m_eq): (usize, usize, usize),
     (ti, tj, tv): (Vec<usize>, Vec<usize>, Vec<f64>),
     b: &[f64],
     c: &[f64],
-    settings: &LimitSettings,
+    (settings, refinement): (&LimitSettings, Refinement),
 ) -> Programme {
     let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
+    if refinement == Refinement::OnRetry {
+        let quick = run_clarabel_once((m, m_eq), &a, b, c, settings, false);
+        if quick.status == SolverStatus::Solved {
+            return quick;
+        }
+        let mut refined = run_clarabel_once((m, m_eq), &a, b, c, settings, true);
+        refined.iterations += quick.iterations;
+        return refined;
+    }
+    run_clarabel_once((m, m_eq), &a, b, c, settings, true)
+}
+
+fn run_clarabel_once(
+    (m, m_eq): (usize, usize),
+    a: &CscMatrix<f64>,
+    b: &[f64],
+    c: &[f64],
+    settings: &LimitSettings,
+    refine: bool,
+) -> Programme {
+    let n = a.n;
     let p = CscMatrix::zeros((n, n));
     let cones: [SupportedConeT<f64>; 2] = [ZeroConeT(m_eq), NonnegativeConeT(m - m_eq)];
     let tol = settings.tolerance;
@@ -112,9 +150,10 @@ fn run_clarabel(
         .tol_gap_rel(tol)
         .tol_feas(tol)
         .tol_ktratio(tol.sqrt() * 1e-2)
+        .iterative_refinement_enable(refine)
         .build()
         .expect("the settings are within Clarabel's ranges");
-    let mut solver = match DefaultSolver::new(&p, c, &a, b, &cones, clarabel_settings) {
+    let mut solver = match DefaultSolver::new(&p, c, a, b, &cones, clarabel_settings) {
         Ok(solver) => solver,
         Err(_) => {
             return Programme {
@@ -150,7 +189,7 @@ pub(super) fn solve_chain_programme(
     dead_factor: f64,
     extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
     (cap, objective): ((f64, f64), f64),
-    settings: &LimitSettings,
+    settings: (&LimitSettings, Refinement),
 ) -> Programme {
     const MAX_ROUNDS: usize = 40;
     const MAX_ADDED_PER_ROUND: usize = 256;
@@ -210,7 +249,7 @@ pub(super) fn solve_chain_programme(
             let (a, rhs) = &dense[i];
             a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] - rhs
         };
-        let tolerance = settings.tolerance;
+        let tolerance = settings.0.tolerance;
         let mut added: Vec<(f64, usize)> = (0..rows.len())
             .filter(|&i| !selected[i])
             .filter_map(|i| {

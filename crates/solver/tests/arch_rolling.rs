@@ -1,0 +1,108 @@
+//! A load rolled across an arch (SPEC §5.3): the parallel sweep answers each stop as a solve
+//! of that stop alone does, and says when its time ran out.
+
+// Fixtures: a failed construction should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+use thrustline_solver::arch::*;
+use thrustline_solver::reference::semicircle;
+
+/// A unit load on the centroid of block `b`, or nothing (an empty stop) for `None`.
+fn stop(arch: &Assembly, b: Option<usize>) -> Vec<LiveLoad> {
+    b.map(|b| LiveLoad {
+        block: b,
+        point: arch.blocks[b].centroid,
+        fx: 0.0,
+        fy: -1.0,
+        moment: 0.0,
+    })
+    .into_iter()
+    .collect()
+}
+
+fn problem(arch: &Assembly, passive: bool) -> ArchProblem {
+    let p = ArchProblem::new(arch.clone(), 1.0, InterfaceLimits::heyman(), None, vec![]).unwrap();
+    if !passive {
+        return p;
+    }
+    // A horizontal restraint on every voussoir of the left half, pushing right, up to 0.05.
+    let forces = (0..arch.blocks.len() / 2)
+        .map(|b| fill::PassiveForce {
+            block: b,
+            point: arch.blocks[b].centroid,
+            direction: 1.0,
+            capacity: 0.05,
+        })
+        .collect();
+    p.with_passive(forces).unwrap()
+}
+
+#[test]
+fn every_stop_is_answered_as_its_own_solve_answers_it() {
+    let arch = semicircle(30, 10.0, 1.5).assembly();
+    for passive in [false, true] {
+        let p = problem(&arch, passive);
+        let settings = LimitSettings::default();
+        let blocks = [None, Some(2), Some(7), None, Some(12), Some(15), Some(22)];
+        let loads: Vec<Vec<LiveLoad>> = blocks.iter().map(|&b| stop(&arch, b)).collect();
+        let sweep = sweep_live_loads(&p, &settings, &loads).unwrap();
+        let mut solved = 0;
+        assert!(!sweep.out_of_time);
+        assert_eq!(sweep.stops.len(), blocks.len());
+        for (i, b) in blocks.iter().enumerate() {
+            let Some(b) = b else {
+                assert!(sweep.stops[i].is_none(), "stop {i} has no load");
+                continue;
+            };
+            let alone = solve_live_load(
+                &p.clone().with_live_loads(stop(&arch, Some(*b))).unwrap(),
+                &settings,
+            )
+            .unwrap();
+            let swept = sweep.stops[i].as_ref().unwrap();
+            assert_eq!(swept.status, alone.status, "stop {i} (passive {passive})");
+            if let (Some(a), Some(s)) = (alone.load_factor, swept.load_factor) {
+                // The stops after the first skip the dead-load programme; the live-load
+                // programme is the same one, so λ agrees to the solver's tolerance.
+                assert!(
+                    (a - s).abs() <= 1e-8 * a,
+                    "stop {i} (passive {passive}): {a} vs {s}"
+                );
+                assert!(a > 0.0 && a.is_finite());
+                solved += 1;
+            }
+        }
+        assert!(
+            solved >= 4,
+            "passive {passive}: {solved} stops with a factor"
+        );
+    }
+}
+
+#[test]
+fn a_sweep_out_of_time_says_so_and_leaves_the_rest_unsolved() {
+    let arch = semicircle(30, 10.0, 1.5).assembly();
+    let p = problem(&arch, false);
+    let settings = LimitSettings {
+        time_limit_secs: 0.0,
+        ..LimitSettings::default()
+    };
+    let loads: Vec<Vec<LiveLoad>> = (5..12).map(|b| stop(&arch, Some(b))).collect();
+    let sweep = sweep_live_loads(&p, &settings, &loads).unwrap();
+    assert!(sweep.out_of_time);
+    assert!(sweep.stops[0].is_some(), "the first stop is always tried");
+    assert!(sweep.stops[1..].iter().all(Option::is_none));
+}
+
+#[test]
+fn a_sweep_without_loads_solves_nothing() {
+    let arch = semicircle(10, 10.0, 1.5).assembly();
+    let sweep = sweep_live_loads(
+        &problem(&arch, false),
+        &LimitSettings::default(),
+        &[Vec::new(), Vec::new()],
+    )
+    .unwrap();
+    assert!(!sweep.out_of_time);
+    assert!(sweep.stops.iter().all(Option::is_none));
+}
