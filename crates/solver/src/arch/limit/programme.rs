@@ -179,7 +179,8 @@ fn run_clarabel_once(
 /// cap cap.0·extra ≤ cap.1; minimise objective·extra.
 ///
 /// Only a few rows are active at the optimum (the hinges), so the programme is solved by
-/// constraint generation: start from the rows of about 32 evenly spread interfaces, solve,
+/// constraint generation: start from the rows of about 32 evenly spread interfaces and the
+/// crushing cuts (added where a previous solution went beyond the curve), solve,
 /// add the violated rows that are local maxima of the violation along the chain, repeat until
 /// no row is violated by more than the solver tolerance. The multipliers of rows never added
 /// are zero, exactly as at the optimum of the full programme.
@@ -213,7 +214,10 @@ pub(super) fn solve_chain_programme(
     let stride = (interfaces / 32).max(1);
     let mut selected: Vec<bool> = rows
         .iter()
-        .map(|row| row.tag.interface % stride == 0 || row.tag.interface + 1 == interfaces)
+        .map(|row| {
+            let k = row.tag.interface;
+            k % stride == 0 || k + 1 == interfaces || row.cut
+        })
         .collect();
     let mut c = vec![0.0; 4];
     c[3] = objective;

@@ -13,6 +13,9 @@ pub(super) struct Row {
     pub len: usize,
     pub b: f64,
     pub tag: LimitTag,
+    /// A crushing cut (a tangent added where a solution went beyond the curve): the chain
+    /// programmes start with these rows, where the next solution is expected to bear.
+    pub cut: bool,
 }
 
 impl Row {
@@ -60,6 +63,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                     resultant,
                     bound,
                 },
+                cut: false,
             });
         }
         if let Some(crushing) = &problem.crushing {
@@ -68,8 +72,13 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
             // ±(q − s) ≤ (1 − 2n)(q + s) + n²·σ_c·t: the tangent at n = N/(σ_c t) to
             // |q − s| ≤ (q + s)(1 − (q + s)/(σ_c t)), i.e. |M| ≤ N(t − N/σ_c)/2.
             let t = problem.assembly.interfaces[k].length();
-            let cuts = crushing.cuts.iter().filter(|c| c.0 == k).map(|c| c.1);
-            for n in tangent_points.iter().copied().chain(cuts) {
+            let cuts = crushing
+                .cuts
+                .iter()
+                .filter(|c| c.0 == k)
+                .map(|c| (c.1, true));
+            let planes = tangent_points.iter().map(|&n| (n, false));
+            for (n, cut) in planes.chain(cuts) {
                 let b = n * n * crushing.strength * t / w;
                 // A plane this far out (in units of the whole dead weight) never binds; left
                 // out, it cannot spoil the programme's scaling (σ_c → ∞ is Heyman's n = 0).
@@ -95,6 +104,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                             resultant: Resultant::M,
                             bound,
                         },
+                        cut,
                     });
                 }
             }
@@ -113,6 +123,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                         resultant,
                         bound: Bound::Lower,
                     },
+                    cut: false,
                 });
             }
         } else if let Some(mu) = friction {
@@ -134,6 +145,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                         resultant,
                         bound: Bound::Lower,
                     },
+                    cut: false,
                 });
             }
         }
@@ -154,6 +166,7 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                     resultant: Resultant::Passive,
                     bound,
                 },
+                cut: false,
             });
         }
     }
