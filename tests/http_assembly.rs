@@ -218,3 +218,29 @@ async fn a_very_high_friction_coefficient_is_no_sliding() {
         assert_eq!(answer["friction_may_overestimate"], false);
     }
 }
+
+#[tokio::test]
+async fn a_live_load_on_rings_whose_dead_load_falls_has_no_factor_and_the_dead_load_margin() {
+    // Two frictionless rings of 0.3 each fall under their own weight. The live-load route
+    // solves the dead-load margin beside the live-load programme (assemblies are solved side
+    // by side) and must answer as the dead-load route, which solves the margin alone: no
+    // factor, the same margin and the same collapse mechanism.
+    let server = Server::start().await;
+    let geometry = circular(json!({"thickness": 0.6, "rings": 2}));
+    let dead = json!({"geometry": geometry, "ring_friction_coefficient": 0.0});
+    let (status, _, falls) = server.post("/arch/dead-load", &dead).await;
+    assert_eq!(status, 200, "{falls}");
+    assert_eq!(falls["stable"], false);
+    let mut live = dead.clone();
+    live["loads"] = json!([{"block": 10, "fy": -1}]);
+    let (status, _, answer) = server.post("/arch/live-load", &live).await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["solver"]["status"], "dead_load_not_carried");
+    assert!(answer["load_factor"].is_null());
+    assert_eq!(answer["stable"], false);
+    let margin = answer["dead_load_margin"].as_f64().unwrap();
+    assert!(margin > 1e-3, "{margin}");
+    assert!((margin - falls["dead_load_margin"].as_f64().unwrap()).abs() <= 1e-12);
+    assert_eq!(answer["hinges"], falls["hinges"]);
+    assert!(!answer["hinges"].as_array().unwrap().is_empty());
+}

@@ -2,6 +2,8 @@
 //! its rows and scale, the margin and live-load programmes, and the reading of resultants and
 //! mechanism from their solutions. [`super`] drives it.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::Instant;
 
 use super::problem::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
@@ -110,7 +112,59 @@ impl<'a> Context<'a> {
     }
 
     pub fn margin(&mut self, lambda: f64) -> Result<MarginEvaluation, SolverFailure> {
-        let programme = match &self.model {
+        let programme = self.margin_programme(lambda);
+        self.margin_from(lambda, programme)
+    }
+
+    /// margin(λ) read from its programme (counted).
+    fn margin_from(
+        &mut self,
+        lambda: f64,
+        programme: Programme,
+    ) -> Result<MarginEvaluation, SolverFailure> {
+        let programme = self.count(programme)?;
+        let value = programme.x[self.extra()];
+        Ok(MarginEvaluation {
+            lambda,
+            value,
+            programme,
+        })
+    }
+
+    /// Whether the margin at full dead load and the live-load programme are worth solving side
+    /// by side (on two threads) rather than one after the other: the general formulation's
+    /// programmes of assemblies and passive restraint, milliseconds each. Plain chains and
+    /// crushing (programmes of a fraction of a millisecond, cut after cut) stay sequential.
+    pub fn solves_side_by_side(&self) -> bool {
+        matches!(self.model, Model::Assembly(_)) && self.refinement == Refinement::OnRetry
+    }
+
+    /// margin(1) and the live-load programme solved at once on two threads (see
+    /// [`Self::solves_side_by_side`]); both counted.
+    pub fn margin_and_live(
+        &mut self,
+    ) -> (
+        Result<MarginEvaluation, SolverFailure>,
+        Result<(Programme, f64), SolverFailure>,
+    ) {
+        // A dead load not carried has no live-load factor: its programme is then stopped.
+        let not_carried = Arc::new(AtomicBool::new(false));
+        let margin_then_flag = || {
+            let programme = self.margin_programme(1.0);
+            let carried = programme.status == clarabel::solver::SolverStatus::Solved
+                && programme.x[self.extra()] <= self.settings.margin_tolerance;
+            not_carried.store(!carried, Ordering::Relaxed);
+            programme
+        };
+        let (margin, (live, scale)) =
+            rayon::join(margin_then_flag, || self.live_programme(Some(&not_carried)));
+        let margin = self.margin_from(1.0, margin);
+        let live = self.count(live).map(|p| (p, scale));
+        (margin, live)
+    }
+
+    fn margin_programme(&self, lambda: f64) -> Programme {
+        match &self.model {
             Model::Assembly(eq) => {
                 let b_eq: Vec<f64> = eq.dead.iter().map(|w| -lambda * w).collect();
                 let zeros = vec![0.0; eq.rows];
@@ -121,7 +175,13 @@ impl<'a> Context<'a> {
                     cap: (-1.0, 1.0),
                     objective: 1.0,
                 };
-                solve_programme(eq, &self.rows, &spec, (self.settings, self.refinement))
+                solve_programme(
+                    eq,
+                    &self.rows,
+                    &spec,
+                    (self.settings, self.refinement),
+                    None,
+                )
             }
             Model::Chain(chain) => solve_chain_programme(
                 chain,
@@ -131,20 +191,18 @@ impl<'a> Context<'a> {
                 ((-1.0, 1.0), 1.0),
                 (self.settings, self.refinement),
             ),
-        };
-        let programme = self.count(programme)?;
-        let value = programme.x[self.extra()];
-        Ok(MarginEvaluation {
-            lambda,
-            value,
-            programme,
-        })
+        }
     }
 
     /// The live-load programme: λ̂ = λ·scale with the live loads scaled to a unit largest
     /// component; returns the programme and the scale.
     pub fn live(&mut self) -> Result<(Programme, f64), SolverFailure> {
-        let (programme, scale) = match &self.model {
+        let (programme, scale) = self.live_programme(None);
+        Ok((self.count(programme)?, scale))
+    }
+
+    fn live_programme(&self, abort: Option<&Arc<AtomicBool>>) -> (Programme, f64) {
+        match &self.model {
             Model::Assembly(eq) => {
                 let scale = eq.live.iter().fold(0.0f64, |m, v| m.max(v.abs()));
                 let live: Vec<f64> = eq.live.iter().map(|p| p / scale).collect();
@@ -156,10 +214,8 @@ impl<'a> Context<'a> {
                     cap: (1.0, LIVE_LOAD_CAP),
                     objective: -1.0,
                 };
-                (
-                    solve_programme(eq, &self.rows, &spec, (self.settings, self.refinement)),
-                    scale,
-                )
+                let solve = (self.settings, self.refinement);
+                (solve_programme(eq, &self.rows, &spec, solve, abort), scale)
             }
             Model::Chain(chain) => {
                 let scale = chain.live_scale;
@@ -174,8 +230,7 @@ impl<'a> Context<'a> {
                 );
                 (programme, scale)
             }
-        };
-        Ok((self.count(programme)?, scale))
+        }
     }
 
     /// Whether any live load is non-zero.

@@ -187,10 +187,19 @@ fn solve_live_load_once(
             "at least one load with a non-zero force or moment",
         ));
     }
+    // The live programme when it was solved beside the dead-load margin.
+    let mut solved_beside = None;
     let margin = match known_margin {
         Some(margin) => margin,
         None => {
-            let full = match cx.margin(1.0) {
+            let full = if cx.solves_side_by_side() {
+                let (full, live) = cx.margin_and_live();
+                solved_beside = Some(live);
+                full
+            } else {
+                cx.margin(1.0)
+            };
+            let full = match full {
                 Ok(e) => e,
                 Err(f) => return Ok(cx.failed(f, start)),
             };
@@ -212,7 +221,7 @@ fn solve_live_load_once(
             full.value
         }
     };
-    let (programme, scale) = match cx.live() {
+    let (programme, scale) = match solved_beside.unwrap_or_else(|| cx.live()) {
         Ok(p) => p,
         Err(f) => return Ok(cx.failed(f, start)),
     };

@@ -2,6 +2,9 @@
 //! form over three redundants solved by constraint generation, and Clarabel's status named as a
 //! [`SolverFailure`].
 
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
     DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
@@ -54,6 +57,7 @@ pub(super) fn solve_programme(
     rows: &[Row],
     spec: &ProgrammeSpec,
     (settings, refinement): (&LimitSettings, Refinement),
+    abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
     let ProgrammeSpec {
         extra_equilibrium,
@@ -104,30 +108,43 @@ pub(super) fn solve_programme(
     b.push(cap.1);
     let mut c = vec![0.0; n];
     c[extra] = objective_extra;
-    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, (settings, refinement))
+    run_clarabel(
+        (m, n, m_eq),
+        (ti, tj, tv),
+        &b,
+        &c,
+        (settings, refinement),
+        abort,
+    )
 }
 
 /// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq); with
 /// [`Refinement::OnRetry`] first without iterative refinement (the iterations of both attempts
-/// counted).
+/// counted). Setting `abort` stops the interior-point method at its next iteration
+/// (`CallbackTerminated`: the answer is no longer wanted).
 fn run_clarabel(
     (m, n, m_eq): (usize, usize, usize),
     (ti, tj, tv): (Vec<usize>, Vec<usize>, Vec<f64>),
     b: &[f64],
     c: &[f64],
     (settings, refinement): (&LimitSettings, Refinement),
+    abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
     let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
+    let once = |refine: bool| run_clarabel_once((m, m_eq), &a, b, c, (settings, refine), abort);
     if refinement == Refinement::OnRetry {
-        let quick = run_clarabel_once((m, m_eq), &a, b, c, settings, false);
-        if quick.status == SolverStatus::Solved {
+        let quick = once(false);
+        if matches!(
+            quick.status,
+            SolverStatus::Solved | SolverStatus::CallbackTerminated
+        ) {
             return quick;
         }
-        let mut refined = run_clarabel_once((m, m_eq), &a, b, c, settings, true);
+        let mut refined = once(true);
         refined.iterations += quick.iterations;
         return refined;
     }
-    run_clarabel_once((m, m_eq), &a, b, c, settings, true)
+    once(true)
 }
 
 fn run_clarabel_once(
@@ -135,8 +152,8 @@ fn run_clarabel_once(
     a: &CscMatrix<f64>,
     b: &[f64],
     c: &[f64],
-    settings: &LimitSettings,
-    refine: bool,
+    (settings, refine): (&LimitSettings, bool),
+    abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
     let n = a.n;
     let p = CscMatrix::zeros((n, n));
@@ -164,6 +181,10 @@ fn run_clarabel_once(
             }
         }
     };
+    if let Some(abort) = abort {
+        let abort = Arc::clone(abort);
+        solver.set_termination_callback(move |_| abort.load(Ordering::Relaxed));
+    }
     solver.solve();
     let solution = solver.solution;
     Programme {
@@ -242,7 +263,7 @@ pub(super) fn solve_chain_programme(
         tj.push(3);
         tv.push(cap.0);
         b.push(cap.1);
-        let mut programme = run_clarabel((m, 4, 0), (ti, tj, tv), &b, &c, settings);
+        let mut programme = run_clarabel((m, 4, 0), (ti, tj, tv), &b, &c, settings, None);
         iterations += programme.iterations;
         programme.iterations = iterations;
         if failure(programme.status).is_some() {
