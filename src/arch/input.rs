@@ -197,9 +197,10 @@ fn input(
         .interfaces
         .iter()
         .any(|i| i.kind == InterfaceKind::Ring);
+    // Checked whether or not there are rings: an out-of-range value is an error either way.
+    let (ring_limits, ring_friction) = ring_material(fields.material)?;
     let problem = if has_rings {
-        let (limits, friction) = ring_material(fields.material)?;
-        problem.with_ring_interfaces(limits, friction)?
+        problem.with_ring_interfaces(ring_limits, ring_friction)?
     } else if fields.material.ring_friction_coefficient.is_some() {
         return Err(ApiError::invalid(
             "ring_friction_coefficient",
