@@ -99,7 +99,7 @@ pub struct NonAssociativeOutDto {
     #[schema(required = true)]
     pub load_factor: Option<f64>,
     /// λ at each step: the associative programme's, then each programme with the shear
-    /// capacities μ·N fixed from the previous (relaxed) normal forces.
+    /// capacities μ·N fixed from the previous step's normal forces.
     pub load_factors: Vec<Option<f64>>,
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every
     /// joint (to 1e-7 of the weight), with the normal forces no longer moving.
