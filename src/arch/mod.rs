@@ -350,31 +350,29 @@ fn roll(
         first_position_ms,
     };
     let mut solutions = sweep.stops;
+    let critical = best
+        .filter(|_| !sweep.out_of_time)
+        .and_then(|(i, _)| solutions[i].take().map(|s| (i, s)));
+    if let Some((i, solution)) = critical {
+        input.problem = input
+            .problem
+            .clone()
+            .with_live_loads(stops.loads[i].clone())?;
+        return Ok((solution, curve));
+    }
+    // Out of time, or no stop collapses: the first loaded stop's answer (the input's problem)
+    // as the sweep found it.
+    let mut solution = solutions
+        .into_iter()
+        .flatten()
+        .next()
+        .map_or_else(|| solve_live_load(&input.problem, &input.settings), Ok)?;
     if sweep.out_of_time {
-        // Out of time: the sweep is not finished, and says so through the status.
+        // The sweep is not finished, and says so through the status.
         curve.critical_position = None;
         curve.critical_load_factor = None;
         curve.time_per_position_ms = 0.0;
-        let mut solution = solutions
-            .into_iter()
-            .flatten()
-            .next()
-            .map_or_else(|| solve_live_load(&input.problem, &input.settings), Ok)?;
         solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
-        return Ok((solution, curve));
     }
-    match best.and_then(|(i, _)| solutions[i].take().map(|s| (i, s))) {
-        Some((i, solution)) => {
-            input.problem = input
-                .problem
-                .clone()
-                .with_live_loads(stops.loads[i].clone())?;
-            Ok((solution, curve))
-        }
-        None => {
-            // No stop collapses: answer the first loaded stop as it is.
-            let solution = solve_live_load(&input.problem, &input.settings)?;
-            Ok((solution, curve))
-        }
-    }
+    Ok((solution, curve))
 }
