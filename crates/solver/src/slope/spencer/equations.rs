@@ -1,6 +1,7 @@
 //! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
 //! equation alone at a fixed θ (SPEC §2.2; the equations are written out in [`super`]).
 
+use super::kernel::{resultant, Kernel, Lane, Sums};
 use super::scan::Scan;
 use crate::numerics::brent;
 use crate::slope::slices::SliceModel;
@@ -36,12 +37,10 @@ pub(super) struct Residuals {
     pub min_m_alpha: f64,
 }
 
-/// Q of one slice (SPEC §2.2) with its derivatives and the denominator m_α.
+/// Q of one slice (SPEC §2.2) and the denominator m_α.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct SliceResultant {
     pub q: f64,
-    pub dq_df: f64,
-    pub dq_dtheta: f64,
     pub m_alpha: f64,
 }
 
@@ -50,6 +49,8 @@ pub(super) struct Equations {
     pub force_scale: f64,
     pub moment_scale: f64,
     pub known_moment: f64,
+    /// The terms as [`Equations::evaluate`] sums them.
+    kernel: Kernel,
 }
 
 impl Equations {
@@ -96,11 +97,20 @@ impl Equations {
         }
         let known_moment = terms.iter().map(|t| t.moment).sum();
         let force_scale = total_weight.max(f64::MIN_POSITIVE);
+        let kernel = Kernel::new(terms.iter().map(|t| Lane {
+            sin_alpha: t.sin_alpha,
+            cos_alpha: t.cos_alpha,
+            a_t: t.a_t,
+            resistance: t.resistance,
+            tan_phi: t.tan_phi,
+            arm: t.arm,
+        }));
         Self {
             terms,
             force_scale,
             moment_scale: force_scale * model.length_scale,
             known_moment,
+            kernel,
         }
     }
 
@@ -109,57 +119,35 @@ impl Equations {
         self.terms.iter().all(|t| t.tan_phi == 0.0)
     }
 
-    /// Q and its derivatives for one slice (m_α may be ≤ 0: the callers check it).
-    pub fn q(t: &SliceTerms, f: f64, (sin_t, cos_t): (f64, f64)) -> SliceResultant {
-        // sin(α−θ) and cos(α−θ) from the stored sin α, cos α.
-        let d = t.sin_alpha * cos_t - t.cos_alpha * sin_t;
-        let c = t.cos_alpha * cos_t + t.sin_alpha * sin_t;
-        let numerator = t.a_t - t.resistance / f;
-        let m_alpha = c + d * t.tan_phi / f;
-        let q = numerator / m_alpha;
-        let dq_df =
-            (t.resistance * m_alpha + numerator * d * t.tan_phi) / (f * f * m_alpha * m_alpha);
-        let dq_dtheta = -numerator * (d - c * t.tan_phi / f) / (m_alpha * m_alpha);
-        SliceResultant {
-            q,
-            dq_df,
-            dq_dtheta,
-            m_alpha,
-        }
+    /// Q for one slice (m_α may be ≤ 0: the callers check it).
+    pub fn q(t: &SliceTerms, f: f64, trig: (f64, f64)) -> SliceResultant {
+        let [q, _, _, m_alpha] = resultant(
+            (t.sin_alpha, t.cos_alpha),
+            t.a_t,
+            t.resistance,
+            t.tan_phi,
+            f,
+            trig,
+        );
+        SliceResultant { q, m_alpha }
     }
 
     pub fn evaluate(&self, f: f64, theta: f64) -> Residuals {
-        let (sin_t, cos_t) = theta.sin_cos();
-        let mut r = Residuals {
-            force: 0.0,
-            moment: -self.known_moment,
-            d_force: (0.0, 0.0),
-            d_moment: (0.0, 0.0),
-            min_m_alpha: f64::INFINITY,
-        };
-        for t in &self.terms {
-            let SliceResultant {
-                q,
-                dq_df,
-                dq_dtheta: dq_dt,
-                m_alpha,
-            } = Self::q(t, f, (sin_t, cos_t));
-            let arm = t.arm.0 * sin_t - t.arm.1 * cos_t;
-            let d_arm = t.arm.0 * cos_t + t.arm.1 * sin_t;
-            r.force += q;
-            r.moment += q * arm;
-            r.d_force.0 += dq_df;
-            r.d_force.1 += dq_dt;
-            r.d_moment.0 += dq_df * arm;
-            r.d_moment.1 += dq_dt * arm + q * d_arm;
-            r.min_m_alpha = r.min_m_alpha.min(m_alpha);
-        }
+        let Sums {
+            force,
+            moment,
+            d_force,
+            d_moment,
+            min_m_alpha,
+        } = self.kernel.sums(f, theta.sin_cos(), -self.known_moment);
         let (fs, ms) = (self.force_scale, self.moment_scale);
-        r.force /= fs;
-        r.moment /= ms;
-        r.d_force = (r.d_force.0 / fs, r.d_force.1 / fs);
-        r.d_moment = (r.d_moment.0 / ms, r.d_moment.1 / ms);
-        r
+        Residuals {
+            force: force / fs,
+            moment: moment / ms,
+            d_force: (d_force.0 / fs, d_force.1 / fs),
+            d_moment: (d_moment.0 / ms, d_moment.1 / ms),
+            min_m_alpha,
+        }
     }
 
     /// The interval of F on which every m_α(F, θ) is positive, clipped to [`F_RANGE`].

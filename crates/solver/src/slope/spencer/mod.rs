@@ -31,6 +31,7 @@
 
 mod describe;
 mod equations;
+mod kernel;
 pub mod methods;
 mod newton;
 mod problem;

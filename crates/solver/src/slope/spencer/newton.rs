@@ -78,6 +78,11 @@ fn newton(
         let mut accepted = None;
         for _ in 0..40 {
             let (f_new, theta_new) = (f + df, (theta + dtheta).clamp(-MAX_THETA, MAX_THETA));
+            // A step below rounding lands on the current point: every shorter one would be
+            // evaluated there too, and rejected as it (the merit does not fall below itself).
+            if f_new == f && theta_new == theta {
+                break;
+            }
             let r_new = equations.evaluate(f_new, theta_new);
             let m = merit(&r_new);
             if r_new.min_m_alpha > 0.0 && m.is_finite() && (m < current || m == 0.0) {
