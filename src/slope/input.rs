@@ -77,7 +77,7 @@ pub struct SectionSearch {
 /// The ground and soil: a section, or the simple slope with its soil.
 enum Ground {
     Simple(Embankment, Soil),
-    Section(Section),
+    Section(Box<Section>),
 }
 
 /// The validated parts of a request that do not depend on the slip surface.
@@ -160,7 +160,7 @@ impl SpencerRequest {
                     let (region, hard, noncircular) =
                         search_region(search, &section, parts.slices.get())?;
                     Target::SectionSearch(Box::new(SectionSearch {
-                        section,
+                        section: *section,
                         region,
                         hard,
                         slices: parts.slices,
@@ -192,7 +192,7 @@ impl SpencerRequest {
     fn parts(&self) -> Result<Parts, ApiError> {
         let slices = count("slices", self.slices, 1, MAX_SLICES)?;
         let ground = match (&self.section, &self.slope, &self.soil) {
-            (Some(section), None, None) => Ground::Section(section_from(section)?),
+            (Some(section), None, None) => Ground::Section(Box::new(section_from(section)?)),
             (Some(_), _, _) => {
                 return Err(ApiError::invalid(
                     if self.slope.is_some() {
@@ -332,7 +332,7 @@ fn section_target(
     moment_centre: Option<(f64, f64)>,
 ) -> Result<Target, ApiError> {
     let section = match parts.ground {
-        Ground::Section(section) => section,
+        Ground::Section(section) => *section,
         Ground::Simple(embankment, soil) => Section::new(SectionParts {
             ground: Polyline::new(vec![(0.0, 0.0), (embankment.length(), embankment.height())])
                 .map_err(|e| ApiError::invalid("slope", e.to_string()))?,

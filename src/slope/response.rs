@@ -292,7 +292,7 @@ impl SpencerResponse {
                         x_left: a.min(b),
                         x_right: a.max(b),
                         layer: s.layer,
-                        base_inclination_deg: s.base_inclination_rad.to_degrees(),
+                        base_inclination_deg: s.base_inclination_rad().to_degrees(),
                         base_length: s.base_length,
                         height: s.height_middle,
                         weight: f.weight,

@@ -22,8 +22,8 @@ pub struct BaseSlice {
     pub base_right_y: f64,
     /// Ground level at the right side.
     pub top_right_y: f64,
-    /// Inclination α of the (straight) base, positive where it rises towards the crest.
-    pub base_inclination_rad: f64,
+    /// sin α and cos α of the base's inclination α (see [`BaseSlice::base_inclination_rad`]).
+    pub base_sin_cos: (f64, f64),
     /// Length of the base.
     pub base_length: f64,
     /// Middle of the base, the point about which the 1973 moment equation is written.
@@ -52,6 +52,11 @@ impl BaseSlice {
     /// Width b of the slice.
     pub fn width(&self) -> f64 {
         self.x_right - self.x_left
+    }
+
+    /// Inclination α of the (straight) base, positive where it rises towards the crest.
+    pub fn base_inclination_rad(&self) -> f64 {
+        (self.base_right_y - self.base_left_y).atan2(self.width())
     }
 }
 

@@ -196,7 +196,10 @@ impl Cut {
         };
         let length_scale = surface
             .iter()
-            .map(|p| (p.0 - reference.0).hypot(p.1 - reference.1))
+            .map(|p| {
+                let (dx, dy) = (p.0 - reference.0, p.1 - reference.1);
+                (dx * dx + dy * dy).sqrt()
+            })
             .fold(0.0f64, f64::max)
             .max(f64::MIN_POSITIVE);
         Ok(Self {
@@ -294,6 +297,30 @@ pub(super) fn bends(section: &Section) -> Vec<f64> {
     xs
 }
 
+/// The stretches of x where the piezometric line lies above the ground somewhere (ponded
+/// water), merged. Between the bends both lines are straight, beyond them level: the water
+/// stands above the ground on a stretch only if it does at one of its ends.
+pub(super) fn ponded(section: &Section) -> Vec<(f64, f64)> {
+    let mut ponded: Vec<(f64, f64)> = Vec::new();
+    let Some(line) = &section.piezometric_line else {
+        return ponded;
+    };
+    let above = |x: f64| line.y_at(x) > section.ground.y_at(x);
+    let ends = std::iter::once(f64::NEG_INFINITY)
+        .chain(section.bends.iter().copied())
+        .chain(std::iter::once(f64::INFINITY));
+    for (a, b) in ends.clone().zip(ends.skip(1)) {
+        if !((a.is_finite() && above(a)) || (b.is_finite() && above(b))) {
+            continue;
+        }
+        match ponded.last_mut() {
+            Some(last) if last.1 == a => last.1 = b,
+            _ => ponded.push((a, b)),
+        }
+    }
+    ponded
+}
+
 /// The bends of the section within (a, b), with a and b at the ends.
 fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     let first = section.bends.partition_point(|&x| x <= a + tolerance);
@@ -307,13 +334,14 @@ fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
 }
 
 /// The pieces of [xl, xr] between the top points.
-fn pieces(points: &[f64], xl: f64, xr: f64) -> Vec<(f64, f64)> {
-    let inner = points.iter().copied().filter(|&x| x > xl && x < xr);
-    let xs: Vec<f64> = std::iter::once(xl)
-        .chain(inner)
-        .chain(std::iter::once(xr))
-        .collect();
-    xs.windows(2).map(|w| (w[0], w[1])).collect()
+fn pieces(points: &[f64], xl: f64, xr: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
+    // The points are sorted: those strictly inside are one run.
+    let first = points.partition_point(|&x| x <= xl);
+    let last = points.partition_point(|&x| x < xr).max(first);
+    let xs = std::iter::once(xl)
+        .chain(points[first..last].iter().copied())
+        .chain(std::iter::once(xr));
+    xs.clone().zip(xs.skip(1))
 }
 
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
@@ -435,6 +463,8 @@ fn slice(
     }
     let levels = middle.values();
     let layer = soil_at(section, levels, bm + tolerance);
+    let rise = br - bl;
+    let base_length = (width * width + rise * rise).sqrt();
     let soil = &section.layers[layer].soil;
     BaseSlice {
         x_left: xl,
@@ -442,8 +472,8 @@ fn slice(
         base_left_y: bl,
         base_right_y: br,
         top_right_y: ground(right.values()),
-        base_inclination_rad: (br - bl).atan2(width),
-        base_length: width.hypot(br - bl),
+        base_sin_cos: (rise / base_length, width / base_length),
+        base_length,
         base_middle: (xm, bm),
         height_middle: ground(levels) - bm,
         weight,
@@ -476,7 +506,8 @@ fn loads(
     };
     for (i, s) in slices.iter().enumerate() {
         let (xl, xr) = (s.x_left, s.x_right);
-        if let Some(line) = section.piezometric_line.as_ref().filter(|_| section.ponded) {
+        let wet = section.piezometric_line.as_ref();
+        if let Some(line) = wet.filter(|_| section.is_ponded_over(xl, xr)) {
             // Ponded water: pressure γ_w·d normal to the ground, d linear on each piece.
             for (a, b) in pieces(points, xl, xr) {
                 let (ga, gb) = (ground.y_at(a), ground.y_at(b));

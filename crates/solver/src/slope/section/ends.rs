@@ -38,8 +38,8 @@ fn circle_ends(
     cuts.dedup();
     // Of the pieces of the lower half that lie below the ground, the one where the arc lies
     // deepest below the ground (a sliver where the arc grazes the ground is not it). Ground
-    // minus arc is concave on each straight piece of the ground: sampled at the ground's
-    // vertices and 32 points per piece, its largest value is found to well within a slice.
+    // minus arc is concave on each straight stretch of the ground (slope m), largest where the
+    // arc has the ground's slope, x − x_c = m·R/√(1 + m²), or at the stretch's nearer end.
     let depth = |x: f64| ground.y_at(x) - arc(x);
     let deepest = cuts
         .windows(2)
@@ -49,12 +49,10 @@ fn circle_ends(
         })
         .map(|w| {
             let (a, b) = (w[0], w[1]);
-            let samples = (0..=32).map(|k| a + (b - a) * f64::from(k) / 32.0);
-            let vertices = ground.xs().filter(|&x| x > a && x < b);
-            let deepest = samples
-                .chain(vertices)
-                .chain(std::iter::once(xc.clamp(a, b)))
-                .map(depth)
+            let deepest = ground
+                .pieces(a, b)
+                .into_iter()
+                .map(|(x0, x1, m, _)| depth((xc + m * radius / m.hypot(1.0)).clamp(x0, x1)))
                 .fold(f64::NEG_INFINITY, f64::max);
             (a, b, deepest)
         })

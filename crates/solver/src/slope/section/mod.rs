@@ -88,8 +88,9 @@ pub struct Section {
     pub(crate) tension_crack: Option<TensionCrack>,
     /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
     bends: Vec<f64>,
-    /// Whether the piezometric line lies above the ground anywhere (ponded water).
-    ponded: bool,
+    /// The stretches of x (between bends, or beyond the last ones) where the piezometric line
+    /// lies above the ground somewhere: ponded water. Sorted, merged.
+    ponded: Vec<(f64, f64)>,
 }
 
 /// Everything a [`Section`] is built from.
@@ -287,7 +288,7 @@ impl Section {
             line_loads: parts.line_loads,
             tension_crack: parts.tension_crack,
             bends: Vec::new(),
-            ponded: false,
+            ponded: Vec::new(),
         }
         .with_bends())
     }
@@ -295,14 +296,13 @@ impl Section {
     /// The section with its bends found.
     fn with_bends(mut self) -> Self {
         self.bends = cut::bends(&self);
-        // Between the bends both lines are straight, beyond them level: the water stands above
-        // the ground somewhere only if it does at a bend.
-        self.ponded = self.piezometric_line.as_ref().is_some_and(|line| {
-            self.bends
-                .iter()
-                .any(|&x| line.y_at(x) > self.ground.y_at(x))
-        });
+        self.ponded = cut::ponded(&self);
         self
+    }
+
+    /// Whether ponded water stands anywhere over [a, b].
+    pub(crate) fn is_ponded_over(&self, a: f64, b: f64) -> bool {
+        self.ponded.iter().any(|&(lo, hi)| lo < b && a < hi)
     }
 
     /// The ground line.
@@ -383,7 +383,7 @@ impl Section {
                 .collect(),
             tension_crack: self.tension_crack,
             bends: Vec::new(),
-            ponded: false,
+            ponded: Vec::new(),
         }
         .with_bends()
     }

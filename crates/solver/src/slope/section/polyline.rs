@@ -5,6 +5,8 @@
 #[derive(Debug, Clone, PartialEq)]
 pub struct Polyline {
     points: Vec<(f64, f64)>,
+    /// Slope of each segment, so that reading y needs no division.
+    slopes: Vec<f64>,
 }
 
 /// Why a list of points is not a polyline.
@@ -60,7 +62,16 @@ impl Polyline {
                 return Err(PolylineError::NotIncreasing { index });
             }
         }
-        Ok(Self { points })
+        Ok(Self::through(points))
+    }
+
+    /// The polyline through points known to run left to right.
+    fn through(points: Vec<(f64, f64)>) -> Self {
+        let slopes = points
+            .windows(2)
+            .map(|w| (w[1].1 - w[0].1) / (w[1].0 - w[0].0))
+            .collect();
+        Self { points, slopes }
     }
 
     /// The points.
@@ -70,9 +81,7 @@ impl Polyline {
 
     /// The same line seen from behind (x → −x): for sections facing left.
     pub fn mirrored(&self) -> Self {
-        Self {
-            points: self.points.iter().rev().map(|&(x, y)| (-x, y)).collect(),
-        }
+        Self::through(self.points.iter().rev().map(|&(x, y)| (-x, y)).collect())
     }
 
     /// y at `x`, continued horizontally beyond the ends.
@@ -88,8 +97,7 @@ impl Polyline {
         // The segment [p[i-1], p[i]] with p[i-1].x < x ≤ p[i].x.
         let i = p.partition_point(|q| q.0 < x);
         let (x0, y0) = p[i - 1];
-        let (x1, y1) = p[i];
-        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+        y0 + self.slopes[i - 1] * (x - x0)
     }
 
     /// x of the vertices.

@@ -516,3 +516,27 @@ fn side_water_under_a_water_line_is_hydrostatic() {
     }
     assert!(full_sides > 5);
 }
+
+#[test]
+fn ponded_stretches_are_where_the_water_stands_above_the_ground() {
+    // Slope (0, 10)–(20, 0), level beyond; water level at y = 4 in front, falling to 2 at
+    // x = 40: above the ground from the water's crossing with the face (x = 12) onwards.
+    let mut parts = one_soil(
+        &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
+        19.0,
+        0.0,
+        30.0,
+    );
+    parts.piezometric_line = Some(line(&[(-20.0, 4.0), (20.0, 4.0), (40.0, 2.0)]));
+    let section = Section::new(parts.clone()).unwrap();
+    // The crossing is a bend: the face is dry up to it, wet beyond.
+    assert!(!section.is_ponded_over(11.0, 11.5));
+    assert!(section.is_ponded_over(12.5, 13.0));
+    assert!(section.is_ponded_over(30.0, 31.0));
+    assert!(section.is_ponded_over(50.0, 60.0));
+    assert!(!section.is_ponded_over(-15.0, -1.0));
+    // Below the ground everywhere: nothing ponded.
+    parts.piezometric_line = Some(line(&[(-20.0, -1.0), (40.0, -2.0)]));
+    let dry = Section::new(parts).unwrap();
+    assert!(!dry.is_ponded_over(-100.0, 100.0));
+}

@@ -35,7 +35,7 @@ pub(super) fn describe(
         let weight = slice.weight;
         let pore_pressure = slice.pore_pressure;
         // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
-        let normal_force = t.a_n + q * (t.alpha - theta).sin();
+        let normal_force = t.a_n + q * (slice.base_inclination_rad() - theta).sin();
         let effective_normal_force = normal_force - t.pore_force;
         let shear_force =
             (slice.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;

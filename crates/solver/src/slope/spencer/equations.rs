@@ -12,7 +12,6 @@ const F_RANGE: (f64, f64) = (1e-6, 1e6);
 /// Per-slice constants of the equations, computed once.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct SliceTerms {
-    pub alpha: f64,
     /// sin α and cos α, so that the angle differences need no trigonometry per evaluation.
     pub sin_alpha: f64,
     pub cos_alpha: f64,
@@ -63,13 +62,12 @@ impl Equations {
                 let weight = s.weight;
                 total_weight += weight;
                 let tan_phi = s.tan_phi;
-                let (sin_a, cos_a) = s.base_inclination_rad.sin_cos();
+                let (sin_a, cos_a) = s.base_sin_cos;
                 let fx = -model.seismic.kh * weight;
                 let fy = -(1.0 + model.seismic.kv) * weight;
                 let pore_force = s.pore_pressure * s.base_length;
                 let a_n = fx * sin_a - fy * cos_a;
                 SliceTerms {
-                    alpha: s.base_inclination_rad,
                     sin_alpha: sin_a,
                     cos_alpha: cos_a,
                     a_t: -fx * cos_a - fy * sin_a,
@@ -88,7 +86,7 @@ impl Equations {
             .collect();
         for load in &model.loads {
             let t = &mut terms[load.slice];
-            let (sin_a, cos_a) = t.alpha.sin_cos();
+            let (sin_a, cos_a) = (t.sin_alpha, t.cos_alpha);
             let a_n = load.fx * sin_a - load.fy * cos_a;
             t.a_t += -load.fx * cos_a - load.fy * sin_a;
             t.a_n += a_n;

@@ -211,7 +211,7 @@ impl SlopeProblem {
                 base_left_y: s.base_left_y,
                 base_right_y: s.base_right_y,
                 top_right_y: g.embankment.ground(s.x_right),
-                base_inclination_rad: s.base_inclination_rad,
+                base_sin_cos: s.base_inclination_rad.sin_cos(),
                 base_length: s.base_length,
                 base_middle: s.base_middle,
                 height_middle: s.height_middle,
