@@ -5,7 +5,53 @@
 //! Levels are read once per slice side; between the points where a line bends or two lines
 //! cross every line is straight, so the levels half-way are the mean of the levels at the ends.
 
+use super::polyline::Polyline;
 use super::Section;
+
+/// The section's lines (layer tops, the ground for a layer without one, then the water line)
+/// stretch by stretch between the bends, where each is straight: reading the levels at x is one
+/// search for the stretch and a line per level.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(super) struct LevelTable {
+    /// Where each stretch starts: the bends (the first stretch, before them, starts at the first).
+    starts: Vec<f64>,
+    /// Per stretch and line: the level at the stretch's start and the slope.
+    rows: Vec<(f64, f64)>,
+    /// Lines per stretch.
+    lines: usize,
+}
+
+impl LevelTable {
+    /// The table of `section`'s lines over `bends` (sorted, at least one, every vertex of the
+    /// lines among them: beyond the first and last the lines are level).
+    pub fn new(section: &Section, bends: &[f64]) -> Self {
+        let lines: Vec<Option<&Polyline>> = section
+            .layers
+            .iter()
+            .map(|l| Some(l.top.as_ref().unwrap_or(&section.ground)))
+            .chain(std::iter::once(section.piezometric_line.as_ref()))
+            .collect();
+        let y = |line: Option<&Polyline>, x: f64| line.map_or(f64::NAN, |l| l.y_at(x));
+        let mut rows = Vec::with_capacity((bends.len() + 1) * lines.len());
+        for j in 0..=bends.len() {
+            for &line in &lines {
+                rows.push(match (j.checked_sub(1), bends.get(j)) {
+                    (Some(i), Some(&end)) => {
+                        let (start, y0) = (bends[i], y(line, bends[i]));
+                        (y0, (y(line, end) - y0) / (end - start))
+                    }
+                    (Some(i), None) => (y(line, bends[i]), 0.0),
+                    (None, _) => (y(line, bends.first().copied().unwrap_or(0.0)), 0.0),
+                });
+            }
+        }
+        Self {
+            starts: bends.to_vec(),
+            rows,
+            lines: lines.len(),
+        }
+    }
+}
 
 /// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
 /// layer k (the ground for k = 0), index L the piezometric line (NaN without one).
@@ -15,19 +61,14 @@ pub(super) struct Levels(Vec<f64>);
 impl Levels {
     /// Reads the section's lines at x.
     pub fn read(&mut self, section: &Section, x: f64) {
+        let table = &section.levels;
+        let j = table.starts.partition_point(|&s| s <= x);
+        let dx = x - table.starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
         self.0.clear();
-        let g = section.ground.y_at(x);
         self.0.extend(
-            section
-                .layers
+            table.rows[j * table.lines..(j + 1) * table.lines]
                 .iter()
-                .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x))),
-        );
-        self.0.push(
-            section
-                .piezometric_line
-                .as_ref()
-                .map_or(f64::NAN, |l| l.y_at(x)),
+                .map(|&(y, slope)| y + slope * dx),
         );
     }
 

@@ -88,6 +88,8 @@ pub struct Section {
     pub(crate) tension_crack: Option<TensionCrack>,
     /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
     bends: Vec<f64>,
+    /// The lines above the bases between the bends.
+    levels: column::LevelTable,
     /// The stretches of x (between bends, or beyond the last ones) where the piezometric line
     /// lies above the ground somewhere: ponded water. Sorted, merged.
     ponded: Vec<(f64, f64)>,
@@ -288,6 +290,7 @@ impl Section {
             line_loads: parts.line_loads,
             tension_crack: parts.tension_crack,
             bends: Vec::new(),
+            levels: column::LevelTable::default(),
             ponded: Vec::new(),
         }
         .with_bends())
@@ -296,6 +299,7 @@ impl Section {
     /// The section with its bends found.
     fn with_bends(mut self) -> Self {
         self.bends = cut::bends(&self);
+        self.levels = column::LevelTable::new(&self, &self.bends);
         self.ponded = cut::ponded(&self);
         self
     }
@@ -383,6 +387,7 @@ impl Section {
                 .collect(),
             tension_crack: self.tension_crack,
             bends: Vec::new(),
+            levels: column::LevelTable::default(),
             ponded: Vec::new(),
         }
         .with_bends()

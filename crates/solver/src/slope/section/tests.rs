@@ -540,3 +540,36 @@ fn ponded_stretches_are_where_the_water_stands_above_the_ground() {
     let dry = Section::new(parts).unwrap();
     assert!(!dry.is_ponded_over(-100.0, 100.0));
 }
+
+#[test]
+fn levels_read_from_the_table_are_the_lines_heights() {
+    let mut parts = one_soil(
+        &[(-20.0, 10.0), (0.0, 10.0), (20.0, 0.0), (40.0, 0.0)],
+        19.0,
+        10.0,
+        30.0,
+    );
+    let top = line(&[(-20.0, 2.0), (5.0, 3.0), (40.0, -4.0)]);
+    parts.layers.push(Layer {
+        top: Some(top.clone()),
+        soil: Soil::new(20.0, 5.0, 25.0, 0.0).unwrap(),
+        pore_pressure_ratio: None,
+    });
+    let water = line(&[(-20.0, 6.0), (30.0, 1.0)]);
+    parts.piezometric_line = Some(water.clone());
+    let section = Section::new(parts.clone()).unwrap();
+    let mut levels = super::column::Levels::default();
+    // Before, between and beyond every vertex and crossing.
+    for k in 0..=140 {
+        let x = -30.0 + 0.5 * f64::from(k);
+        levels.read(&section, x);
+        let expected = [parts.ground.y_at(x), top.y_at(x), water.y_at(x)];
+        for (got, want) in levels.values().iter().zip(expected) {
+            assert!((got - want).abs() <= 1e-12, "x = {x}: {got} against {want}");
+        }
+    }
+    // Without a water line the last level is NaN.
+    parts.piezometric_line = None;
+    levels.read(&Section::new(parts).unwrap(), 3.0);
+    assert!(levels.values()[2].is_nan());
+}
