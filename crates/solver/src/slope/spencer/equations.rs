@@ -148,6 +148,19 @@ impl Equations {
         }
     }
 
+    /// One scaled residual at (F, θ), the force (`moment` false) or the moment equation's, its
+    /// derivative in F and the least m_α: as [`Equations::evaluate`] gives them, bit for bit.
+    pub fn evaluate_one(&self, f: f64, theta: f64, moment: bool) -> (f64, f64, f64) {
+        let start = moment.then_some(-self.known_moment);
+        let [value, slope, min_m_alpha] = self.kernel.one(f, theta.sin_cos(), start);
+        let scale = if moment {
+            self.moment_scale
+        } else {
+            self.force_scale
+        };
+        (value / scale, slope / scale, min_m_alpha)
+    }
+
     /// The interval of F on which every m_α(F, θ) is positive, clipped to [`F_RANGE`].
     pub(super) fn admissible_f(&self, theta: f64) -> Option<(f64, f64)> {
         let (mut lo, mut hi) = F_RANGE;
@@ -180,14 +193,9 @@ impl Equations {
         // must cross from negative to positive, as on the bracketed path below.
         let mut f = 1.0f64.clamp(lo, hi);
         for _ in 0..30 {
-            let r = self.evaluate(f, theta);
+            let (value, slope, min_m_alpha) = self.evaluate_one(f, theta, moment);
             *evaluations += 1;
-            let (value, slope) = if moment {
-                (r.moment, r.d_moment.0)
-            } else {
-                (r.force, r.d_force.0)
-            };
-            if !(value.is_finite() && slope > 0.0) || r.min_m_alpha <= 0.0 {
+            if !(value.is_finite() && slope > 0.0) || min_m_alpha <= 0.0 {
                 break;
             }
             let next = f - value / slope;
@@ -199,14 +207,7 @@ impl Equations {
             }
             f = next;
         }
-        let residual = |f: f64| {
-            let r = self.evaluate(f, theta);
-            if moment {
-                r.moment
-            } else {
-                r.force
-            }
-        };
+        let residual = |f: f64| self.evaluate_one(f, theta, moment).0;
         let mut scan = self.scan(theta, moment, (lo, hi));
         let crossing = scan.first_crossing();
         *evaluations += scan.evaluations;

@@ -143,6 +143,43 @@ impl Kernel {
         }
         s
     }
+
+    /// One equation of [`Kernel::sums`], bit for bit: Σ Q (`moment_start` `None`) or
+    /// `moment_start` + Σ Q·arm, its derivative in F and the least m_α, without the work of
+    /// the other equation and of the derivatives in θ.
+    pub fn one(&self, f: f64, (sin_t, cos_t): (f64, f64), moment_start: Option<f64>) -> [f64; 3] {
+        let (mut value, mut slope) = (moment_start.unwrap_or(0.0), 0.0);
+        let mut min_m_alpha = f64::INFINITY;
+        for (i, b) in self.blocks.iter().enumerate() {
+            let mut q = [0.0; LANES];
+            let mut dq_df = [0.0; LANES];
+            let mut m_alpha = [0.0; LANES];
+            let mut arm = [0.0; LANES];
+            for k in 0..LANES {
+                [q[k], dq_df[k], _, m_alpha[k]] = resultant(
+                    (b.sin_alpha[k], b.cos_alpha[k]),
+                    b.a_t[k],
+                    b.resistance[k],
+                    b.tan_phi[k],
+                    f,
+                    (sin_t, cos_t),
+                );
+                arm[k] = b.arm_x[k] * sin_t - b.arm_y[k] * cos_t;
+            }
+            let used = LANES.min(self.slices - i * LANES);
+            for k in 0..used {
+                if moment_start.is_some() {
+                    value += q[k] * arm[k];
+                    slope += dq_df[k] * arm[k];
+                } else {
+                    value += q[k];
+                    slope += dq_df[k];
+                }
+                min_m_alpha = min_m_alpha.min(m_alpha[k]);
+            }
+        }
+        [value, slope, min_m_alpha]
+    }
 }
 
 #[cfg(test)]
@@ -199,10 +236,19 @@ mod tests {
                 .collect();
             let kernel = Kernel::new(lanes.iter().copied());
             for (f, theta) in [(1.3f64, 0.2f64), (0.7, -0.4), (2.9, 0.0)] {
+                let expected = one_by_one(&lanes, f, theta, -0.25);
                 assert_eq!(
                     kernel.sums(f, theta.sin_cos(), -0.25),
-                    one_by_one(&lanes, f, theta, -0.25),
+                    expected,
                     "n = {n}, F = {f}, θ = {theta}"
+                );
+                assert_eq!(
+                    kernel.one(f, theta.sin_cos(), None),
+                    [expected.force, expected.d_force.0, expected.min_m_alpha]
+                );
+                assert_eq!(
+                    kernel.one(f, theta.sin_cos(), Some(-0.25)),
+                    [expected.moment, expected.d_moment.0, expected.min_m_alpha]
                 );
             }
         }
