@@ -8,8 +8,8 @@
 
 use std::num::NonZeroUsize;
 
-use super::column::{column, ground, pore_pressure, side_water, soil_at, Levels};
 use super::polyline::Polyline;
+use super::slicing::{slice_all, Slicing};
 use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
@@ -164,22 +164,21 @@ impl Cut {
         let points = top_points(section, xa, xb, tolerance);
         let boundaries = allocate(&cuts, slices.get());
         let last = boundaries.len() - 1;
-        let base_at = |i: usize, x: f64| {
+        let base_at = |i: usize, x: f64, ground_y: f64| {
             if i == 0 {
-                ground.y_at(x)
+                ground_y
             } else if i == last {
-                crack.map_or(ground.y_at(x), |c| c.1)
+                crack.map_or(ground_y, |c| c.1)
             } else {
-                base(x).min(ground.y_at(x))
+                base(x).min(ground_y)
             }
         };
-        let base_ys: Vec<f64> = boundaries
-            .iter()
-            .enumerate()
-            .map(|(i, &x)| base_at(i, x))
-            .collect();
-        let slices = slice_all(section, &boundaries, &base_ys, &points, tolerance);
-        let loads = loads(section, &slices, &points, crack);
+        let Slicing {
+            slices,
+            base_ys,
+            ponded,
+        } = slice_all(section, &boundaries, base_at, &points, tolerance);
+        let loads = loads(section, &slices, ponded, crack);
         let surface: Vec<(f64, f64)> = boundaries
             .iter()
             .copied()
@@ -333,17 +332,6 @@ fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     )
 }
 
-/// The pieces of [xl, xr] between the top points.
-fn pieces(points: &[f64], xl: f64, xr: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
-    // The points are sorted: those strictly inside are one run.
-    let first = points.partition_point(|&x| x <= xl);
-    let last = points.partition_point(|&x| x < xr).max(first);
-    let xs = std::iter::once(xl)
-        .chain(points[first..last].iter().copied())
-        .chain(std::iter::once(xr));
-    xs.clone().zip(xs.skip(1))
-}
-
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
 /// slice between two cuts, so there may be more than n.
 fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
@@ -374,128 +362,16 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
     sides
 }
 
-/// The slices between the sides `xs` over the bases through `bs`: the lines are read once at
-/// each side (and at the top points inside a slice, where one bends).
-fn slice_all(
-    section: &Section,
-    xs: &[f64],
-    bs: &[f64],
-    points: &[f64],
-    tolerance: f64,
-) -> Vec<BaseSlice> {
-    let tan_phi: Vec<f64> = section
-        .layers
-        .iter()
-        .map(|l| l.soil.friction_angle_rad.tan())
-        .collect();
-    let mut scratch = Scratch::default();
-    let (mut left, mut right) = (Levels::default(), Levels::default());
-    left.read(section, xs[0]);
-    let mut slices = Vec::with_capacity(xs.len().saturating_sub(1));
-    for i in 0..xs.len().saturating_sub(1) {
-        right.read(section, xs[i + 1]);
-        slices.push(slice(
-            section,
-            (xs[i], xs[i + 1]),
-            (bs[i], bs[i + 1]),
-            (&left, &right),
-            points,
-            (tolerance, &tan_phi),
-            &mut scratch,
-        ));
-        std::mem::swap(&mut left, &mut right);
-    }
-    slices
-}
-
-/// Buffers reused from slice to slice.
-#[derive(Default)]
-struct Scratch {
-    /// Levels at the ends of the current piece and half-way.
-    a: Levels,
-    b: Levels,
-    middle: Levels,
-}
-
-/// The slice between x_l and x_r with its base from (x_l, b_l) to (x_r, b_r), the levels at
-/// its sides read.
-fn slice(
-    section: &Section,
-    (xl, xr): (f64, f64),
-    (bl, br): (f64, f64),
-    (left, right): (&Levels, &Levels),
-    points: &[f64],
-    (tolerance, tan_phi): (f64, &[f64]),
-    scratch: &mut Scratch,
-) -> BaseSlice {
-    let width = xr - xl;
-    let xm = 0.5 * (xl + xr);
-    let bm = 0.5 * (bl + br);
-    let chord = |x: f64| bl + (br - bl) * (x - xl) / width;
-    // Between the top points every line is straight: Simpson's rule is exact for the linear
-    // thickness and the quadratic ∫y of each piece.
-    let first = points.partition_point(|&p| p <= xl);
-    let last = points.partition_point(|&p| p < xr);
-    let inner = &points[first..last.max(first)];
-    let (mut weight, mut moment) = (0.0, 0.0);
-    let Scratch { a, b, middle } = scratch;
-    let mut xa = xl;
-    a.clone_from(left);
-    for (k, &xb) in inner.iter().chain(std::iter::once(&xr)).enumerate() {
-        if k == inner.len() {
-            b.clone_from(right);
-        } else {
-            b.read(section, xb);
-        }
-        middle.midway(a.values(), b.values());
-        let ca = column(section, a.values(), chord(xa));
-        let cm = column(section, middle.values(), chord(0.5 * (xa + xb)));
-        let cb = column(section, b.values(), chord(xb));
-        weight += (xb - xa) / 6.0 * (ca.0 + 4.0 * cm.0 + cb.0);
-        moment += (xb - xa) / 6.0 * (ca.1 + 4.0 * cm.1 + cb.1);
-        xa = xb;
-        std::mem::swap(a, b);
-    }
-    // The levels over the base middle: with no bend inside, the single piece's half-way levels
-    // the loop left in `middle`; else read there.
-    if !inner.is_empty() {
-        middle.read(section, xm);
-    }
-    let levels = middle.values();
-    let layer = soil_at(section, levels, bm + tolerance);
-    let rise = br - bl;
-    let base_length = (width * width + rise * rise).sqrt();
-    let soil = &section.layers[layer].soil;
-    BaseSlice {
-        x_left: xl,
-        x_right: xr,
-        base_left_y: bl,
-        base_right_y: br,
-        top_right_y: ground(right.values()),
-        base_sin_cos: (rise / base_length, width / base_length),
-        base_length,
-        base_middle: (xm, bm),
-        height_middle: ground(levels) - bm,
-        weight,
-        centroid_y: if weight > 0.0 { moment / weight } else { bm },
-        cohesion: soil.cohesion,
-        tan_phi: tan_phi[layer],
-        pore_pressure: pore_pressure(section, levels, layer, bm),
-        layer,
-        side_water: side_water(section, right.values(), br),
-    }
-}
-
-/// The known forces on the slices: ponded water, surcharges, line loads and the water in the
-/// crack, one load per slice that carries any (moments about the base middle).
+/// The known forces on the slices: ponded water (as sliced), surcharges, line loads and the
+/// water in the crack, one load per slice that carries any (moments about the base middle).
 fn loads(
     section: &Section,
     slices: &[BaseSlice],
-    points: &[f64],
+    ponded: Vec<(f64, f64, f64)>,
     crack: Option<(f64, f64, f64)>,
 ) -> Vec<ExternalLoad> {
     let ground = &section.ground;
-    let mut totals = vec![(0.0, 0.0, 0.0); slices.len()];
+    let mut totals = ponded;
     // A force (fx, fy) at (x, y) on slice i.
     let mut add = |i: usize, (x, y): (f64, f64), (fx, fy): (f64, f64), s: &BaseSlice| {
         let (xb, yb) = s.base_middle;
@@ -506,20 +382,6 @@ fn loads(
     };
     for (i, s) in slices.iter().enumerate() {
         let (xl, xr) = (s.x_left, s.x_right);
-        let wet = section.piezometric_line.as_ref();
-        if let Some(line) = wet.filter(|_| section.is_ponded_over(xl, xr)) {
-            // Ponded water: pressure γ_w·d normal to the ground, d linear on each piece.
-            for (a, b) in pieces(points, xl, xr) {
-                let (ga, gb) = (ground.y_at(a), ground.y_at(b));
-                let (da, db) = ((line.y_at(a) - ga).max(0.0), (line.y_at(b) - gb).max(0.0));
-                if da + db > 0.0 {
-                    let p = section.water_unit_weight * (b - a) * 0.5 * (da + db);
-                    let x = a + (b - a) * (da + 2.0 * db) / (3.0 * (da + db));
-                    let slope = (gb - ga) / (b - a);
-                    add(i, (x, ground.y_at(x)), (slope * p, -p), s);
-                }
-            }
-        }
         for sc in &section.surcharges {
             let (a, b) = (xl.max(sc.x_start), xr.min(sc.x_end));
             if b <= a {

@@ -16,6 +16,7 @@ mod method_tests;
 pub mod noncircular;
 pub mod polyline;
 pub mod search;
+mod slicing;
 #[cfg(test)]
 mod tests;
 
