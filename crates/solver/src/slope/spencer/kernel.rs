@@ -3,9 +3,11 @@
 //!
 //! The per-slice work is six divisions; done one slice after the other it is bound by the
 //! divider. Stored column-wise in blocks of [`LANES`], the compiler computes a block's slices
-//! side by side in vector registers. IEEE arithmetic is exact per lane and the sums still add
-//! the slices one after the other in their order, so the residuals are bit for bit those of
-//! the slice-by-slice loop.
+//! side by side in vector registers — compiled twice, for the baseline and for the machine's
+//! widest vectors (AVX2 where there is one, chosen at run time by `pulp`). IEEE arithmetic is
+//! exact per lane (and never contracted into fused multiply-adds), and the sums still add the
+//! slices one after the other in their order, so the residuals are bit for bit those of the
+//! slice-by-slice loop on any machine.
 
 /// Slices per block.
 const LANES: usize = 4;
@@ -69,10 +71,12 @@ pub(super) struct Sums {
 }
 
 /// Every slice's constants in blocks.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub(super) struct Kernel {
     blocks: Vec<Block>,
     slices: usize,
+    /// The machine's vector instructions.
+    arch: pulp::Arch,
 }
 
 impl Kernel {
@@ -96,12 +100,39 @@ impl Kernel {
             b.arm_x[k] = lane.arm.0;
             b.arm_y[k] = lane.arm.1;
         }
-        Self { blocks, slices }
+        Self {
+            blocks,
+            slices,
+            arch: pulp::Arch::new(),
+        }
     }
 
     /// Σ Q, `moment_start` + Σ Q·arm, their derivatives in (F, θ) and the least m_α, at F
     /// and θ given by `(sin θ, cos θ)`: the slices added in order.
-    pub fn sums(&self, f: f64, (sin_t, cos_t): (f64, f64), moment_start: f64) -> Sums {
+    pub fn sums(&self, f: f64, trig: (f64, f64), moment_start: f64) -> Sums {
+        self.arch.dispatch(Both(At {
+            kernel: self,
+            f,
+            trig,
+            moment_start: Some(moment_start),
+        }))
+    }
+
+    /// One equation of [`Kernel::sums`], bit for bit: Σ Q (`moment_start` `None`) or
+    /// `moment_start` + Σ Q·arm, its derivative in F and the least m_α, without the work of
+    /// the other equation and of the derivatives in θ.
+    pub fn one(&self, f: f64, trig: (f64, f64), moment_start: Option<f64>) -> [f64; 3] {
+        self.arch.dispatch(One(At {
+            kernel: self,
+            f,
+            trig,
+            moment_start,
+        }))
+    }
+
+    /// [`Kernel::sums`], compiled into each caller (the dispatch's vector variants).
+    #[inline(always)]
+    fn sums_here(&self, f: f64, (sin_t, cos_t): (f64, f64), moment_start: f64) -> Sums {
         let mut s = Sums {
             force: 0.0,
             moment: moment_start,
@@ -144,10 +175,9 @@ impl Kernel {
         s
     }
 
-    /// One equation of [`Kernel::sums`], bit for bit: Σ Q (`moment_start` `None`) or
-    /// `moment_start` + Σ Q·arm, its derivative in F and the least m_α, without the work of
-    /// the other equation and of the derivatives in θ.
-    pub fn one(&self, f: f64, (sin_t, cos_t): (f64, f64), moment_start: Option<f64>) -> [f64; 3] {
+    /// [`Kernel::one`], compiled into each caller.
+    #[inline(always)]
+    fn one_here(&self, f: f64, (sin_t, cos_t): (f64, f64), moment_start: Option<f64>) -> [f64; 3] {
         let (mut value, mut slope) = (moment_start.unwrap_or(0.0), 0.0);
         let mut min_m_alpha = f64::INFINITY;
         for (i, b) in self.blocks.iter().enumerate() {
@@ -179,6 +209,51 @@ impl Kernel {
             }
         }
         [value, slope, min_m_alpha]
+    }
+}
+
+/// The kernel at (F, θ), for [`pulp::Arch::dispatch`], which compiles what it is given once
+/// per instruction set (every step inlined into each, so that each is vectorised for its own).
+struct At<'a> {
+    kernel: &'a Kernel,
+    f: f64,
+    trig: (f64, f64),
+    moment_start: Option<f64>,
+}
+
+/// [`Kernel::sums`] at a point.
+struct Both<'a>(At<'a>);
+
+/// [`Kernel::one`] at a point.
+struct One<'a>(At<'a>);
+
+impl pulp::WithSimd for Both<'_> {
+    type Output = Sums;
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> Sums {
+        let At {
+            kernel,
+            f,
+            trig,
+            moment_start,
+        } = self.0;
+        kernel.sums_here(f, trig, moment_start.unwrap_or(0.0))
+    }
+}
+
+impl pulp::WithSimd for One<'_> {
+    type Output = [f64; 3];
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> [f64; 3] {
+        let At {
+            kernel,
+            f,
+            trig,
+            moment_start,
+        } = self.0;
+        kernel.one_here(f, trig, moment_start)
     }
 }
 
