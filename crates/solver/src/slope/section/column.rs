@@ -64,12 +64,11 @@ impl Levels {
         let table = &section.levels;
         let j = table.starts.partition_point(|&s| s <= x);
         let dx = x - table.starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
-        self.0.clear();
-        self.0.extend(
-            table.rows[j * table.lines..(j + 1) * table.lines]
-                .iter()
-                .map(|&(y, slope)| y + slope * dx),
-        );
+        let rows = &table.rows[j * table.lines..(j + 1) * table.lines];
+        self.0.resize(rows.len(), 0.0);
+        for (level, &(y, slope)) in self.0.iter_mut().zip(rows) {
+            *level = y + slope * dx;
+        }
     }
 
     /// The levels half-way between `a` and `b` on a stretch where every line is straight.

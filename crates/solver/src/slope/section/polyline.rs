@@ -107,26 +107,33 @@ impl Polyline {
 
     /// The straight pieces over [x_min, x_max] as (x0, x1, slope, intercept), the horizontal
     /// continuations included.
-    pub fn pieces(&self, x_min: f64, x_max: f64) -> Vec<(f64, f64, f64, f64)> {
-        let mut cuts: Vec<f64> = std::iter::once(x_min)
-            .chain(self.xs().filter(|&x| x > x_min && x < x_max))
-            .chain(std::iter::once(x_max))
-            .collect();
-        cuts.dedup();
-        cuts.windows(2)
-            .map(|w| {
-                let (x0, x1) = (w[0], w[1]);
+    pub fn pieces(
+        &self,
+        x_min: f64,
+        x_max: f64,
+    ) -> impl Iterator<Item = (f64, f64, f64, f64)> + '_ {
+        // The vertices strictly inside, sorted: no two cuts coincide unless x_min = x_max.
+        let cuts = std::iter::once(x_min)
+            .chain(
+                self.points
+                    .iter()
+                    .map(|p| p.0)
+                    .filter(move |&x| x > x_min && x < x_max),
+            )
+            .chain(std::iter::once(x_max));
+        cuts.clone()
+            .zip(cuts.skip(1))
+            .filter(|(x0, x1)| x1 > x0)
+            .map(|(x0, x1)| {
                 let (y0, y1) = (self.y_at(x0), self.y_at(x1));
                 let m = (y1 - y0) / (x1 - x0);
                 (x0, x1, m, y0 - m * x0)
             })
-            .collect()
     }
 
     /// The least distance from `point` to the line over [x_min, x_max].
     pub fn distance_to(&self, point: (f64, f64), x_min: f64, x_max: f64) -> f64 {
         self.pieces(x_min, x_max)
-            .into_iter()
             .map(|(x0, x1, m, k)| {
                 let (a, b) = ((x0, m * x0 + k), (x1, m * x1 + k));
                 let (dx, dy) = (b.0 - a.0, b.1 - a.1);
