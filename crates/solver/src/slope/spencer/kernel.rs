@@ -60,6 +60,27 @@ struct Block {
     arm_y: [f64; LANES],
 }
 
+impl Block {
+    /// [`resultant`] of lane k.
+    #[inline(always)]
+    fn resultant(&self, k: usize, f: f64, trig: (f64, f64)) -> [f64; 4] {
+        resultant(
+            (self.sin_alpha[k], self.cos_alpha[k]),
+            self.a_t[k],
+            self.resistance[k],
+            self.tan_phi[k],
+            f,
+            trig,
+        )
+    }
+
+    /// Lane k's moment arm for inter-slice forces at θ: (x_b − x_c)·sin θ − (y_b − y_c)·cos θ.
+    #[inline(always)]
+    fn arm(&self, k: usize, (sin_t, cos_t): (f64, f64)) -> f64 {
+        self.arm_x[k] * sin_t - self.arm_y[k] * cos_t
+    }
+}
+
 /// The slice sums of the two residuals and their derivatives, unscaled.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Sums {
@@ -149,15 +170,8 @@ impl Kernel {
             let mut arm = [0.0; LANES];
             let mut d_arm = [0.0; LANES];
             for k in 0..LANES {
-                [q[k], dq_df[k], dq_dt[k], m_alpha[k]] = resultant(
-                    (b.sin_alpha[k], b.cos_alpha[k]),
-                    b.a_t[k],
-                    b.resistance[k],
-                    b.tan_phi[k],
-                    f,
-                    (sin_t, cos_t),
-                );
-                arm[k] = b.arm_x[k] * sin_t - b.arm_y[k] * cos_t;
+                [q[k], dq_df[k], dq_dt[k], m_alpha[k]] = b.resultant(k, f, (sin_t, cos_t));
+                arm[k] = b.arm(k, (sin_t, cos_t));
                 d_arm[k] = b.arm_x[k] * cos_t + b.arm_y[k] * sin_t;
             }
             // One after the other: the sums.
@@ -186,15 +200,8 @@ impl Kernel {
             let mut m_alpha = [0.0; LANES];
             let mut arm = [0.0; LANES];
             for k in 0..LANES {
-                [q[k], dq_df[k], _, m_alpha[k]] = resultant(
-                    (b.sin_alpha[k], b.cos_alpha[k]),
-                    b.a_t[k],
-                    b.resistance[k],
-                    b.tan_phi[k],
-                    f,
-                    (sin_t, cos_t),
-                );
-                arm[k] = b.arm_x[k] * sin_t - b.arm_y[k] * cos_t;
+                [q[k], dq_df[k], _, m_alpha[k]] = b.resultant(k, f, (sin_t, cos_t));
+                arm[k] = b.arm(k, (sin_t, cos_t));
             }
             let used = LANES.min(self.slices - i * LANES);
             for k in 0..used {
