@@ -8,9 +8,15 @@
 use super::polyline::Polyline;
 use super::Section;
 
+/// Entries a [`LevelTable`] may hold (16 bytes each: 4 MiB). Sections of realistic size need a
+/// few thousand; one of 50 zigzag layers crossing a zigzag ground would need a hundred
+/// megabytes, and is read line by line instead.
+const MAX_TABLE_ENTRIES: usize = 1 << 18;
+
 /// The section's lines (layer tops, the ground for a layer without one, then the water line)
 /// stretch by stretch between the bends, where each is straight: reading the levels at x is one
-/// search for the stretch and a line per level.
+/// search for the stretch and a line per level. Empty (each line searched on its own) when it
+/// would exceed [`MAX_TABLE_ENTRIES`].
 #[derive(Debug, Clone, Default, PartialEq)]
 pub(super) struct LevelTable {
     /// Where each stretch starts: the bends (the first stretch, before them, starts at the first).
@@ -31,6 +37,9 @@ impl LevelTable {
             .map(|l| Some(l.top.as_ref().unwrap_or(&section.ground)))
             .chain(std::iter::once(section.piezometric_line.as_ref()))
             .collect();
+        if (bends.len() + 1).saturating_mul(lines.len()) > MAX_TABLE_ENTRIES {
+            return Self::default();
+        }
         let y = |line: Option<&Polyline>, x: f64| line.map_or(f64::NAN, |l| l.y_at(x));
         let mut rows = Vec::with_capacity((bends.len() + 1) * lines.len());
         for j in 0..=bends.len() {
@@ -51,6 +60,11 @@ impl LevelTable {
             lines: lines.len(),
         }
     }
+
+    /// Whether there is no table (the lines are read one by one).
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
 }
 
 /// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
@@ -62,6 +76,10 @@ impl Levels {
     /// Reads the section's lines at x.
     pub fn read(&mut self, section: &Section, x: f64) {
         let table = &section.levels;
+        if table.is_empty() {
+            self.read_lines(section, x);
+            return;
+        }
         let j = table.starts.partition_point(|&s| s <= x);
         let dx = x - table.starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
         let rows = &table.rows[j * table.lines..(j + 1) * table.lines];
@@ -69,6 +87,24 @@ impl Levels {
         for (level, &(y, slope)) in self.0.iter_mut().zip(rows) {
             *level = y + slope * dx;
         }
+    }
+
+    /// Reads each line at x on its own (sections too large for a [`LevelTable`]).
+    fn read_lines(&mut self, section: &Section, x: f64) {
+        self.0.clear();
+        let g = section.ground.y_at(x);
+        self.0.extend(
+            section
+                .layers
+                .iter()
+                .map(|l| l.top.as_ref().map_or(g, |t| t.y_at(x))),
+        );
+        self.0.push(
+            section
+                .piezometric_line
+                .as_ref()
+                .map_or(f64::NAN, |l| l.y_at(x)),
+        );
     }
 
     /// The levels half-way between `a` and `b` on a stretch where every line is straight.

@@ -12,6 +12,8 @@ mod column;
 mod cut;
 mod ends;
 #[cfg(test)]
+mod level_tests;
+#[cfg(test)]
 mod method_tests;
 pub mod noncircular;
 pub mod polyline;
