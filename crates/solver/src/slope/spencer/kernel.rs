@@ -16,7 +16,6 @@ const LANES: usize = 4;
 /// callers check it). `(sin_t, cos_t)` of θ; sin(α−θ) and cos(α−θ) from the stored sin α,
 /// cos α, so that no trigonometry is needed per evaluation.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub(super) fn resultant(
     (sin_alpha, cos_alpha): (f64, f64),
     a_t: f64,
