@@ -21,7 +21,9 @@ impl Random {
     }
 }
 
-/// Solves the n × n system by Gaussian elimination (None when singular).
+/// Solves the n × n system by Gaussian elimination (None when singular); written with indices,
+/// as the textbook writes it (row r is updated from row col of the same matrix).
+#[allow(clippy::needless_range_loop)]
 fn solve_square(mut m: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Option<Vec<f64>> {
     let n = rhs.len();
     for col in 0..n {
