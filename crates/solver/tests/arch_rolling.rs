@@ -1,5 +1,6 @@
-//! A load rolled across an arch (SPEC §5.3): the parallel sweep answers each stop as a solve
-//! of that stop alone does, and says when its time ran out.
+//! A load rolled across an arch (SPEC §5.3): the sweep answers each stop as a solve of that stop
+//! alone does (the warm simplex method's λ against the interior-point solves), its critical stop
+//! with the state a solve of that stop gives, and says when its time ran out.
 
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
@@ -76,7 +77,97 @@ fn every_stop_is_answered_as_its_own_solve_answers_it() {
             solved >= 4,
             "passive {passive}: {solved} stops with a factor"
         );
+        // Every stop after the first was swept by the warm simplex method.
+        assert_eq!(sweep.simplex_stops, 4, "passive {passive}");
     }
+}
+
+#[test]
+fn a_fine_sweep_with_passive_restraint_is_warm_and_agrees_stop_by_stop() {
+    // A unit load on every voussoir of a semicircle of 40, in turn; the left half restrained.
+    let arch = semicircle(40, 10.0, 1.2).assembly();
+    let p = problem(&arch, true);
+    let settings = LimitSettings::default();
+    let loads: Vec<Vec<LiveLoad>> = (0..40).map(|b| stop(&arch, Some(b))).collect();
+    let sweep = sweep_live_loads(&p, &settings, &loads).unwrap();
+    assert_eq!(sweep.simplex_stops, 39);
+    // Warm starts show: a few pivots a stop (the first, cold, takes tens).
+    let per_stop = sweep.pivots as f64 / 39.0;
+    assert!(per_stop < 12.0, "{per_stop} pivots a stop");
+    let mut least = (f64::INFINITY, 0);
+    let mut compared = 0;
+    for (b, swept) in sweep.stops.iter().enumerate() {
+        let swept = swept.as_ref().unwrap();
+        let alone = solve_live_load(
+            &p.clone().with_live_loads(stop(&arch, Some(b))).unwrap(),
+            &settings,
+        )
+        .unwrap();
+        assert_eq!(swept.status, alone.status, "block {b}");
+        let (Some(a), Some(s)) = (alone.load_factor, swept.load_factor) else {
+            // No collapse under a load next to a springing: both say so (the status).
+            continue;
+        };
+        // Two methods (a vertex of the chain's programme, an interior point of the general
+        // formulation's) to the interior-point tolerance.
+        assert!((a - s).abs() <= 1e-8 * a, "block {b}: {a} vs {s}");
+        compared += 1;
+        if s < least.0 {
+            least = (s, b);
+        }
+    }
+    assert!(compared >= 30, "{compared} stops collapse");
+    // The critical stop carries its state: the interior-point solve of that stop alone.
+    let critical = sweep.stops[least.1].as_ref().unwrap();
+    let alone = solve_live_load(
+        &p.clone()
+            .with_live_loads(stop(&arch, Some(least.1)))
+            .unwrap(),
+        &settings,
+    )
+    .unwrap();
+    assert_eq!(critical.load_factor, alone.load_factor);
+    assert_eq!(critical.resultants.len(), arch.interfaces.len());
+    assert!(critical.mechanism.is_some());
+}
+
+#[test]
+fn a_warm_start_reaches_the_vertex_a_cold_start_does() {
+    let arch = semicircle(30, 10.0, 1.5).assembly();
+    let p = problem(&arch, true);
+    let mut warm = WarmLiveLoad::new(&p).unwrap();
+    let mut cold = WarmLiveLoad::new(&p).unwrap();
+    for b in 3..27 {
+        let w = warm.solve(&stop(&arch, Some(b))).unwrap();
+        cold.forget();
+        let c = cold.solve(&stop(&arch, Some(b))).unwrap();
+        assert_eq!(w.warm, b > 3, "block {b}");
+        assert!(!c.warm);
+        // One optimum, reached along other paths (to the simplex tolerances, 1e-11 on rows).
+        match (w.load_factor, c.load_factor) {
+            (Some(w), Some(c)) => assert!((w - c).abs() <= 1e-10 * c, "block {b}: {w} vs {c}"),
+            (w, c) => assert_eq!(w, c, "block {b}"),
+        }
+    }
+}
+
+#[test]
+fn crushing_and_assemblies_are_swept_on_the_interior_point_method() {
+    let arch = semicircle(20, 10.0, 1.5).assembly();
+    let crushing = Crushing {
+        strength: 200.0,
+        planes: 4,
+        cuts: Vec::new(),
+    };
+    let p = problem(&arch, true).with_crushing(crushing).unwrap();
+    assert!(WarmLiveLoad::new(&p).is_none());
+    let loads: Vec<Vec<LiveLoad>> = (4..8).map(|b| stop(&arch, Some(b))).collect();
+    let sweep = sweep_live_loads(&p, &LimitSettings::default(), &loads).unwrap();
+    assert_eq!(sweep.simplex_stops, 0);
+    assert!(sweep
+        .stops
+        .iter()
+        .all(|s| s.as_ref().unwrap().load_factor.is_some()));
 }
 
 #[test]

@@ -54,6 +54,10 @@ pub(crate) struct ChainStatics {
     centroids: Vec<(f64, f64)>,
     /// Largest component of the scaled live wrenches (0 without live loads).
     pub live_scale: f64,
+    /// The origin o of the moments.
+    origin: (f64, f64),
+    /// The length scale L.
+    length_scale: f64,
 }
 
 /// The resultant of one interface as an affine function of the redundants and load factors.
@@ -150,7 +154,18 @@ impl ChainStatics {
             live,
             centroids,
             live_scale,
+            origin,
+            length_scale,
         }
+    }
+
+    /// The scaled wrench (F_x, F_y, M_o) of a force `force` (in units of W) acting at `point`.
+    pub fn wrench(&self, point: (f64, f64), force: (f64, f64)) -> [f64; 3] {
+        let arm = (
+            (point.0 - self.origin.0) / self.length_scale,
+            (point.1 - self.origin.1) / self.length_scale,
+        );
+        [force.0, force.1, cross(arm, force)]
     }
 
     /// Number of interfaces.

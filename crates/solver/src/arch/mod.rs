@@ -39,7 +39,7 @@ pub use geometry::{Assembly, Block, CircularArch, Interface, InterfaceKind, Vous
 pub use limit::{
     non_associative, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
     solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,
-    InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
+    InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, WarmLiveLoad, WarmStop,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{

@@ -7,6 +7,14 @@
 //! the cutting planes differing from stop to stop). Given that margin the stops are
 //! independent programmes and are solved in parallel on the machine's cores; each answer is
 //! the one a sequential sweep gives (the same programmes on the same data).
+//!
+//! A chain with passive restraint (whose interior-point programmes are the general
+//! formulation's, milliseconds each) is swept instead by the simplex method warm from stop to
+//! stop ([`WarmLiveLoad`]): the optimal basis of one stop starts the next, a few pivots away.
+//! Its λ are exact vertices; the stops within 1e-6 of the least λ — the ones that can be
+//! critical — are then solved again on the interior-point method, so that the critical stop,
+//! its λ and its state are the ones a solve of that stop alone gives. A stop the simplex
+//! method cannot certify is solved on the interior-point method too.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
@@ -16,15 +24,21 @@ use rayon::prelude::*;
 use super::equilibrium::LiveLoad;
 use super::error::ArchError;
 use super::limit::{
-    solve_live_load, solve_live_load_after, ArchProblem, LimitSettings, LimitSolution,
+    solve_live_load, solve_live_load_after, ArchProblem, LimitSettings, LimitSolution, LimitStatus,
+    WarmLiveLoad,
 };
 
 /// The solutions of a sweep, stop by stop.
 #[derive(Debug, Clone)]
 pub struct Sweep {
     /// Each stop's solution; `None` where the stop has no live load, or where the time ran out
-    /// before it was solved.
+    /// before it was solved. A stop answered by the warm simplex method carries its status, λ
+    /// and dead-load margin only (no state: that of the critical stop is always given).
     pub stops: Vec<Option<LimitSolution>>,
+    /// Stops answered by the warm simplex method, and their pivots in all.
+    pub simplex_stops: usize,
+    /// Pivots of the simplex method over the sweep.
+    pub pivots: usize,
     /// Wall time of the first loaded stop (the dead-load check included), in seconds.
     pub first_stop_secs: f64,
     /// Whether the time limit ran out before every stop was solved.
@@ -45,6 +59,8 @@ pub fn sweep_live_loads(
             stops,
             first_stop_secs: 0.0,
             out_of_time: false,
+            simplex_stops: 0,
+            pivots: 0,
         });
     };
     let at = |i: usize| problem.clone().with_live_loads(loads[i].clone());
@@ -55,6 +71,21 @@ pub fn sweep_live_loads(
         _ => None,
     };
     stops[first] = Some(solution);
+    let warm = known_margin.and_then(|margin| WarmLiveLoad::new(problem).map(|w| (w, margin)));
+    if let Some((warm, margin)) = warm {
+        return sweep_warm(
+            problem,
+            settings,
+            loads,
+            (first, stops),
+            (warm, margin),
+            start,
+        )
+        .map(|mut s| {
+            s.first_stop_secs = first_stop_secs;
+            s
+        });
+    }
     let out_of_time = AtomicBool::new(false);
     let rest: Vec<(usize, Option<LimitSolution>)> = (first + 1..loads.len())
         .into_par_iter()
@@ -81,5 +112,88 @@ pub fn sweep_live_loads(
         stops,
         first_stop_secs,
         out_of_time: out_of_time.into_inner(),
+        simplex_stops: 0,
+        pivots: 0,
+    })
+}
+
+/// The stops after `first` by the warm simplex method, one after the other; then the stops
+/// that can be critical (and any the method could not certify) on the interior-point method.
+fn sweep_warm(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    loads: &[Vec<LiveLoad>],
+    (first, mut stops): (usize, Vec<Option<LimitSolution>>),
+    (mut warm, margin): (WarmLiveLoad, f64),
+    start: Instant,
+) -> Result<Sweep, ArchError> {
+    let (mut simplex_stops, mut pivots, mut out_of_time) = (0, 0, false);
+    let mut again: Vec<usize> = Vec::new();
+    for i in first + 1..loads.len() {
+        if loads[i].is_empty() {
+            continue;
+        }
+        if start.elapsed().as_secs_f64() > settings.time_limit_secs {
+            out_of_time = true;
+            break;
+        }
+        let begun = Instant::now();
+        match warm.solve(&loads[i]) {
+            Ok(stop) => {
+                simplex_stops += 1;
+                pivots += stop.pivots;
+                stops[i] = Some(LimitSolution {
+                    status: match stop.load_factor {
+                        Some(_) => LimitStatus::Solved,
+                        None => LimitStatus::Unbounded,
+                    },
+                    load_factor: stop.load_factor,
+                    dead_load_carried: Some(true),
+                    dead_load_margin: Some(margin),
+                    resultants: Vec::new(),
+                    mechanism: None,
+                    iterations: 0,
+                    programmes: 0,
+                    passive: Vec::new(),
+                    solve_time_secs: begun.elapsed().as_secs_f64(),
+                });
+            }
+            Err(_) => {
+                warm.forget();
+                again.push(i);
+            }
+        }
+    }
+    // The stops that can be critical: within 1e-6 of the least λ found by the simplex method
+    // (the interior-point λ agree with it to the solver's tolerance, far below that).
+    let least = (first + 1..loads.len())
+        .filter_map(|i| stops[i].as_ref().and_then(|s| s.load_factor))
+        .fold(f64::INFINITY, f64::min);
+    again.extend((first + 1..loads.len()).filter(|&i| {
+        stops[i]
+            .as_ref()
+            .and_then(|s| s.load_factor)
+            .is_some_and(|f| f <= least + 1e-6 * least.abs())
+    }));
+    if out_of_time {
+        // Unfinished: the answer is the first stop's (see the service), nothing to confirm.
+        again.clear();
+    }
+    let resolved: Vec<(usize, LimitSolution)> = again
+        .into_par_iter()
+        .map(|i| {
+            let at = problem.clone().with_live_loads(loads[i].clone())?;
+            Ok((i, solve_live_load_after(&at, settings, margin)?))
+        })
+        .collect::<Result<_, ArchError>>()?;
+    for (i, solution) in resolved {
+        stops[i] = Some(solution);
+    }
+    Ok(Sweep {
+        stops,
+        first_stop_secs: 0.0,
+        out_of_time,
+        simplex_stops,
+        pivots,
     })
 }

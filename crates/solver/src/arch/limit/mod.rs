@@ -46,10 +46,12 @@ use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 
 mod crushing;
 pub mod non_associative;
+mod warm;
 
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
+pub use warm::{WarmLiveLoad, WarmStop};
 
 /// The dead-load margin at full dead load, for the minimum-thickness search.
 pub(crate) struct FullDeadLoadMargin {
