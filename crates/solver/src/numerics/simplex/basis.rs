@@ -142,7 +142,7 @@ impl Basis {
     }
 
     /// Follows a change of the programme's moving column (`change`: every row's normalised
-    /// entry, new minus old; [`Lp::set_column`]): B' = B + u e_jᵀ with u the change on the basis
+    /// entry, new minus old; [`super::set_column`]): B' = B + u e_jᵀ with u the change on the basis
     /// rows, B'⁻¹ = B⁻¹ − g (e_jᵀB⁻¹)/(1 + g_j), g = B⁻¹u; refactored instead when that
     /// denominator nearly vanishes (an error if B' is singular).
     pub fn column_changed(&mut self, lp: &Lp, change: &[f64]) -> Result<(), SimplexFailure> {
