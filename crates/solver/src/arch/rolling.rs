@@ -189,6 +189,31 @@ fn sweep_warm(
     for (i, solution) in resolved {
         stops[i] = Some(solution);
     }
+    // Should the interior-point λ of those stops differ from the simplex's by more than 1e-6
+    // after all, the least stop (the first of equal ones) might be one without its state:
+    // solve it too, until the least has one.
+    loop {
+        if out_of_time {
+            break;
+        }
+        let least = stops
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| s.as_ref().and_then(|s| s.load_factor.map(|f| (i, f, s))))
+            .fold(
+                None,
+                |best: Option<(usize, f64, &LimitSolution)>, next| match best {
+                    Some(b) if b.1 <= next.1 => Some(b),
+                    _ => Some(next),
+                },
+            );
+        let Some((i, _, solution)) = least else { break };
+        if !solution.resultants.is_empty() {
+            break;
+        }
+        let at = problem.clone().with_live_loads(loads[i].clone())?;
+        stops[i] = Some(solve_live_load_after(&at, settings, margin)?);
+    }
     Ok(Sweep {
         stops,
         first_stop_secs: 0.0,
