@@ -35,7 +35,7 @@ pub struct Sweep {
     /// before it was solved. A stop answered by the warm simplex method carries its status, λ
     /// and dead-load margin only (no state: that of the critical stop is always given).
     pub stops: Vec<Option<LimitSolution>>,
-    /// Stops answered by the warm simplex method, and their pivots in all.
+    /// Stops answered by the warm simplex method (the rest: the interior-point method).
     pub simplex_stops: usize,
     /// Pivots of the simplex method over the sweep.
     pub pivots: usize,
