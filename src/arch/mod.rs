@@ -331,15 +331,7 @@ fn roll(
         .map(|s| s.as_ref().and_then(|s| s.load_factor))
         .collect();
     let first_position_ms = sweep.first_stop_secs * 1e3;
-    // The lowest factor; the first of equal ones.
-    let best = factors
-        .iter()
-        .enumerate()
-        .filter_map(|(i, f)| f.map(|f| (i, f)))
-        .fold(None, |best: Option<(usize, f64)>, (i, f)| match best {
-            Some((_, b)) if b <= f => best,
-            _ => Some((i, f)),
-        });
+    let best = sweep.critical();
     let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
     let mut curve = RollingOutDto {
         positions: stops.positions.clone(),

@@ -25,6 +25,14 @@ fn cross(a: (f64, f64), b: (f64, f64)) -> f64 {
     a.0 * b.1 - a.1 * b.0
 }
 
+/// A point relative to the origin of the moments, in units of L.
+fn scale_point(p: (f64, f64), origin: (f64, f64), length_scale: f64) -> (f64, f64) {
+    (
+        (p.0 - origin.0) / length_scale,
+        (p.1 - origin.1) / length_scale,
+    )
+}
+
 fn apply(m: &Matrix3, v: [f64; 3]) -> [f64; 3] {
     [
         m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
@@ -90,12 +98,7 @@ impl ChainStatics {
             .fold((0.0, 0.0), |o, c| {
                 (o.0 + c.0 / corners as f64, o.1 + c.1 / corners as f64)
             });
-        let scaled = |p: (f64, f64)| {
-            (
-                (p.0 - origin.0) / length_scale,
-                (p.1 - origin.1) / length_scale,
-            )
-        };
+        let scaled = |p| scale_point(p, origin, length_scale);
         let n = assembly.blocks.len();
         let centroids: Vec<(f64, f64)> =
             assembly.blocks.iter().map(|b| scaled(b.centroid)).collect();
@@ -161,10 +164,7 @@ impl ChainStatics {
 
     /// The scaled wrench (F_x, F_y, M_o) of a force `force` (in units of W) acting at `point`.
     pub fn wrench(&self, point: (f64, f64), force: (f64, f64)) -> [f64; 3] {
-        let arm = (
-            (point.0 - self.origin.0) / self.length_scale,
-            (point.1 - self.origin.1) / self.length_scale,
-        );
+        let arm = scale_point(point, self.origin, self.length_scale);
         [force.0, force.1, cross(arm, force)]
     }
 

@@ -8,9 +8,9 @@
 //! independent programmes and are solved in parallel on the machine's cores; each answer is
 //! the one a sequential sweep gives (the same programmes on the same data).
 //!
-//! A chain with passive restraint (whose interior-point programmes are the general
-//! formulation's, milliseconds each) is swept instead by the simplex method warm from stop to
-//! stop ([`WarmLiveLoad`]): the optimal basis of one stop starts the next, a few pivots away.
+//! A chain of blocks without crushing, with or without passive restraint (whose interior-point
+//! programmes are the general formulation's, milliseconds each), is swept instead by the
+//! simplex method warm from stop to stop ([`WarmLiveLoad`]): the optimal basis of one stop starts the next, a few pivots away.
 //! Its λ are exact vertices; the stops within 1e-6 of the least λ — the ones that can be
 //! critical — are then solved again on the interior-point method, so that the critical stop,
 //! its λ and its state are the ones a solve of that stop alone gives. A stop the simplex
@@ -43,6 +43,25 @@ pub struct Sweep {
     pub first_stop_secs: f64,
     /// Whether the time limit ran out before every stop was solved.
     pub out_of_time: bool,
+}
+
+impl Sweep {
+    /// The critical stop, the one of least λ (the first of equal ones): its index and λ.
+    pub fn critical(&self) -> Option<(usize, f64)> {
+        least_stop(&self.stops)
+    }
+}
+
+/// The stop with the least λ (the first of equal ones) and that λ.
+fn least_stop(stops: &[Option<LimitSolution>]) -> Option<(usize, f64)> {
+    stops
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| s.as_ref().and_then(|s| s.load_factor).map(|f| (i, f)))
+        .fold(None, |best, (i, f)| match best {
+            Some((_, b)) if b <= f => best,
+            _ => Some((i, f)),
+        })
 }
 
 /// Solves the live load `loads[i]` on `problem` at every stop i (an empty list: no load there,
@@ -192,23 +211,8 @@ fn sweep_warm(
     // Should the interior-point λ of those stops differ from the simplex's by more than 1e-6
     // after all, the least stop (the first of equal ones) might be one without its state:
     // solve it too, until the least has one.
-    loop {
-        if out_of_time {
-            break;
-        }
-        let least = stops
-            .iter()
-            .enumerate()
-            .filter_map(|(i, s)| s.as_ref().and_then(|s| s.load_factor.map(|f| (i, f, s))))
-            .fold(
-                None,
-                |best: Option<(usize, f64, &LimitSolution)>, next| match best {
-                    Some(b) if b.1 <= next.1 => Some(b),
-                    _ => Some(next),
-                },
-            );
-        let Some((i, _, solution)) = least else { break };
-        if !solution.resultants.is_empty() {
+    while let Some((i, _)) = least_stop(&stops).filter(|_| !out_of_time) {
+        if stops[i].as_ref().is_some_and(|s| !s.resultants.is_empty()) {
             break;
         }
         let at = problem.clone().with_live_loads(loads[i].clone())?;
