@@ -159,6 +159,18 @@ async fn bad_assemblies_name_their_field() {
             "ring_interface_limits.t_min",
         );
     }
+    // So on the minimum-thickness route, which takes one ring (schemathesis sent q_min = 5e-324
+    // there, and it was answered 200).
+    let body = json!({"geometry": {"kind": "circular", "radius": 10, "voussoirs": 10},
+        "ring_interface_limits": {"q_min": 5e-324}});
+    let (status, content_type, answer) = server.post("/arch/minimum-thickness", &body).await;
+    assert_problem(
+        status,
+        &content_type,
+        &answer,
+        422,
+        "ring_interface_limits.q_min",
+    );
     // The road of a fill must clear the outer ring's crown (R + D/2 = 11 here).
     let (status, content_type, answer) = server
         .post(

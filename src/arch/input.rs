@@ -278,7 +278,7 @@ pub fn material(fields: MaterialFields) -> Result<Material, ApiError> {
 }
 
 /// `ring_interface_limits` and `ring_friction_coefficient`, validated like their one-ring twins.
-fn ring_material(fields: MaterialFields) -> Result<(InterfaceLimits, Option<f64>), ApiError> {
+pub fn ring_material(fields: MaterialFields) -> Result<(InterfaceLimits, Option<f64>), ApiError> {
     Ok((
         limits("ring_interface_limits", fields.ring_interface_limits)?,
         friction(

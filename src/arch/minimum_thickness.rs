@@ -12,7 +12,7 @@ use thrustline_solver::arch::{
 use utoipa::ToSchema;
 
 use super::geometry::CircularGeometryDto;
-use super::input::{circular_arch, material};
+use super::input::{circular_arch, material, ring_material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
@@ -156,6 +156,9 @@ pub async fn minimum_thickness(
         .transpose()?;
     let arch = circular_arch(g, 0.1 * radius)?;
     let material = material(request.material())?;
+    // One ring: the ring fields have nothing to act on, but a value out of range is still an
+    // error, as on the other routes.
+    ring_material(request.material())?;
     if request.ring_friction_coefficient.is_some() {
         return Err(ApiError::invalid(
             "ring_friction_coefficient",
