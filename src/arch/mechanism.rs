@@ -98,14 +98,17 @@ pub struct NonAssociativeOutDto {
     /// The factor the iteration settled on; null when it did not settle.
     #[schema(required = true)]
     pub load_factor: Option<f64>,
-    /// λ at each step: the associative programme's, then each programme with the shear
-    /// capacities μ·N fixed from the previous step's normal forces.
+    /// λ at each step: the associative programme's, then each programme with the friction
+    /// rows replaced by Gilbert, Casapulla & Ahmed's modified surface |t| ≤ (1 − α)·μ·Ñ +
+    /// α·μ·N (α = 0.01), Ñ the normal forces of the last two steps relaxed (β = 0.6).
     pub load_factors: Vec<Option<f64>>,
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every
-    /// joint (to 1e-7 of the weight), with the normal forces no longer moving.
+    /// joint (to 1e-7 of the weight), with the normal forces no longer moving — or, when no
+    /// step left the associative λ (to 1e-8), the associative state, which is then such a
+    /// state.
     pub settled: bool,
-    /// The corrected mechanism (Livesley §2.7): sliding joints slide without opening; null
-    /// when nothing slides.
+    /// The corrected mechanism (Livesley §2.7), the first step's: sliding joints slide and
+    /// open by only α·μ = 1 % of Coulomb's dilatancy; null when nothing slides.
     #[schema(required = true)]
     pub corrected_mechanism: Option<MechanismDto>,
 }

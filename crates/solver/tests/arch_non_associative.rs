@@ -7,7 +7,7 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::arch::non_associative::NonAssociative;
+use thrustline_solver::arch::non_associative::{NonAssociative, SLOPE};
 use thrustline_solver::arch::*;
 
 fn check_properties(problem: &ArchProblem, outcome: &NonAssociative, mu: f64) {
@@ -66,8 +66,9 @@ fn a_sliding_arch_needs_no_dilatancy_and_keeps_its_load_factor() {
     );
     assert!((x - y).abs() < 1e-7 * x, "{x} vs {y}");
     assert!(!o.associative_may_overestimate());
-    // The corrected mechanism slides without opening: at each sliding joint the two normal
-    // rates of its blocks' relative motion vanish (checked by the velocities at its ends).
+    // The corrected mechanism slides on the paper's modified surface |t| ≤ c + αμN: at each
+    // sliding joint, at both ends, its blocks' relative motion opens the joint by α·μ times
+    // the slip (the surface's normal), not by μ times it as the associative rule would.
     let m = o.corrected.as_ref().unwrap();
     for &k in &m.sliding {
         let i = p.assembly().interfaces[k];
@@ -80,8 +81,15 @@ fn a_sliding_arch_needs_no_dilatancy_and_keeps_its_load_factor() {
         };
         for end in [i.intrados, i.extrados] {
             let (up, low) = (velocity(i.upper, end), velocity(i.lower, end));
-            let normal = (up.0 - low.0) * i.normal.0 + (up.1 - low.1) * i.normal.1;
-            assert!(normal.abs() < 1e-6, "joint {k} opens at {normal}");
+            let (dx, dy) = (up.0 - low.0, up.1 - low.1);
+            let normal = dx * i.normal.0 + dy * i.normal.1;
+            let slip = (-dx * i.normal.1 + dy * i.normal.0).abs();
+            assert!(slip > 1e-3, "joint {k} slides at {slip}");
+            let opening = SLOPE * 0.4 * slip;
+            assert!(
+                (normal.abs() - opening).abs() < 1e-6,
+                "joint {k} opens at {normal}, not {opening}"
+            );
         }
     }
     check_properties(&p, &o, 0.4);
@@ -199,4 +207,86 @@ fn the_semicircle_at_its_minimum_thickness_needs_the_published_friction() {
     );
     assert!(slides.settled);
     assert!(slides.solution.load_factor.unwrap() < 1.0);
+}
+
+fn rectangle(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(f64, f64)> {
+    vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+}
+
+#[test]
+fn a_leaf_and_its_cap_overturn_once_the_cap_cannot_dilate_off_the_other_leaf() {
+    // Two leaves 2 high, 1 mm apart (they do not touch), under a 1 × 0.5 cap pushed at its
+    // top-left corner (0, 2.5), μ = 0.5, unit weight 1. By hand: the right leaf (weight 1,
+    // centroid x = 0.75) and the cap (0.5 at x = 0.5) overturn about the right toe (1, 0),
+    // the cap lifting off the left leaf: λ·2.5 = 1·0.25 + 0.5·0.5, λ = 0.2. The associative
+    // rule forbids that: where the cap leaves the left leaf it slides by 2 and rises by
+    // 1 − x < μ·2 at x > 0, less than the dilatancy normality demands — so it carries more
+    // (0.2497). Without dilatancy the mechanism is free and the iteration reaches λ = 0.2.
+    let blocks = vec![
+        rectangle(0.0, 0.0, 0.499, 2.0),
+        rectangle(0.5, 0.0, 1.0, 2.0),
+        rectangle(0.0, 2.0, 1.0, 2.5),
+    ];
+    let ground = vec![rectangle(-2.0, -1.0, 3.0, 0.0)];
+    let a = Assembly::from_polygons(&blocks, &ground).unwrap();
+    let push = vec![LiveLoad {
+        block: 2,
+        point: (0.0, 2.5),
+        fx: 1.0,
+        fy: 0.0,
+        moment: 0.0,
+    }];
+    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), push).unwrap();
+    let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
+    let assoc = o.associative.load_factor.unwrap();
+    assert!(assoc > 0.24, "{assoc}");
+    assert!(o.settled, "{:?}", o.history);
+    let na = o.solution.load_factor.unwrap();
+    assert!((na - 0.2).abs() < 1e-7, "{na}");
+    assert!(o.associative_may_overestimate());
+    check_properties(&p, &o, 0.5);
+}
+
+#[test]
+fn a_wall_panel_sliding_on_its_bed_joints_is_settled_at_mu() {
+    // Three courses of three bricks 1 × 0.5 in running bond (half bricks at the ends of the
+    // middle course), on the ground, each brick pushed sideways by its own weight times λ at
+    // its centroid, μ = 0.5. Any bed joint carries λ·W_above against μ·W_above: every course
+    // slides at λ = μ = 0.5 (overturning about the toe would need λ = B/H = 2). The sliding is
+    // horizontal: nothing to dilate, so λ = 0.5 without dilatancy too. The programmes are
+    // degenerate (all bed joints at once), the iteration never leaves λ = 0.5 and its normal
+    // forces never settle; the associative state, a fixed point, answers.
+    let mut blocks = Vec::new();
+    for course in 0..3 {
+        let y = 0.5 * f64::from(course);
+        let xs: Vec<f64> = if course % 2 == 1 {
+            vec![0.0, 0.5, 1.5, 2.5, 3.0]
+        } else {
+            vec![0.0, 1.0, 2.0, 3.0]
+        };
+        for pair in xs.windows(2) {
+            blocks.push(rectangle(pair[0], y, pair[1], y + 0.5));
+        }
+    }
+    let ground = vec![rectangle(-2.0, -1.0, 5.0, 0.0)];
+    let loads = blocks
+        .iter()
+        .enumerate()
+        .map(|(b, poly)| LiveLoad {
+            block: b,
+            point: ((poly[0].0 + poly[1].0) / 2.0, poly[0].1 + 0.25),
+            fx: (poly[1].0 - poly[0].0) * 0.5,
+            fy: 0.0,
+            moment: 0.0,
+        })
+        .collect();
+    let a = Assembly::from_polygons(&blocks, &ground).unwrap();
+    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), loads).unwrap();
+    let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
+    assert!(o.settled, "{:?}", o.history);
+    let na = o.solution.load_factor.unwrap();
+    assert!((na - 0.5).abs() < 1e-8, "{na}");
+    assert!(!o.associative_may_overestimate());
+    assert!(o.solution.mechanism.is_some());
+    check_properties(&p, &o, 0.5);
 }

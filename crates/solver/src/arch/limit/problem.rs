@@ -70,9 +70,12 @@ pub struct ArchProblem {
     pub(super) passive: Vec<PassiveForce>,
     /// Limits and friction of the ring interfaces of a multi-ring arch, when they differ.
     pub(super) ring: Option<(InterfaceLimits, Option<f64>)>,
-    /// Fixed shear capacities |t| ≤ c_k in place of the friction rows (a step of the
-    /// non-associative iteration), per interface; only where the interface has friction.
+    /// Shear capacities |t| ≤ c_k + `friction_slope`·μ_k·N in place of the friction rows (a
+    /// step of the non-associative iteration), per interface; only where it has friction.
     pub(super) shear_capacities: Option<Vec<f64>>,
+    /// With `shear_capacities`: the fraction α of the friction coefficient kept as the slope
+    /// of the modified surface |t| ≤ c_k + α·μ_k·N.
+    pub(super) friction_slope: f64,
 }
 
 /// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
@@ -175,6 +178,7 @@ impl ArchProblem {
             passive: Vec::new(),
             ring: None,
             shear_capacities: None,
+            friction_slope: 0.0,
         })
     }
 
@@ -260,17 +264,19 @@ impl ArchProblem {
     }
 
     /// The same problem with the friction rows of every interface that has friction replaced
-    /// by the fixed shear capacities |t_k| ≤ μ_k·normal[k] (non-associative sliding: purely
-    /// tangential); `normal` holds one normal force per interface (negative taken as 0).
-    pub(crate) fn with_fixed_friction(&self, normal: &[f64]) -> Self {
+    /// by the modified surface |t_k| ≤ (1 − slope)·μ_k·normal[k] + slope·μ_k·N_k (through
+    /// Coulomb's line at N_k = normal[k]; its flow dilates by slope·μ_k only, none at 0);
+    /// `normal` holds one normal force per interface (negative taken as 0).
+    pub(crate) fn with_fixed_friction(&self, normal: &[f64], slope: f64) -> Self {
         let mut fixed = self.clone();
         let capacities = (0..self.assembly.interfaces.len())
             .map(|k| {
                 let mu = self.material(k).1.unwrap_or(0.0);
-                mu * normal.get(k).copied().unwrap_or(0.0).max(0.0)
+                (1.0 - slope) * mu * normal.get(k).copied().unwrap_or(0.0).max(0.0)
             })
             .collect();
         fixed.shear_capacities = Some(capacities);
+        fixed.friction_slope = slope;
         fixed
     }
 

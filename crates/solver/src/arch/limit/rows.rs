@@ -109,14 +109,15 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
                 }
             }
         }
-        if let (Some(_), Some(capacities)) = (friction, &problem.shear_capacities) {
-            // Fixed capacities (non-associative step): t ≤ c (tagged U: sliding towards +τ)
-            // and −t ≤ c (V).
+        if let (Some(mu), Some(capacities)) = (friction, &problem.shear_capacities) {
+            // Fixed capacities (non-associative step): t ≤ c + αμ(q + s) (tagged U: sliding
+            // towards +τ) and −t ≤ c + αμ(q + s) (V).
             let c = capacities.get(k).copied().unwrap_or(0.0) / w;
+            let a = problem.friction_slope * mu;
             for (resultant, sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
                 rows.push(Row {
-                    entries: [(col + 2, sign), (col, 0.0), (col, 0.0)],
-                    len: 1,
+                    entries: [(col + 2, sign), (col, -a), (col + 1, -a)],
+                    len: if a > 0.0 { 3 } else { 1 },
                     b: c,
                     tag: LimitTag {
                         interface: k,
