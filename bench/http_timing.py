@@ -76,3 +76,9 @@ wall = {"geometry": {"kind": "assembly",
     "supports": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]},
     "friction_coefficient": 0.5, "friction": "non_associative", "loads": [{"block": 3, "x": 0, "y": 2.5, "fx": 1}]}
 bench("two leaves under a cap, non-associative (whole request: its steps)", "/arch/live-load", wall, lambda d: d["solver"]["time_ms"])
+courses = [[0, 1, 2, 3], [0, 0.5, 1.5, 2.5, 3], [0, 1, 2, 3]]
+bricks = [[[a, 0.5 * c], [b, 0.5 * c], [b, 0.5 * c + 0.5], [a, 0.5 * c + 0.5]] for c, xs in enumerate(courses) for a, b in zip(xs, xs[1:])]
+panel = {"geometry": {"kind": "assembly", "blocks": [{"polygon": p} for p in bricks], "supports": [{"polygon": [[-2, -1], [5, -1], [5, 0], [-2, 0]]}]},
+    "friction_coefficient": 0.5, "friction": "non_associative",
+    "loads": [{"block": i + 1, "x": (p[0][0] + p[1][0]) / 2, "y": p[0][1] + 0.25, "fx": (p[1][0] - p[0][0]) * 0.5} for i, p in enumerate(bricks)]}
+bench("running-bond panel 3 courses × 3 bricks, sideways λ × weight, μ = 0.5, non-associative (50 steps, then the associative state)", "/arch/live-load", panel, lambda d: d["solver"]["time_ms"])
