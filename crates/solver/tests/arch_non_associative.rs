@@ -112,21 +112,7 @@ fn two_leaves_under_a_cap_carry_less_when_their_joint_cannot_dilate() {
     // corner, μ = 0.5. The associative programme lets the joints open as they slide and
     // carries 0.25 (the cap sliding: μ·W_cap); without dilatancy the wall carries less, and
     // the answer says so.
-    let blocks = vec![
-        vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
-        vec![(0.5, 0.0), (1.0, 0.0), (1.0, 2.0), (0.5, 2.0)],
-        vec![(0.0, 2.0), (1.0, 2.0), (1.0, 2.5), (0.0, 2.5)],
-    ];
-    let ground = vec![vec![(-2.0, -1.0), (3.0, -1.0), (3.0, 0.0), (-2.0, 0.0)]];
-    let a = Assembly::from_polygons(&blocks, &ground).unwrap();
-    let push = vec![LiveLoad {
-        block: 2,
-        point: (0.0, 2.5),
-        fx: 1.0,
-        fy: 0.0,
-        moment: 0.0,
-    }];
-    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), push).unwrap();
+    let p = leaves_under_a_cap(0.5);
     let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
     let assoc = o.associative.load_factor.unwrap();
     assert!((assoc - 0.25).abs() < 1e-8, "{assoc}");
@@ -213,17 +199,11 @@ fn rectangle(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(f64, f64)> {
     vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
 }
 
-#[test]
-fn a_leaf_and_its_cap_overturn_once_the_cap_cannot_dilate_off_the_other_leaf() {
-    // Two leaves 2 high, 1 mm apart (they do not touch), under a 1 × 0.5 cap pushed at its
-    // top-left corner (0, 2.5), μ = 0.5, unit weight 1. By hand: the right leaf (weight 1,
-    // centroid x = 0.75) and the cap (0.5 at x = 0.5) overturn about the right toe (1, 0),
-    // the cap lifting off the left leaf: λ·2.5 = 1·0.25 + 0.5·0.5, λ = 0.2. The associative
-    // rule forbids that: where the cap leaves the left leaf it slides by 2 and rises by
-    // 1 − x < μ·2 at x > 0, less than the dilatancy normality demands — so it carries more
-    // (0.2497). Without dilatancy the mechanism is free and the iteration reaches λ = 0.2.
+/// A leaf `left` wide and one from 0.5 to 1, both 2 high, on the ground under a 1 × 0.5 cap
+/// pushed sideways at its top-left corner (0, 2.5); μ = 0.5, unit weight 1.
+fn leaves_under_a_cap(left: f64) -> ArchProblem {
     let blocks = vec![
-        rectangle(0.0, 0.0, 0.499, 2.0),
+        rectangle(0.0, 0.0, left, 2.0),
         rectangle(0.5, 0.0, 1.0, 2.0),
         rectangle(0.0, 2.0, 1.0, 2.5),
     ];
@@ -236,7 +216,19 @@ fn a_leaf_and_its_cap_overturn_once_the_cap_cannot_dilate_off_the_other_leaf() {
         fy: 0.0,
         moment: 0.0,
     }];
-    let p = ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), push).unwrap();
+    ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(0.5), push).unwrap()
+}
+
+#[test]
+fn a_leaf_and_its_cap_overturn_once_the_cap_cannot_dilate_off_the_other_leaf() {
+    // Two leaves 2 high, 1 mm apart (they do not touch), under a 1 × 0.5 cap pushed at its
+    // top-left corner (0, 2.5), μ = 0.5, unit weight 1. By hand: the right leaf (weight 1,
+    // centroid x = 0.75) and the cap (0.5 at x = 0.5) overturn about the right toe (1, 0),
+    // the cap lifting off the left leaf: λ·2.5 = 1·0.25 + 0.5·0.5, λ = 0.2. The associative
+    // rule forbids that: where the cap leaves the left leaf it slides by 2 and rises by
+    // 1 − x < μ·2 at x > 0, less than the dilatancy normality demands — so it carries more
+    // (0.2497). Without dilatancy the mechanism is free and the iteration reaches λ = 0.2.
+    let p = leaves_under_a_cap(0.499);
     let o = solve_live_load_non_associative(&p, &LimitSettings::default(), false).unwrap();
     let assoc = o.associative.load_factor.unwrap();
     assert!(assoc > 0.24, "{assoc}");
