@@ -112,11 +112,17 @@ pub(super) fn limit_rows(problem: &ArchProblem, force_scale: f64) -> Vec<Row> {
         if let (Some(mu), Some(capacities)) = (friction, &problem.shear_capacities) {
             // Fixed capacities (non-associative step): t ≤ c + αμ(q + s) (tagged U: sliding
             // towards +τ) and −t ≤ c + αμ(q + s) (V).
-            let c = capacities.get(k).copied().unwrap_or(0.0) / w;
+            // Divided by αμ when that exceeds 1, as the Coulomb rows are by μ.
             let a = problem.friction_slope * mu;
+            let scale = 1.0 / a.max(1.0);
+            let c = capacities.get(k).copied().unwrap_or(0.0) / w * scale;
             for (resultant, sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
                 rows.push(Row {
-                    entries: [(col + 2, sign), (col, -a), (col + 1, -a)],
+                    entries: [
+                        (col + 2, sign * scale),
+                        (col, -a * scale),
+                        (col + 1, -a * scale),
+                    ],
                     len: if a > 0.0 { 3 } else { 1 },
                     b: c,
                     tag: LimitTag {
