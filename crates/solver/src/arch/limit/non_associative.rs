@@ -72,8 +72,8 @@ pub struct NonAssociative {
     pub history: Vec<Option<f64>>,
     /// Whether it reached a state whose normal forces carry its shear.
     pub settled: bool,
-    /// The corrected mechanism (Livesley §2.7): the first step's, where sliding joints slide
-    /// without opening; `None` when nothing slid or there was no step.
+    /// The corrected mechanism (Livesley §2.7): the first step's, where sliding joints open by
+    /// only α·μ times their slip; `None` when nothing slid or there was no step.
     pub corrected: Option<Mechanism>,
     /// Interior-point iterations, programmes and wall time of the whole iteration (the
     /// associative solve included).
@@ -172,7 +172,6 @@ pub fn iterate<E>(
     let tolerance = SETTLED * weight;
     let mut used = normal_forces(&associative);
     let mut previous = used.clone();
-    let mut corrected = None;
     let mut first_mechanism = None;
     let mut last = associative.clone();
     let (mut iterations, mut programmes) = (last.iterations, last.programmes);
@@ -183,9 +182,6 @@ pub fn iterate<E>(
         history.push(step.load_factor);
         if history.len() == 2 {
             first_mechanism.clone_from(&step.mechanism);
-            if sliding {
-                corrected.clone_from(&step.mechanism);
-            }
         }
         if step.status != LimitStatus::Solved || step.resultants.is_empty() {
             last = step;
@@ -200,7 +196,7 @@ pub fn iterate<E>(
                 associative,
                 history,
                 settled: true,
-                corrected,
+                corrected: corrected(sliding, &first_mechanism),
                 totals: (iterations, programmes, start.elapsed().as_secs_f64()),
             });
         }
@@ -212,6 +208,7 @@ pub fn iterate<E>(
         previous = normal;
     }
     let totals = (iterations, programmes, start.elapsed().as_secs_f64());
+    let corrected = corrected(sliding, &first_mechanism);
     if never_left(&history) {
         // The associative state is a fixed point (module docs): it answers.
         let mut solution = associative.clone();
@@ -233,6 +230,11 @@ pub fn iterate<E>(
         corrected,
         totals,
     })
+}
+
+/// The corrected mechanism: the first step's, when the associative mechanism slid.
+fn corrected(sliding: bool, first_mechanism: &Option<Mechanism>) -> Option<Mechanism> {
+    first_mechanism.clone().filter(|_| sliding)
 }
 
 /// Whether every step solved, with the associative λ (the first entry) to [`SAME_FACTOR`].
