@@ -95,7 +95,9 @@ pub struct NonAssociativeOutDto {
     /// The associative programme's factor the iteration started from.
     #[schema(required = true)]
     pub associative_load_factor: Option<f64>,
-    /// The factor the iteration settled on; null when it did not settle.
+    /// The factor the iteration settled on; null when it did not settle, or settled below
+    /// zero live load (the dead load is then not carried without dilatancy: `solver.status`
+    /// is `dead_load_not_carried`, the negative λ the last of `load_factors`).
     #[schema(required = true)]
     pub load_factor: Option<f64>,
     /// λ at each step: the associative programme's, then each programme with the friction
@@ -105,7 +107,8 @@ pub struct NonAssociativeOutDto {
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every
     /// joint (to 1e-7 of the weight), with the normal forces no longer moving — or, when no
     /// step left the associative λ (to 1e-8), the associative state, which is then such a
-    /// state.
+    /// state. The iteration stops unsettled after 50 steps, or after 10 that did not halve its
+    /// inconsistency.
     pub settled: bool,
     /// The corrected mechanism (Livesley §2.7), the first step's: sliding joints slide and
     /// open by only α·μ = 1 % of Coulomb's dilatancy; null when nothing slides.

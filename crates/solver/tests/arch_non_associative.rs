@@ -7,7 +7,7 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::arch::non_associative::{NonAssociative, SLOPE};
+use thrustline_solver::arch::non_associative::{NonAssociative, MAX_STEPS, SLOPE};
 use thrustline_solver::arch::*;
 
 fn check_properties(problem: &ArchProblem, outcome: &NonAssociative, mu: f64) {
@@ -247,7 +247,8 @@ fn a_wall_panel_sliding_on_its_bed_joints_is_settled_at_mu() {
     // slides at λ = μ = 0.5 (overturning about the toe would need λ = B/H = 2). The sliding is
     // horizontal: nothing to dilate, so λ = 0.5 without dilatancy too. The programmes are
     // degenerate (all bed joints at once), the iteration never leaves λ = 0.5 and its normal
-    // forces never settle; the associative state, a fixed point, answers.
+    // forces never settle; once they stop approaching consistency (STALLED_STEPS steps without
+    // halving the inconsistency) the associative state, a fixed point, answers.
     let mut blocks = Vec::new();
     for course in 0..3 {
         let y = 0.5 * f64::from(course);
@@ -278,7 +279,43 @@ fn a_wall_panel_sliding_on_its_bed_joints_is_settled_at_mu() {
     assert!(o.settled, "{:?}", o.history);
     let na = o.solution.load_factor.unwrap();
     assert!((na - 0.5).abs() < 1e-8, "{na}");
+    assert!(o.history.len() < MAX_STEPS + 1, "{:?}", o.history);
     assert!(!o.associative_may_overestimate());
     assert!(o.solution.mechanism.is_some());
     check_properties(&p, &o, 0.5);
+}
+
+#[test]
+fn a_dead_push_takes_its_share_of_the_capacity_without_dilatancy() {
+    // The leaf and cap of the test above (collapse under a total push of 0.2 at (0, 2.5)
+    // without dilatancy, 0.2497 with it), now with a dead push d there as well. Carried either
+    // way when d = 0.1: λ = 0.2 − 0.1 without dilatancy. When d = 0.22 the associative
+    // programme carries it (0.22 < 0.2497) but without dilatancy the collapse state lies at
+    // λ = −0.02: the dead load alone is not carried, and the answer says so.
+    let with_dead_push = |d: f64| {
+        let p = leaves_under_a_cap(0.499);
+        let push = LiveLoad {
+            fx: d,
+            ..p.live_loads()[0]
+        };
+        p.with_dead_loads(vec![push]).unwrap()
+    };
+    let settings = LimitSettings::default();
+    let o = solve_live_load_non_associative(&with_dead_push(0.1), &settings, false).unwrap();
+    assert!(o.settled, "{:?}", o.history);
+    let na = o.solution.load_factor.unwrap();
+    assert!((na - 0.1).abs() < 1e-7, "{na}");
+    // One programme a step: the dead load was checked once, by the associative solve (its
+    // margin and live-load programmes).
+    assert_eq!(o.totals.1, 2 + (o.history.len() - 1), "{:?}", o.totals);
+    let o = solve_live_load_non_associative(&with_dead_push(0.22), &settings, false).unwrap();
+    let assoc = o.associative.load_factor.unwrap();
+    assert!((assoc - 0.0297).abs() < 1e-3, "{assoc}");
+    assert!(o.settled, "{:?}", o.history);
+    let last = o.history.last().copied().flatten().unwrap();
+    assert!((last + 0.02).abs() < 1e-7, "{last}");
+    assert_eq!(o.solution.status, LimitStatus::DeadLoadNotCarried);
+    assert_eq!(o.solution.load_factor, None);
+    assert_eq!(o.solution.dead_load_carried, Some(false));
+    assert!(o.associative_may_overestimate());
 }

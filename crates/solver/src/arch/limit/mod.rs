@@ -293,7 +293,8 @@ pub fn solve_dead_load_non_associative(
     let solve = |p: &ArchProblem, s: &LimitSettings| -> Result<LimitSolution, Infallible> {
         Ok(solve_dead_load(p, s))
     };
-    match non_associative::iterate(problem, settings, only_if_sliding, solve) {
+    let step = |p: &ArchProblem, s: &LimitSettings, _: &LimitSolution| solve(p, s);
+    match non_associative::iterate(problem, settings, only_if_sliding, solve, step) {
         Ok(outcome) => outcome,
         Err(never) => match never {},
     }
@@ -306,7 +307,23 @@ pub fn solve_live_load_non_associative(
     settings: &LimitSettings,
     only_if_sliding: bool,
 ) -> Result<non_associative::NonAssociative, ArchError> {
-    non_associative::iterate(problem, settings, only_if_sliding, solve_live_load)
+    // The dead load is checked once, by the associative solve: a step's capacities are those
+    // of a collapse state, not of the structure under its dead load alone.
+    let step = |p: &ArchProblem, s: &LimitSettings, associative: &LimitSolution| {
+        let margin = associative.dead_load_margin.unwrap_or(f64::INFINITY);
+        solve_live_load_after(p, s, margin)
+    };
+    let mut outcome =
+        non_associative::iterate(problem, settings, only_if_sliding, solve_live_load, step)?;
+    let solution = &mut outcome.solution;
+    if outcome.settled && solution.load_factor.is_some_and(|l| l < 0.0) {
+        // A collapse state below zero live load: without dilatancy the dead load alone is not
+        // carried (the steps, the negative λ among them, stay in the history).
+        solution.status = LimitStatus::DeadLoadNotCarried;
+        solution.load_factor = None;
+        solution.dead_load_carried = Some(false);
+    }
+    Ok(outcome)
 }
 
 /// [`solve_live_load`] for a structure whose dead load is known to be carried with margin

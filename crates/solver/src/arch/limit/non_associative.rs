@@ -30,12 +30,27 @@
 //! 1e-7 of the total weight) and, at every joint at its capacity, equal the Ñ it was built from
 //! (to 1e-7 W; the surface is then Coulomb's there): that state is admissible for the
 //! associative programme too, so its λ is no more than the associative one. Not settled after
-//! [`MAX_STEPS`]: say so, with one exception. Where no step's λ left the associative one
-//! (a programme so degenerate that the interior-point method does not pin its normal forces
-//! down: a wall panel sliding at λ = μ on any of its bed joints), the associative state is
+//! [`MAX_STEPS`], or after [`STALLED_STEPS`] steps that did not halve the smallest
+//! inconsistency so far (the iteration wanders or jitters): say so, with one exception. Where
+//! no step's λ left the associative one (a programme so degenerate that the interior-point
+//! method does not pin its normal forces down: a wall panel sliding at λ = μ on any of its bed
+//! joints), the associative state is
 //! itself a fixed point — it carries its shear by its own normal forces exactly, and it is
 //! optimal for the first step's programme, which was built from those normal forces, since
 //! that programme's λ is the same (to [`SAME_FACTOR`]): it answers, with that step's mechanism.
+//!
+//! A live-load step is the live-load programme alone: the dead load was checked once, by the
+//! associative solve, and a step's capacities are those of a collapse state, not of the
+//! structure under its dead load alone (checked against them, the dead load of a two-ring arch
+//! failed at the second step). A state that settles below zero live load says the dead load is
+//! not carried without dilatancy.
+//!
+//! Two-ring arches with ring friction do not settle (ring μ 0.6 and 0.8, 2 × 100 voussoirs):
+//! their programmes' optimal faces are unbounded — ring normal forces of 6e5 against a weight
+//! of 47 in the interior-point state, a self-stress the rings admit — and through the slope α
+//! a step gains shear from that self-stress. Starting from the least-normal-force associative
+//! optimum, taking each step's optimum closest to Ñ, or α = 0 were tried (2026-11-24): each
+//! descended towards λ < 0 and then a step with no state at all. The answer says `not settled`.
 //!
 //! A single step cannot lower λ below the associative answer when started from its normal
 //! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
@@ -46,6 +61,11 @@ use crate::arch::mechanism::Mechanism;
 
 /// Steps at most.
 pub const MAX_STEPS: usize = 50;
+
+/// Steps without halving the smallest inconsistency so far after which the iteration stops
+/// (it wanders: the two-ring arches; or, λ never leaving the associative one, the normal forces
+/// of a degenerate programme only jitter). Converging walls halve it every 2–4 steps.
+pub const STALLED_STEPS: usize = 10;
 
 /// Consistency tolerance as a fraction of the total weight.
 const SETTLED: f64 = 1e-7;
@@ -111,14 +131,16 @@ fn inconsistency(
     (shear, moved)
 }
 
-/// Runs the iteration with `solve` (the dead- or live-load solve) on `problem`.
-/// With `only_if_sliding`, an associative mechanism that does not slide is answered as it is
-/// (settled: without sliding, dilatancy plays no part).
+/// Runs the iteration on `problem`: `solve` (the dead- or live-load solve) for the associative
+/// start, `step` for each step's programme (given the associative solution: a live-load step
+/// need not check the dead load again). With `only_if_sliding`, an associative mechanism that
+/// does not slide is answered as it is (settled: without sliding, dilatancy plays no part).
 pub fn iterate<E>(
     problem: &ArchProblem,
     settings: &LimitSettings,
     only_if_sliding: bool,
     solve: impl Fn(&ArchProblem, &LimitSettings) -> Result<LimitSolution, E>,
+    step: impl Fn(&ArchProblem, &LimitSettings, &LimitSolution) -> Result<LimitSolution, E>,
 ) -> Result<NonAssociative, E> {
     let start = std::time::Instant::now();
     let associative = solve(problem, settings)?;
@@ -175,8 +197,14 @@ pub fn iterate<E>(
     let mut first_mechanism = None;
     let mut last = associative.clone();
     let (mut iterations, mut programmes) = (last.iterations, last.programmes);
+    // The smallest inconsistency so far, and the steps since it last halved.
+    let (mut best, mut stalled) = (f64::INFINITY, 0);
     for _ in 0..MAX_STEPS {
-        let step = solve(&problem.with_fixed_friction(&used, SLOPE), settings)?;
+        let step = step(
+            &problem.with_fixed_friction(&used, SLOPE),
+            settings,
+            &associative,
+        )?;
         iterations += step.iterations;
         programmes += step.programmes;
         history.push(step.load_factor);
@@ -190,7 +218,8 @@ pub fn iterate<E>(
         let (shear, moved) = inconsistency(problem, &step, &used, tolerance);
         let normal = normal_forces(&step);
         last = step;
-        if shear <= tolerance && moved <= tolerance {
+        let worst = shear.max(moved);
+        if worst <= tolerance {
             return Ok(NonAssociative {
                 solution: last,
                 associative,
@@ -199,6 +228,14 @@ pub fn iterate<E>(
                 corrected: corrected(sliding, &first_mechanism),
                 totals: (iterations, programmes, start.elapsed().as_secs_f64()),
             });
+        }
+        if worst <= 0.5 * best {
+            (best, stalled) = (worst, 0);
+        } else {
+            stalled += 1;
+            if stalled >= STALLED_STEPS {
+                break;
+            }
         }
         used = previous
             .iter()
@@ -259,6 +296,8 @@ impl NonAssociative {
             .is_some_and(|m| m.involves_friction());
         let lower = match (self.associative.load_factor, self.solution.load_factor) {
             (Some(a), Some(b)) => b < a - 1e-6 * a.abs().max(1e-12),
+            // Carried associatively, not without dilatancy.
+            (Some(_), None) => self.solution.status == LimitStatus::DeadLoadNotCarried,
             _ => false,
         };
         slides && (!self.settled || lower)
