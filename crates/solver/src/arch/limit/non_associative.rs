@@ -34,10 +34,10 @@
 //! inconsistency so far (the iteration wanders or jitters): say so, with one exception. Where
 //! no step's λ left the associative one (a programme so degenerate that the interior-point
 //! method does not pin its normal forces down: a wall panel sliding at λ = μ on any of its bed
-//! joints), the associative state is
-//! itself a fixed point — it carries its shear by its own normal forces exactly, and it is
-//! optimal for the first step's programme, which was built from those normal forces, since
-//! that programme's λ is the same (to [`SAME_FACTOR`]): it answers, with that step's mechanism.
+//! joints), the associative state is itself a fixed point — it carries its shear by its own
+//! normal forces exactly, and it is optimal for the first step's programme, which was built
+//! from those normal forces, since that programme's λ is the same (to [`SAME_FACTOR`]): it
+//! answers, with that step's mechanism.
 //!
 //! A live-load step is the live-load programme alone: the dead load was checked once, by the
 //! associative solve, and a step's capacities are those of a collapse state, not of the
