@@ -11,10 +11,11 @@
 //! A chain of blocks without crushing, with or without passive restraint (whose interior-point
 //! programmes are the general formulation's, milliseconds each), is swept instead by the
 //! simplex method warm from stop to stop ([`WarmLiveLoad`]): the optimal basis of one stop
-//! starts the next, a few pivots away. Its λ are exact vertices; the stops within 1e-6 of the least λ — the ones that can be
-//! critical — are then solved again on the interior-point method, so that the critical stop,
-//! its λ and its state are the ones a solve of that stop alone gives. A stop the simplex
-//! method cannot certify is solved on the interior-point method too.
+//! starts the next, a few pivots away. Its λ are exact vertices; the stops within 1e-6 of the
+//! least λ — the ones that can be critical — are then solved again on the interior-point
+//! method, so that the critical stop, its λ and its state are the ones a solve of that stop
+//! alone gives. A stop the simplex method cannot certify is solved on the interior-point
+//! method too.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
