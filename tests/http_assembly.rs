@@ -270,3 +270,33 @@ async fn a_live_load_on_rings_whose_dead_load_falls_has_no_factor_and_the_dead_l
     assert_eq!(answer["hinges"], falls["hinges"]);
     assert!(!answer["hinges"].as_array().unwrap().is_empty());
 }
+
+#[tokio::test]
+async fn no_collapse_under_a_load_near_a_springing_is_settled_without_dilatancy_too() {
+    // A load on the second voussoir of 27 (joints within 14° of horizontal, μ = 0.4: the load
+    // goes into the springing inside the friction cone): no collapse at any factor, either
+    // way. The iteration starts from the state at the cap and settles there (it used to answer
+    // `not_settled` with no step); that state is not shown.
+    let server = Server::start().await;
+    let mut body = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 27},
+                          "friction_coefficient": 0.4, "loads": [{"block": 2, "fy": -1}]});
+    let (status, _, associative) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{associative}");
+    assert_eq!(associative["solver"]["status"], "unbounded");
+    body["friction"] = json!("non_associative");
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["solver"]["status"], "unbounded", "{answer}");
+    assert!(answer["load_factor"].is_null());
+    let steps = &answer["non_associative"];
+    assert_eq!(steps["settled"], true, "{steps}");
+    let factors = steps["load_factors"].as_array().unwrap();
+    assert!(
+        factors.len() >= 2 && factors.iter().all(|f| f.is_null()),
+        "{steps}"
+    );
+    for shown in [&associative, &answer] {
+        assert_eq!(shown["thrust_line"], json!([]), "{shown}");
+        assert_eq!(shown["reactions"], json!([]), "{shown}");
+    }
+}

@@ -95,9 +95,10 @@ pub struct NonAssociativeOutDto {
     /// The associative programme's factor the iteration started from.
     #[schema(required = true)]
     pub associative_load_factor: Option<f64>,
-    /// The factor the iteration settled on; null when it did not settle, or settled below
-    /// zero live load (the dead load is then not carried without dilatancy: `solver.status`
-    /// is `dead_load_not_carried`, the negative λ the last of `load_factors`).
+    /// The factor the iteration settled on; null when it did not settle, settled below zero
+    /// live load (the dead load is then not carried without dilatancy: `solver.status` is
+    /// `dead_load_not_carried`, the negative λ the last of `load_factors`), or settled with no
+    /// collapse up to the cap (`solver.status` `unbounded`, every step null).
     #[schema(required = true)]
     pub load_factor: Option<f64>,
     /// λ at each step: the associative programme's, then each programme with the friction
@@ -105,7 +106,8 @@ pub struct NonAssociativeOutDto {
     /// α·μ·N (α = 0.01), Ñ the normal forces of the last two steps relaxed (β = 0.6).
     pub load_factors: Vec<Option<f64>>,
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every
-    /// joint (to 1e-7 of the weight), with the normal forces no longer moving — or, when no
+    /// joint (to 1e-7 of the weight; of its largest normal force for a state at the cap of λ,
+    /// when nothing collapses), with the normal forces no longer moving — or, when no
     /// step left the associative λ (to 1e-8), the associative state, which is then such a
     /// state. The iteration stops unsettled after 50 steps, or after 10 that did not halve its
     /// inconsistency.

@@ -266,6 +266,11 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         status = ArchStatusDto::NotSettled;
         solution.load_factor = None;
     }
+    if solution.status == LimitStatus::Unbounded {
+        // The state at the cap of λ (the non-associative iteration's start): not an answer.
+        solution.resultants.clear();
+        solution.passive.clear();
+    }
     let thrust_line = thrust_line(input.problem.assembly(), &solution.resultants);
     Ok(SolvedArch {
         input,

@@ -319,3 +319,56 @@ fn a_dead_push_takes_its_share_of_the_capacity_without_dilatancy() {
     assert_eq!(o.solution.dead_load_carried, Some(false));
     assert!(o.associative_may_overestimate());
 }
+
+/// A unit block on the ground (unit weight 1, W = 1) pushed at its centroid (0.5, 0.5) by
+/// λ·(0.3, −1), with friction μ.
+fn block_pressed_at_an_angle(mu: f64) -> ArchProblem {
+    let a = Assembly::from_polygons(
+        &[rectangle(0.0, 0.0, 1.0, 1.0)],
+        &[rectangle(-2.0, -1.0, 3.0, 0.0)],
+    )
+    .unwrap();
+    let push = vec![LiveLoad {
+        block: 0,
+        point: (0.5, 0.5),
+        fx: 0.3,
+        fy: -1.0,
+        moment: 0.0,
+    }];
+    ArchProblem::new(a, 1.0, InterfaceLimits::heyman(), Some(mu), push).unwrap()
+}
+
+#[test]
+fn a_push_inside_the_friction_cone_causes_no_collapse_without_dilatancy_either() {
+    // By hand: the base carries the shear 0.3λ by μ(1 + λ) for every λ when μ ≥ 0.3, and the
+    // resultant meets the base at x = 0.5 + 0.15·λ/(1 + λ) < 1: no collapse at any λ. The
+    // iteration starts from the associative programme's state at its cap, and that state's
+    // normal forces carry its shear: settled, unbounded (it used to answer "not settled"
+    // with no step at all). Below μ = 0.3 the block slides at 0.3λ = μ(1 + λ), horizontally
+    // (nothing to dilate): λ = μ/(0.3 − μ) = 5 for μ = 0.25, either way.
+    let settings = LimitSettings::default();
+    let p = block_pressed_at_an_angle(0.5);
+    let o = solve_live_load_non_associative(&p, &settings, false).unwrap();
+    assert_eq!(o.associative.status, LimitStatus::Unbounded);
+    assert!(o.settled, "{:?}", o.history);
+    assert_eq!(o.solution.status, LimitStatus::Unbounded);
+    assert_eq!(o.solution.load_factor, None);
+    assert!(o.history.len() >= 2 && o.history.iter().all(Option::is_none));
+    // The state it settled on carries its shear by its own normal force, far beyond W.
+    let [q, s, t] = o.solution.resultants[0];
+    assert!(q + s > 1e5, "{q} + {s}");
+    assert!(t.abs() <= 0.5 * (q + s), "{t} vs {}", 0.5 * (q + s));
+    assert!(!o.associative_may_overestimate());
+    // Only asked to check a sliding mechanism, it has none: no step.
+    let check = solve_live_load_non_associative(&p, &settings, true).unwrap();
+    assert_eq!(check.history.len(), 1);
+
+    let p = block_pressed_at_an_angle(0.25);
+    let o = solve_live_load_non_associative(&p, &settings, false).unwrap();
+    let a = o.associative.load_factor.unwrap();
+    assert!((a - 5.0).abs() < 1e-6, "{a}");
+    assert!(o.settled, "{:?}", o.history);
+    let na = o.solution.load_factor.unwrap();
+    assert!((na - 5.0).abs() < 1e-6, "{na}");
+    check_properties(&p, &o, 0.25);
+}

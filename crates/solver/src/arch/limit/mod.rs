@@ -229,13 +229,16 @@ fn solve_live_load_once(
     };
     let lambda_scaled = programme.x[cx.extra()];
     if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
+        // No collapse up to the cap; the state there is kept for the non-associative
+        // iteration, which starts from it (the service shows none).
+        let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
         return Ok(cx.finish(
             Found {
                 status: LimitStatus::Unbounded,
                 load_factor: None,
                 dead_load_carried: Some(true),
                 dead_load_margin: Some(margin),
-                resultants: Vec::new(),
+                resultants,
                 passive: Vec::new(),
                 mechanism: None,
             },

@@ -52,6 +52,12 @@
 //! optimum, taking each step's optimum closest to Ñ, or α = 0 were tried (2026-11-24): each
 //! descended towards λ < 0 and then a step with no state at all. The answer says `not settled`.
 //!
+//! Where the associative programme finds no collapse up to its cap on λ (a load that goes into
+//! a springing inside the friction cone), the iteration starts from the state at the cap and
+//! its steps are solved to the cap too; a step at the cap whose normal forces carry its shear
+//! (to 1e-7 of its largest normal force, the forces there being far beyond the weight) settles
+//! it: no collapse without dilatancy either. A step below the cap continues as any other.
+//!
 //! A single step cannot lower λ below the associative answer when started from its normal
 //! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
 
@@ -102,6 +108,10 @@ pub struct NonAssociative {
 
 fn normal_forces(solution: &LimitSolution) -> Vec<f64> {
     solution.resultants.iter().map(|r| r[0] + r[1]).collect()
+}
+
+fn largest_normal_force(solution: &LimitSolution) -> f64 {
+    normal_forces(solution).into_iter().fold(0.0, f64::max)
 }
 
 /// The largest violation of Coulomb's |t| ≤ μN over the joints with friction, and the largest
@@ -164,8 +174,12 @@ pub fn iterate<E>(
             totals: single,
         });
     }
+    // No collapse up to the cap: friction that does not dilate may still collapse it; the
+    // iteration starts from the state at the cap (not for the check, which follows a sliding
+    // mechanism, and there is none).
+    let open = associative.status == LimitStatus::Unbounded && !only_if_sliding;
     if !problem.has_friction()
-        || associative.status != LimitStatus::Solved
+        || !(associative.status == LimitStatus::Solved || open)
         || associative.resultants.is_empty()
     {
         // Nothing slides, or no state to start from: the associative answer stands as it is.
@@ -211,10 +225,18 @@ pub fn iterate<E>(
         if history.len() == 2 {
             first_mechanism.clone_from(&step.mechanism);
         }
-        if step.status != LimitStatus::Solved || step.resultants.is_empty() {
+        let open = step.status == LimitStatus::Unbounded;
+        if !(step.status == LimitStatus::Solved || open) || step.resultants.is_empty() {
             last = step;
             break;
         }
+        // A state at the cap carries forces far beyond the weight: its consistency is
+        // measured against its own largest normal force.
+        let tolerance = if open {
+            SETTLED * largest_normal_force(&step).max(weight)
+        } else {
+            tolerance
+        };
         let (shear, moved) = inconsistency(problem, &step, &used, tolerance);
         let normal = normal_forces(&step);
         last = step;

@@ -405,7 +405,8 @@ pub struct LimitSolution {
     /// reserve (every limit is met with that much to spare), positive a shortfall.
     pub dead_load_margin: Option<f64>,
     /// Resultants (q, s, t) per interface in force units at the load factor (empty when there
-    /// is no admissible state to show).
+    /// is no admissible state to show). For [`LimitStatus::Unbounded`], the state at the cap of
+    /// the live-load factor: no collapse below it (a state to start from, not to show).
     pub resultants: Vec<[f64; 3]>,
     /// The collapse mechanism, when the structure is at its limit.
     pub mechanism: Option<Mechanism>,
