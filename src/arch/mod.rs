@@ -269,7 +269,6 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
     if solution.status == LimitStatus::Unbounded {
         // The state at the cap of λ (the non-associative iteration's start): not an answer.
         solution.resultants.clear();
-        solution.passive.clear();
     }
     let thrust_line = thrust_line(input.problem.assembly(), &solution.resultants);
     Ok(SolvedArch {

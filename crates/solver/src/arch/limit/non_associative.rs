@@ -110,10 +110,6 @@ fn normal_forces(solution: &LimitSolution) -> Vec<f64> {
     solution.resultants.iter().map(|r| r[0] + r[1]).collect()
 }
 
-fn largest_normal_force(solution: &LimitSolution) -> f64 {
-    normal_forces(solution).into_iter().fold(0.0, f64::max)
-}
-
 /// The largest violation of Coulomb's |t| ≤ μN over the joints with friction, and the largest
 /// change of normal force from `used` over the joints whose shear is at its capacity
 /// (1 − α)μ·used + αμN (where the normal force matters; elsewhere the programme leaves it
@@ -230,15 +226,15 @@ pub fn iterate<E>(
             last = step;
             break;
         }
+        let normal = normal_forces(&step);
         // A state at the cap carries forces far beyond the weight: its consistency is
         // measured against its own largest normal force.
         let tolerance = if open {
-            SETTLED * largest_normal_force(&step).max(weight)
+            SETTLED * normal.iter().copied().fold(weight, f64::max)
         } else {
             tolerance
         };
         let (shear, moved) = inconsistency(problem, &step, &used, tolerance);
-        let normal = normal_forces(&step);
         last = step;
         let worst = shear.max(moved);
         if worst <= tolerance {
