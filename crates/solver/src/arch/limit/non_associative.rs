@@ -47,10 +47,14 @@
 //!
 //! Two-ring arches with ring friction do not settle (ring μ 0.6 and 0.8, 2 × 100 voussoirs):
 //! their programmes' optimal faces are unbounded — ring normal forces of 6e5 against a weight
-//! of 47 in the interior-point state, a self-stress the rings admit — and through the slope α
-//! a step gains shear from that self-stress. Starting from the least-normal-force associative
-//! optimum, taking each step's optimum closest to Ñ, or α = 0 were tried (2026-11-24): each
-//! descended towards λ < 0 and then a step with no state at all. The answer says `not settled`.
+//! of 47 in the interior-point state, the first blocks of the two rings squeezed together at
+//! each springing against the support's shear — and through the slope α a step gains shear
+//! from that self-stress. Along the arch the intercept c acts as cohesion: the ring contacts
+//! next to the hinges open (N → 0) yet keep their shear c, the next step moves the opening to
+//! their neighbours, and λ enters a cycle (period 18, λ 10.41–11.70, on 2 × 20 voussoirs with
+//! ring μ 3 and 300 steps allowed). Starting from the least-normal-force associative optimum,
+//! taking each step's optimum closest to Ñ, α = 0, or a cost on the normal forces in every
+//! programme were tried (2026-11-24): none settled. The answer says `not settled`.
 //!
 //! Where the associative programme finds no collapse up to its cap on λ (a load that goes into
 //! a springing inside the friction cone), the iteration starts from the state at the cap and
