@@ -300,3 +300,86 @@ async fn no_collapse_under_a_load_near_a_springing_is_settled_without_dilatancy_
         assert_eq!(shown["reactions"], json!([]), "{shown}");
     }
 }
+
+/// The reactions of an answer as (interface, horizontal, vertical).
+fn reactions(answer: &Value) -> Vec<(u64, f64, f64)> {
+    answer["reactions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            let f = |k: &str| r[k].as_f64().unwrap();
+            (
+                r["interface"].as_u64().unwrap(),
+                f("horizontal"),
+                f("vertical"),
+            )
+        })
+        .collect()
+}
+
+#[tokio::test]
+async fn the_state_shown_is_the_least_squeezed_one() {
+    // Two unit blocks side by side on ground that cannot slide, pushed at the top-left corner:
+    // the pair overturns at λ = 2, and its one state of least normal force (worked out in
+    // crates/solver/tests/arch_state.rs) has the ground's reactions (−0.5, 0) under the left
+    // block and (−1.5, 2) under the right one. Any other state squeezes the pair between the
+    // two bases' shear (the interior-point state did, by 5e5).
+    let server = Server::start().await;
+    let geometry = json!({"kind": "assembly",
+        "blocks": [{"polygon": [[0, 0], [1, 0], [1, 1], [0, 1]]},
+                   {"polygon": [[1, 0], [2, 0], [2, 1], [1, 1]]}],
+        "supports": [{"polygon": [[-1, -1], [3, -1], [3, 0], [-1, 0]]}]});
+    let body = json!({"geometry": geometry, "loads": [{"block": 1, "x": 0, "y": 1, "fx": 1}]});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    assert!((answer["load_factor"].as_f64().unwrap() - 2.0).abs() < 1e-8);
+    let mut found = reactions(&answer);
+    found.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let expected = [(-0.5, 0.0), (-1.5, 2.0)];
+    for ((_, h, v), (eh, ev)) in found.iter().zip(expected) {
+        assert!((h - eh).abs() < 1e-6 && (v - ev).abs() < 1e-6, "{answer}");
+    }
+    assert_eq!(answer["solver"]["programmes"], 3, "{answer}");
+
+    // Two staggered rings (R 10, D 1.5, 20 voussoirs): the first blocks of the two rings at a
+    // springing can be squeezed together against the support without limit (the contact
+    // between them runs down to it), and the interior-point state showed reactions of ±6.7e5
+    // there, cancelling but for the thrust. Under the dead load, with rings that cannot slide
+    // on each other, nothing needs a squeeze: both rings push each springing outwards. Under a
+    // point load with ring μ = 0.6 the associative collapse state needs some (it gives the
+    // sliding ring contact at the springing its normal force), a bounded one: no reaction
+    // comes near the weight. Both: Σ horizontal = 0, Σ vertical = W (+ λ).
+    let rings =
+        json!({"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 20, "rings": 2});
+    let (status, _, dead) = server
+        .post("/arch/dead-load", &json!({"geometry": rings}))
+        .await;
+    assert_eq!(status, 200, "{dead}");
+    let weight: f64 = reactions(&dead).iter().map(|r| r.2).sum();
+    assert!(
+        (weight - 15.0 * std::f64::consts::PI).abs() < 0.01 * weight,
+        "{dead}"
+    );
+    let line = dead["thrust_line"].as_array().unwrap();
+    for (k, h, _) in reactions(&dead) {
+        // The side of the contact from its point of action: the supports push the left
+        // springing's contacts rightwards, the right's leftwards.
+        let x = line[k as usize - 1]["x"].as_f64().unwrap();
+        assert!(h * x < 0.0, "interface {k}: {dead}");
+    }
+    let body = json!({"geometry": rings, "ring_friction_coefficient": 0.6,
+                      "loads": [{"block": 6, "fy": -1}]});
+    let (status, _, live) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{live}");
+    let lambda = live["load_factor"].as_f64().unwrap();
+    for (shown, total) in [(&dead, weight), (&live, weight + lambda)] {
+        let found = reactions(shown);
+        assert_eq!(found.len(), 4, "{shown}");
+        let horizontal: f64 = found.iter().map(|r| r.1).sum();
+        let vertical: f64 = found.iter().map(|r| r.2).sum();
+        assert!(horizontal.abs() < 1e-6 * weight, "{shown}");
+        assert!((vertical - total).abs() < 1e-6 * weight, "{shown}");
+        assert!(found.iter().all(|r| r.1.abs() < weight), "{shown}");
+    }
+}

@@ -22,9 +22,9 @@ use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    solve_dead_load, solve_dead_load_non_associative, solve_live_load,
+    show_least_normal_state, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
     solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError, LimitSolution,
-    LimitStatus, SolverFailure,
+    LimitStatus, SolverFailure, StateOf,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -238,6 +238,15 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
                 },
                 _ => solve_with_friction(which, &input),
             };
+            let mut solution = solution;
+            if let (Ok(solution), false) = (&mut solution, input.non_associative) {
+                // One state among those the answer admits: the least squeezed (assemblies).
+                let of = match which {
+                    Problem::DeadLoad => StateOf::DeadLoad,
+                    Problem::LiveLoad => StateOf::LiveLoad,
+                };
+                show_least_normal_state(&input.problem, &input.settings, of, solution);
+            }
             (input, solution, rolling, friction)
         })
         .await?;

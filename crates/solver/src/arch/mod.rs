@@ -41,6 +41,7 @@ pub use limit::{
     solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,
     InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, WarmLiveLoad, WarmStop,
 };
+pub use limit::{show_least_normal_state, StateOf};
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{
     rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,

@@ -71,6 +71,12 @@ pub fn support_reactions(assembly: &Assembly, r: &[[f64; 3]]) -> Option<Vec<Supp
     Some(reactions)
 }
 
+/// A normal force at or below this fraction of the largest has no point of action: the
+/// answer does not determine it (the interior-point tolerance is 1e-10, and the state of an
+/// assembly is taken 1e-7 inside its factor), and the ratio of two such small numbers is
+/// noise (a point hundreds of lengths away).
+const UNDEFINED_NORMAL: f64 = 1e-6;
+
 /// The thrust line of the resultants `r` (q, s, t per interface).
 pub fn thrust_line(assembly: &Assembly, r: &[[f64; 3]]) -> Vec<ThrustPoint> {
     let scale = r
@@ -84,7 +90,7 @@ pub fn thrust_line(assembly: &Assembly, r: &[[f64; 3]]) -> Vec<ThrustPoint> {
         .enumerate()
         .map(|(k, (interface, &[q, s, t]))| {
             let normal = q + s;
-            let defined = normal.abs() > 1e-12 * scale && scale > 0.0;
+            let defined = normal.abs() > UNDEFINED_NORMAL * scale && scale > 0.0;
             let point = defined.then(|| {
                 (
                     (q * interface.extrados.0 + s * interface.intrados.0) / normal,

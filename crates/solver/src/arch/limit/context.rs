@@ -6,20 +6,50 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
+use clarabel::solver::SolverStatus;
+
 use super::problem::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
 use super::programme::{
-    dot, failure, solve_chain_programme, solve_programme, Programme, ProgrammeSpec, Refinement,
+    dot, failure, solve_chain_programme, solve_programme, solve_state_programme, Programme,
+    ProgrammeSpec, Refinement,
 };
 use super::rows::{limit_rows, Row};
 use crate::arch::chain::ChainStatics;
 use crate::arch::equilibrium::{
     assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
 };
-use crate::arch::mechanism::{read_mechanism, LimitTag, Mechanism};
+use crate::arch::mechanism::{read_mechanism, Bound, LimitTag, Mechanism, Resultant};
 use crate::outcome::SolverFailure;
 
 /// Live loads are scaled to a unit largest component; λ above this counts as no collapse.
 pub(super) const LIVE_LOAD_CAP: f64 = 1e6;
+
+/// Whether a state programme's x satisfies H r = b_eq and the rows raised by `shift` to
+/// [`STATE_CHECK`] (scaled units: a fraction of the total weight): a programme short of
+/// `Solved` is accepted when its state passes.
+fn state_holds(eq: &Equilibrium, rows: &[Row], x: &[f64], (b_eq, shift): (&[f64], f64)) -> bool {
+    if x.len() < eq.columns || x.iter().any(|v| !v.is_finite()) {
+        return false;
+    }
+    let mut residual: Vec<f64> = b_eq.iter().map(|b| -b).collect();
+    for &(i, j, v) in &eq.triplets {
+        residual[i] += v * x[j];
+    }
+    let balanced = residual.iter().all(|r| r.abs() <= STATE_CHECK);
+    let admissible = rows.iter().all(|row| {
+        let lhs: f64 = row.entries[..row.len].iter().map(|&(j, v)| v * x[j]).sum();
+        let raised = if row.tag.resultant == Resultant::Passive {
+            0.0
+        } else {
+            shift
+        };
+        lhs <= row.b + raised + STATE_CHECK
+    });
+    balanced && admissible
+}
+
+/// The largest residual [`state_holds`] accepts, in units of the total weight.
+const STATE_CHECK: f64 = 1e-7;
 
 /// The answer of a solve, before the solve statistics are added.
 pub(super) struct Found {
@@ -231,6 +261,58 @@ impl<'a> Context<'a> {
                 (programme, scale)
             }
         }
+    }
+
+    /// The state of least normal force among those the limit rows admit at dead-load factor
+    /// `dead_factor`, live-load factor `live_factor` and margin `margin` (the rows raised by
+    /// it): min Σ(q + s) over the normal forces with a lower bound, by the state programme. The
+    /// interior-point method needs an interior: the caller backs the factors (or the margin)
+    /// off the optimum a little.
+    /// Returns the resultants and passive forces in force units; `None` for a chain (three
+    /// redundants: nothing to choose), or when the programme does not solve or its state fails
+    /// the check (the caller keeps the state it has).
+    pub fn least_normal_state(
+        &mut self,
+        dead_factor: f64,
+        live_factor: f64,
+        margin: f64,
+    ) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
+        let Model::Assembly(eq) = &self.model else {
+            return None;
+        };
+        let b_eq: Vec<f64> = eq
+            .dead
+            .iter()
+            .zip(&eq.live)
+            .map(|(w, p)| -dead_factor * w - live_factor * p)
+            .collect();
+        let mut costs = vec![0.0; eq.columns];
+        for row in &self.rows {
+            let normal = matches!(row.tag.resultant, Resultant::Q | Resultant::S);
+            if normal && row.tag.bound == Bound::Lower && row.len == 1 {
+                costs[row.entries[0].0] = 1.0;
+            }
+        }
+        let programme = solve_state_programme(
+            eq,
+            &self.rows,
+            (&b_eq, margin),
+            &costs,
+            (self.settings, Refinement::Never),
+        );
+        self.iterations += programme.iterations;
+        self.programmes += 1;
+        let usable = matches!(
+            programme.status,
+            SolverStatus::Solved | SolverStatus::AlmostSolved
+        );
+        (usable && state_holds(eq, &self.rows, &programme.x, (&b_eq, margin))).then(|| {
+            let x = &programme.x;
+            (
+                self.resultants(x, dead_factor, live_factor),
+                self.passive(x),
+            )
+        })
     }
 
     /// Whether any live load is non-zero.

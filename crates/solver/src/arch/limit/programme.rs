@@ -39,6 +39,9 @@ pub(super) enum Refinement {
     Always,
     /// Solve without refinement; with it only when that did not solve.
     OnRetry,
+    /// Solve once without refinement (the state programme: its state is checked, and one
+    /// short of `Solved` that passes the check is as good).
+    Never,
 }
 
 /// One programme over the resultants r and one extra variable x (δ or λ):
@@ -118,6 +121,46 @@ pub(super) fn solve_programme(
     )
 }
 
+/// The state programme over the resultants alone: min costs·r subject to H r = b_eq and the
+/// limit rows with their right-hand sides raised by `shift` (the passive bounds stay as they
+/// are). It picks one state among those a solved programme admits at its λ (or δ).
+pub(super) fn solve_state_programme(
+    eq: &Equilibrium,
+    rows: &[Row],
+    (b_eq, shift): (&[f64], f64),
+    costs: &[f64],
+    (settings, refinement): (&LimitSettings, Refinement),
+) -> Programme {
+    let (n, m_eq) = (eq.columns, eq.rows);
+    let m = m_eq + rows.len();
+    let mut ti = Vec::with_capacity(eq.triplets.len() + 3 * rows.len());
+    let mut tj = Vec::with_capacity(ti.capacity());
+    let mut tv = Vec::with_capacity(ti.capacity());
+    for &(i, j, v) in &eq.triplets {
+        ti.push(i);
+        tj.push(j);
+        tv.push(v);
+    }
+    let mut b = b_eq.to_vec();
+    for (r, row) in rows.iter().enumerate() {
+        for &(j, v) in &row.entries[..row.len] {
+            ti.push(m_eq + r);
+            tj.push(j);
+            tv.push(v);
+        }
+        let relaxed = row.tag.resultant != Resultant::Passive;
+        b.push(if relaxed { row.b + shift } else { row.b });
+    }
+    run_clarabel(
+        (m, n, m_eq),
+        (ti, tj, tv),
+        &b,
+        costs,
+        (settings, refinement),
+        None,
+    )
+}
+
 /// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq); with
 /// [`Refinement::OnRetry`] first without iterative refinement (the iterations of both attempts
 /// counted). Setting `abort` stops the interior-point method at its next iteration
@@ -144,7 +187,7 @@ fn run_clarabel(
         refined.iterations += quick.iterations;
         return refined;
     }
-    once(true)
+    once(refinement == Refinement::Always)
 }
 
 fn run_clarabel_once(
