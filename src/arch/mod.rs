@@ -22,9 +22,9 @@ use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    show_least_normal_state, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
-    solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError, LimitSolution,
-    LimitStatus, SolverFailure, StateOf,
+    is_squeezed, show_least_normal_state, solve_dead_load, solve_dead_load_non_associative,
+    solve_live_load, solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError,
+    LimitSolution, LimitStatus, SolverFailure, StateOf,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -240,12 +240,14 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
             };
             let mut solution = solution;
             if let (Ok(solution), false) = (&mut solution, input.non_associative) {
-                // One state among those the answer admits: the least squeezed (assemblies).
+                // A state squeezed by a self-stress (assemblies): the least one instead.
                 let of = match which {
                     Problem::DeadLoad => StateOf::DeadLoad,
                     Problem::LiveLoad => StateOf::LiveLoad,
                 };
-                show_least_normal_state(&input.problem, &input.settings, of, solution);
+                if is_squeezed(&input.problem, solution, of) {
+                    show_least_normal_state(&input.problem, &input.settings, of, solution);
+                }
             }
             (input, solution, rolling, friction)
         })

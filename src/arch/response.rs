@@ -20,7 +20,8 @@ use super::request::{ArchDetailDto, FormulationDto};
 pub struct InterfaceThrustPointDto {
     /// Interface number (1-based).
     pub interface: usize,
-    /// x of the point of action of the normal force; null where it vanishes.
+    /// x of the point of action of the normal force; null where it vanishes (at or below 1e-6
+    /// of the largest normal force).
     #[schema(required = true)]
     pub x: Option<f64>,
     /// y of the point of action; null where it vanishes.
@@ -147,6 +148,9 @@ pub struct ArchOutcomeDto {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub non_associative: Option<NonAssociativeOutDto>,
     /// The line of thrust of the admissible state at the load factor (empty when there is none).
+    /// On the general formulation (assemblies, rings, passive restraint), where the
+    /// interior-point state carries a self-stress (a contact above 10 times all the loads), the
+    /// state of least normal force among those the answer admits (README, Assemblies).
     pub thrust_line: Vec<InterfaceThrustPointDto>,
     /// The smallest distance from the line of thrust to the nearer face of its joint, as a
     /// fraction of the joint's length (½ − |e/t|, minimised over the joints): 0 where it
@@ -154,7 +158,8 @@ pub struct ArchOutcomeDto {
     /// line of thrust.
     #[schema(required = true)]
     pub thrust_margin: Option<f64>,
-    /// The reactions of the two supports of the admissible state (empty when there is none).
+    /// The reactions of the supports in the state of `thrust_line`, one per support contact
+    /// (empty when there is none).
     pub reactions: Vec<ReactionDto>,
     /// How the solve ended.
     pub solver: SolverDto,

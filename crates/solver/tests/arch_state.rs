@@ -80,6 +80,9 @@ fn two_blocks_pushed_over_together_show_the_one_least_squeezed_state() {
     let mut solution = solve_live_load(&problem, &settings()).unwrap();
     assert_eq!(solution.status, LimitStatus::Solved);
     assert!((solution.load_factor.unwrap() - 2.0).abs() < 1e-8);
+    // The interior-point state carries the squeeze far out (measured 5e5 against loads of 4);
+    // the least state does not.
+    assert!(is_squeezed(&problem, &solution, StateOf::LiveLoad));
     let programmes = solution.programmes;
     assert!(show_least_normal_state(
         &problem,
@@ -88,6 +91,7 @@ fn two_blocks_pushed_over_together_show_the_one_least_squeezed_state() {
         &mut solution
     ));
     assert_eq!(solution.programmes, programmes + 1);
+    assert!(!is_squeezed(&problem, &solution, StateOf::LiveLoad));
     let (left, right) = reactions(&problem, &solution.resultants);
     // Reactions are the forces of the supports on the blocks.
     assert!((left.horizontal + 0.5).abs() < 1e-6, "{left:?}");
@@ -183,6 +187,7 @@ fn a_one_ring_arch_shows_the_chains_collapse_state_and_a_chain_keeps_its_own() {
         &mut chain
     ));
     assert_eq!(chain.resultants, before);
+    assert!(!is_squeezed(&problem, &chain, StateOf::LiveLoad));
     let mut general = solve_live_load(&problem, &settings()).unwrap();
     let lambda = chain.load_factor.unwrap();
     assert!((general.load_factor.unwrap() - lambda).abs() < 1e-8 * lambda);

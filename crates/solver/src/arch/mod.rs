@@ -36,12 +36,12 @@ pub use crate::outcome::SolverFailure;
 pub use equilibrium::LiveLoad;
 pub use error::{ArchError, ArchParameter};
 pub use geometry::{Assembly, Block, CircularArch, Interface, InterfaceKind, VoussoirShape};
+pub use limit::{is_squeezed, show_least_normal_state, StateOf};
 pub use limit::{
     non_associative, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
     solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,
     InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, WarmLiveLoad, WarmStop,
 };
-pub use limit::{show_least_normal_state, StateOf};
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{
     rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,

@@ -52,7 +52,7 @@ mod warm;
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
-pub use state::{show_least_normal_state, StateOf};
+pub use state::{is_squeezed, show_least_normal_state, StateOf};
 pub use warm::{WarmLiveLoad, WarmStop};
 
 /// The dead-load margin at full dead load, for the minimum-thickness search.
