@@ -22,9 +22,9 @@ use axum::extract::State;
 use fill::{Rolling, RollingOutDto};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
-    is_squeezed, show_least_normal_state, solve_dead_load, solve_dead_load_non_associative,
-    solve_live_load, solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError,
-    LimitSolution, LimitStatus, SolverFailure, StateOf,
+    relieve_squeeze, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
+    solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError, LimitSolution,
+    LimitStatus, SolverFailure, StateOf,
 };
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
@@ -245,9 +245,7 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
                     Problem::DeadLoad => StateOf::DeadLoad,
                     Problem::LiveLoad => StateOf::LiveLoad,
                 };
-                if is_squeezed(&input.problem, solution, of) {
-                    show_least_normal_state(&input.problem, &input.settings, of, solution);
-                }
+                relieve_squeeze(&input.problem, &input.settings, of, solution);
             }
             (input, solution, rolling, friction)
         })

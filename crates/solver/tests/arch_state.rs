@@ -7,6 +7,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::arch::generators::{bridge, Piers, RingJoints};
 use thrustline_solver::arch::*;
 
 /// Two unit blocks side by side on the ground (γ = 1: weight 1 each), block 0 on [0, 1],
@@ -206,6 +207,87 @@ fn a_one_ring_arch_shows_the_chains_collapse_state_and_a_chain_keeps_its_own() {
     for (a, b) in chain.resultants.iter().zip(&general.resultants) {
         for i in 0..3 {
             assert!((a[i] - b[i]).abs() < 1e-6 * weight, "{a:?} against {b:?}");
+        }
+    }
+}
+
+#[test]
+fn a_squeeze_at_the_springings_of_two_rings_is_relieved_there() {
+    // Two staggered rings (R 10, D 1.5, 20 voussoirs, ring μ 0.6), a unit load on block 6:
+    // the interior-point state squeezes the first blocks of the two rings against each support
+    // (1e5 times the loads). The squeeze is relieved on the few contacts that carry it, in one
+    // small programme; the state is then checked here on its own: the whole in equilibrium
+    // (the reactions carry W + λ and push no net horizontal force), every contact within its
+    // limits (q, s ≥ 0; |t| ≤ μ(q + s) on the ring interfaces).
+    let generator = CircularArch::new(
+        10.0,
+        1.5,
+        NonZeroUsize::new(20).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Quadrilateral,
+    )
+    .unwrap();
+    let piers = Piers {
+        spans: 1,
+        width: 0.0,
+        height: 0.0,
+    };
+    let rings = bridge(&generator, 2, RingJoints::Staggered, piers).unwrap();
+    let block = &rings.assembly.blocks[5];
+    let load = LiveLoad {
+        block: 5,
+        point: block.centroid,
+        fx: 0.0,
+        fy: -1.0,
+        moment: 0.0,
+    };
+    let problem = ArchProblem::new(
+        rings.assembly.clone(),
+        1.0,
+        InterfaceLimits::heyman(),
+        None,
+        vec![load],
+    )
+    .unwrap()
+    .with_ring_interfaces(InterfaceLimits::heyman(), Some(0.6))
+    .unwrap();
+    let mut solution = solve_live_load(&problem, &settings()).unwrap();
+    let lambda = solution.load_factor.unwrap();
+    assert!(is_squeezed(&problem, &solution, StateOf::LiveLoad));
+    let programmes = solution.programmes;
+    assert!(relieve_squeeze(
+        &problem,
+        &settings(),
+        StateOf::LiveLoad,
+        &mut solution
+    ));
+    assert_eq!(
+        solution.programmes,
+        programmes + 1,
+        "the local programme alone"
+    );
+    assert!(!is_squeezed(&problem, &solution, StateOf::LiveLoad));
+    assert_eq!(solution.load_factor, Some(lambda));
+    let weight: f64 = problem.assembly().blocks.iter().map(|b| b.area).sum();
+    let reactions = support_reactions(problem.assembly(), &solution.resultants).unwrap();
+    let horizontal: f64 = reactions.iter().map(|r| r.horizontal).sum();
+    let vertical: f64 = reactions.iter().map(|r| r.vertical).sum();
+    assert!(horizontal.abs() < 1e-6 * weight, "{reactions:?}");
+    assert!(
+        (vertical - weight - lambda).abs() < 1e-6 * weight,
+        "{reactions:?}"
+    );
+    let tolerance = 1e-7 * weight;
+    for (interface, r) in problem
+        .assembly()
+        .interfaces
+        .iter()
+        .zip(&solution.resultants)
+    {
+        assert!(r[0] >= -tolerance && r[1] >= -tolerance, "{r:?}");
+        if interface.kind == InterfaceKind::Ring {
+            assert!(r[2].abs() <= 0.6 * (r[0] + r[1]) + tolerance, "{r:?}");
         }
     }
 }

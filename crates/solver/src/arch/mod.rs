@@ -36,7 +36,7 @@ pub use crate::outcome::SolverFailure;
 pub use equilibrium::LiveLoad;
 pub use error::{ArchError, ArchParameter};
 pub use geometry::{Assembly, Block, CircularArch, Interface, InterfaceKind, VoussoirShape};
-pub use limit::{is_squeezed, show_least_normal_state, StateOf};
+pub use limit::{is_squeezed, relieve_squeeze, show_least_normal_state, StateOf};
 pub use limit::{
     non_associative, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
     solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,

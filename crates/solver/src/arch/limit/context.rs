@@ -14,6 +14,7 @@ use super::programme::{
     ProgrammeSpec, Refinement,
 };
 use super::rows::{limit_rows, Row};
+use super::squeeze::local_programme;
 use crate::arch::chain::ChainStatics;
 use crate::arch::equilibrium::{
     assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
@@ -46,6 +47,19 @@ fn state_holds(eq: &Equilibrium, rows: &[Row], x: &[f64], (b_eq, shift): (&[f64]
         lhs <= row.b + raised + STATE_CHECK
     });
     balanced && admissible
+}
+
+/// The costs of the state programme: 1 on every normal force with a lower bound (a row
+/// −q ≤ b or −s ≤ b of its own), 0 elsewhere.
+fn normal_costs(rows: &[Row], columns: usize) -> Vec<f64> {
+    let mut costs = vec![0.0; columns];
+    for row in rows {
+        let normal = matches!(row.tag.resultant, Resultant::Q | Resultant::S);
+        if normal && row.tag.bound == Bound::Lower && row.len == 1 {
+            costs[row.entries[0].0] = 1.0;
+        }
+    }
+    costs
 }
 
 /// The largest residual [`state_holds`] accepts, in units of the total weight.
@@ -280,19 +294,8 @@ impl<'a> Context<'a> {
         let Model::Assembly(eq) = &self.model else {
             return None;
         };
-        let b_eq: Vec<f64> = eq
-            .dead
-            .iter()
-            .zip(&eq.live)
-            .map(|(w, p)| -dead_factor * w - live_factor * p)
-            .collect();
-        let mut costs = vec![0.0; eq.columns];
-        for row in &self.rows {
-            let normal = matches!(row.tag.resultant, Resultant::Q | Resultant::S);
-            if normal && row.tag.bound == Bound::Lower && row.len == 1 {
-                costs[row.entries[0].0] = 1.0;
-            }
-        }
+        let b_eq = self.state_equations(eq, dead_factor, live_factor);
+        let costs = normal_costs(&self.rows, eq.columns);
         let programme = solve_state_programme(
             eq,
             &self.rows,
@@ -313,6 +316,64 @@ impl<'a> Context<'a> {
                 self.passive(x),
             )
         })
+    }
+
+    /// [`Self::least_normal_state`] changing only the resultants of `contacts`: every other
+    /// contact keeps its force in `state` (resultants and passive forces in force units, at the
+    /// same factors and margin), so the programme is as small as the squeeze (see
+    /// [`super::squeeze`]). `None` as there, or when nothing is left to change.
+    pub fn relieve_squeeze(
+        &mut self,
+        (dead_factor, live_factor, margin): (f64, f64, f64),
+        (resultants, passive): (&[[f64; 3]], &[f64]),
+        contacts: &[usize],
+    ) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
+        let Model::Assembly(eq) = &self.model else {
+            return None;
+        };
+        let w = self.force_scale;
+        let mut x: Vec<f64> = resultants.iter().flatten().map(|v| v / w).collect();
+        x.extend(passive.iter().map(|p| p / w));
+        if x.len() != eq.columns || contacts.is_empty() {
+            return None;
+        }
+        let b_eq = self.state_equations(eq, dead_factor, live_factor);
+        let local = local_programme(eq, &self.rows, (&x, &b_eq, margin), contacts);
+        let costs = normal_costs(&local.rows, local.eq.columns);
+        let programme = solve_state_programme(
+            &local.eq,
+            &local.rows,
+            (&local.b_eq, margin + local.excess),
+            &costs,
+            (self.settings, Refinement::Never),
+        );
+        self.iterations += programme.iterations;
+        self.programmes += 1;
+        if !matches!(
+            programme.status,
+            SolverStatus::Solved | SolverStatus::AlmostSolved
+        ) || programme.x.len() < local.columns.len()
+        {
+            return None;
+        }
+        for (&j, &v) in local.columns.iter().zip(&programme.x) {
+            x[j] = v;
+        }
+        state_holds(eq, &self.rows, &x, (&b_eq, margin + local.excess)).then(|| {
+            (
+                self.resultants(&x, dead_factor, live_factor),
+                self.passive(&x),
+            )
+        })
+    }
+
+    /// The right-hand sides of the equilibrium rows at the given factors.
+    fn state_equations(&self, eq: &Equilibrium, dead_factor: f64, live_factor: f64) -> Vec<f64> {
+        eq.dead
+            .iter()
+            .zip(&eq.live)
+            .map(|(w, p)| -dead_factor * w - live_factor * p)
+            .collect()
     }
 
     /// Whether any live load is non-zero.

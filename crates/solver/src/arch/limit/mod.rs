@@ -46,13 +46,14 @@ use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
 
 mod crushing;
 pub mod non_associative;
+mod squeeze;
 mod state;
 mod warm;
 
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
 };
-pub use state::{is_squeezed, show_least_normal_state, StateOf};
+pub use state::{is_squeezed, relieve_squeeze, show_least_normal_state, StateOf};
 pub use warm::{WarmLiveLoad, WarmStop};
 
 /// The dead-load margin at full dead load, for the minimum-thickness search.

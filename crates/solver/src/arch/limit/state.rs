@@ -46,6 +46,14 @@ pub fn is_squeezed(problem: &ArchProblem, solution: &LimitSolution, programme: S
     let Some(factor) = solution.load_factor else {
         return false;
     };
+    let loads = carried_loads(problem, factor, programme);
+    let largest = solution.resultants.iter().map(force).fold(0.0, f64::max);
+    largest > SQUEEZED * loads
+}
+
+/// The loads an answer carries: the dead weight at its factor (dead load) or whole (live
+/// load) with the live loads at theirs, and the passive capacities.
+fn carried_loads(problem: &ArchProblem, factor: f64, programme: StateOf) -> f64 {
     let dead = force_scale(&problem.assembly, problem.unit_weight, &problem.dead_loads);
     let live: f64 = problem.live_loads.iter().map(|l| l.fx.hypot(l.fy)).sum();
     let passive: f64 = problem.passive.iter().map(|p| p.capacity).sum();
@@ -53,12 +61,12 @@ pub fn is_squeezed(problem: &ArchProblem, solution: &LimitSolution, programme: S
         DeadLoad => factor * dead,
         LiveLoad => dead + factor.abs() * live,
     } + passive;
-    let largest = solution
-        .resultants
-        .iter()
-        .map(|r| r[0].abs() + r[1].abs() + r[2].abs())
-        .fold(0.0, f64::max);
-    largest > SQUEEZED * loads
+    loads.max(f64::MIN_POSITIVE)
+}
+
+/// The force at a contact, |q| + |s| + |t|.
+fn force(r: &[f64; 3]) -> f64 {
+    r[0].abs() + r[1].abs() + r[2].abs()
 }
 
 /// Which of Livesley's programmes an answer is of.
@@ -71,41 +79,129 @@ pub enum StateOf {
 }
 
 /// Replaces `solution`'s resultants and passive forces by the state of least normal force at
-/// its factors, and adds the programme to its solver figures. Returns whether it did: an answer
-/// without a state, a chain, crushing, or a state programme that fails keeps its state.
+/// its factors (the whole structure's programme), and adds the programme to its solver
+/// figures. Returns whether it did: an answer without a state, a chain, crushing, or a state
+/// programme that fails keeps its state.
 pub fn show_least_normal_state(
     problem: &ArchProblem,
     settings: &LimitSettings,
     programme: StateOf,
     solution: &mut LimitSolution,
 ) -> bool {
-    if solution.status != LimitStatus::Solved
-        || solution.resultants.is_empty()
-        || problem.crushing.is_some()
-    {
+    let Some(at) = state_at(problem, solution, programme) else {
         return false;
-    }
-    let Some(factor) = solution.load_factor else {
-        return false;
-    };
-    // The states at the optimum lie on the boundary of the admissible set; the programme is
-    // written a hair inside it, where it has an interior: the factor backed off by
-    // STATE_BACKOFF (its loads are then carried with the limits to spare), or a carried dead
-    // load's margin δ < 0 taken as δ·(1 − STATE_BACKOFF). The limits hold as they are.
-    let inside = 1.0 - STATE_BACKOFF;
-    let (dead, live, margin) = match programme {
-        // A carried dead load is shown at its margin (the state farthest inside the limits);
-        // otherwise at λ₀, on the limits.
-        DeadLoad if solution.dead_load_carried == Some(true) => {
-            let margin = solution.dead_load_margin.unwrap_or(0.0).min(0.0);
-            (factor, 0.0, margin * inside)
-        }
-        DeadLoad => (factor * inside, 0.0, 0.0),
-        LiveLoad => (1.0, factor * inside, 0.0),
     };
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
-    let state = cx.least_normal_state(dead, live, margin);
+    let state = least_inside(&mut cx, at);
+    replace(solution, &cx, start, state)
+}
+
+/// Relieves a squeezed state ([`is_squeezed`]): first on the contacts that carry more than the
+/// loads, every other contact held (a programme as small as the squeeze, at the answer's own
+/// factors: see [`super::squeeze`]); where that leaves it squeezed or does not solve, the state
+/// of least normal force of the whole structure ([`show_least_normal_state`]). Returns whether
+/// the state was replaced; a state that is not squeezed is left as it is.
+pub fn relieve_squeeze(
+    problem: &ArchProblem,
+    settings: &LimitSettings,
+    programme: StateOf,
+    solution: &mut LimitSolution,
+) -> bool {
+    if !is_squeezed(problem, solution, programme) {
+        return false;
+    }
+    let Some(at) = state_at(problem, solution, programme) else {
+        return false;
+    };
+    let loads = carried_loads(problem, at.factor, programme);
+    let contacts: Vec<usize> = (solution.resultants.iter().enumerate())
+        .filter(|(_, r)| force(r) > loads)
+        .map(|(k, _)| k)
+        .collect();
+    let start = Instant::now();
+    let mut cx = Context::new(problem, settings);
+    let shown = (solution.resultants.as_slice(), solution.passive.as_slice());
+    // A carried dead load's margin backed off as for the whole programme (the contacts' rows
+    // at the margin leave no interior). A squeeze over most contacts is the whole programme
+    // at the optimum, which has none either.
+    let (dead, live, margin) = at.factors();
+    let local = 2 * contacts.len() <= solution.resultants.len();
+    let state = local
+        .then(|| cx.relieve_squeeze((dead, live, margin * inside()), shown, &contacts))
+        .flatten()
+        .filter(|(r, _)| r.iter().map(force).fold(0.0, f64::max) <= SQUEEZED * loads)
+        .or_else(|| least_inside(&mut cx, at));
+    replace(solution, &cx, start, state)
+}
+
+/// The factors and margin of an answer's state.
+#[derive(Clone, Copy)]
+struct StateAt {
+    programme: StateOf,
+    factor: f64,
+    /// A carried dead load's margin δ ≤ 0 (the state farthest inside the limits); otherwise
+    /// None (the state at λ₀ or λ, on the limits).
+    margin: Option<f64>,
+}
+
+impl StateAt {
+    /// (dead-load factor, live-load factor, margin).
+    fn factors(self) -> (f64, f64, f64) {
+        match (self.programme, self.margin) {
+            (DeadLoad, margin) => (self.factor, 0.0, margin.unwrap_or(0.0)),
+            (LiveLoad, _) => (1.0, self.factor, 0.0),
+        }
+    }
+}
+
+/// Where `solution`'s state lies; None for an answer without one, a chain's (three
+/// redundants) and crushing (the curve bounds the normal forces, and its cutting planes
+/// belong to the refined problem).
+fn state_at(
+    problem: &ArchProblem,
+    solution: &LimitSolution,
+    programme: StateOf,
+) -> Option<StateAt> {
+    let has_state = solution.status == LimitStatus::Solved && !solution.resultants.is_empty();
+    if !has_state || problem.crushing.is_some() {
+        return None;
+    }
+    let carried = programme == DeadLoad && solution.dead_load_carried == Some(true);
+    Some(StateAt {
+        programme,
+        factor: solution.load_factor?,
+        margin: carried.then(|| solution.dead_load_margin.unwrap_or(0.0).min(0.0)),
+    })
+}
+
+/// The whole structure's least state. The states at the optimum lie on the boundary of the
+/// admissible set; the programme is written a hair inside, where it has an interior: the
+/// factor backed off by [`STATE_BACKOFF`] (its loads are then carried with the limits to
+/// spare), or a carried dead load's margin δ < 0 taken as δ·(1 − STATE_BACKOFF). The limits
+/// hold as they are.
+fn least_inside(cx: &mut Context, at: StateAt) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
+    let inside = inside();
+    let (dead, live, margin) = at.factors();
+    match (at.programme, at.margin) {
+        (DeadLoad, Some(_)) => cx.least_normal_state(dead, live, margin * inside),
+        (DeadLoad, None) => cx.least_normal_state(dead * inside, live, margin),
+        (LiveLoad, _) => cx.least_normal_state(dead, live * inside, margin),
+    }
+}
+
+/// 1 − [`STATE_BACKOFF`].
+fn inside() -> f64 {
+    1.0 - STATE_BACKOFF
+}
+
+/// Puts `state` (if any) into `solution` with the solver figures of `cx` since `start`.
+fn replace(
+    solution: &mut LimitSolution,
+    cx: &Context,
+    start: Instant,
+    state: Option<(Vec<[f64; 3]>, Vec<f64>)>,
+) -> bool {
     solution.iterations += cx.iterations;
     solution.programmes += cx.programmes;
     solution.solve_time_secs += start.elapsed().as_secs_f64();
