@@ -24,6 +24,19 @@ fn two_blocks(loads: Vec<LiveLoad>) -> ArchProblem {
     ArchProblem::new(assembly, 1.0, InterfaceLimits::heyman(), None, loads).unwrap()
 }
 
+/// R 10, D 1.5, 20 quadrilateral voussoirs.
+fn twenty_voussoirs() -> CircularArch {
+    CircularArch::new(
+        10.0,
+        1.5,
+        NonZeroUsize::new(20).unwrap(),
+        0.0,
+        0.0,
+        VoussoirShape::Quadrilateral,
+    )
+    .unwrap()
+}
+
 fn settings() -> LimitSettings {
     LimitSettings {
         formulation: Formulation::Assembly,
@@ -155,15 +168,7 @@ fn a_one_ring_arch_shows_the_chains_collapse_state_and_a_chain_keeps_its_own() {
     // At collapse a one-ring arch under a point load is statically determinate (four hinges):
     // the state of the general model is the chain's, whatever state the programme picks. The
     // chain's own state is never replaced (three redundants, nothing to choose).
-    let arch = CircularArch::new(
-        10.0,
-        1.5,
-        NonZeroUsize::new(20).unwrap(),
-        0.0,
-        0.0,
-        VoussoirShape::Quadrilateral,
-    )
-    .unwrap();
+    let arch = twenty_voussoirs();
     let load = LiveLoad {
         block: 5,
         point: arch.assembly().blocks[5].centroid,
@@ -219,15 +224,7 @@ fn a_squeeze_at_the_springings_of_two_rings_is_relieved_there() {
     // small programme; the state is then checked here on its own: the whole in equilibrium
     // (the reactions carry W + λ and push no net horizontal force), every contact within its
     // limits (q, s ≥ 0; |t| ≤ μ(q + s) on the ring interfaces).
-    let generator = CircularArch::new(
-        10.0,
-        1.5,
-        NonZeroUsize::new(20).unwrap(),
-        0.0,
-        0.0,
-        VoussoirShape::Quadrilateral,
-    )
-    .unwrap();
+    let generator = twenty_voussoirs();
     let piers = Piers {
         spans: 1,
         width: 0.0,

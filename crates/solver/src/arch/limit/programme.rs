@@ -73,14 +73,7 @@ pub(super) fn solve_programme(
     let extra = eq.columns;
     let m_eq = eq.rows;
     let m = m_eq + rows.len() + 1;
-    let mut ti = Vec::with_capacity(eq.triplets.len() + m_eq + 3 * rows.len() + 1);
-    let mut tj = Vec::with_capacity(ti.capacity());
-    let mut tv = Vec::with_capacity(ti.capacity());
-    for &(i, j, v) in &eq.triplets {
-        ti.push(i);
-        tj.push(j);
-        tv.push(v);
-    }
+    let (mut ti, mut tj, mut tv, mut b) = assemble(eq, rows, b_eq, 0.0);
     for (i, &v) in extra_equilibrium.iter().enumerate() {
         if v != 0.0 {
             ti.push(i);
@@ -88,21 +81,13 @@ pub(super) fn solve_programme(
             tv.push(v);
         }
     }
-    let mut b = b_eq.to_vec();
     for (r, row) in rows.iter().enumerate() {
-        for &(j, v) in &row.entries[..row.len] {
-            ti.push(m_eq + r);
-            tj.push(j);
-            tv.push(v);
-        }
         // Passive bounds are hard: a margin relaxes the yield limits only.
-        let relaxed = row.tag.resultant != Resultant::Passive;
-        if let (Some(coefficient), true) = (row_extra, relaxed) {
+        if let (Some(coefficient), true) = (row_extra, relaxed(row)) {
             ti.push(m_eq + r);
             tj.push(extra);
             tv.push(coefficient);
         }
-        b.push(row.b);
     }
     // Cap on the extra variable: cap.0·x_extra ≤ cap.1.
     ti.push(m - 1);
@@ -133,24 +118,7 @@ pub(super) fn solve_state_programme(
 ) -> Programme {
     let (n, m_eq) = (eq.columns, eq.rows);
     let m = m_eq + rows.len();
-    let mut ti = Vec::with_capacity(eq.triplets.len() + 3 * rows.len());
-    let mut tj = Vec::with_capacity(ti.capacity());
-    let mut tv = Vec::with_capacity(ti.capacity());
-    for &(i, j, v) in &eq.triplets {
-        ti.push(i);
-        tj.push(j);
-        tv.push(v);
-    }
-    let mut b = b_eq.to_vec();
-    for (r, row) in rows.iter().enumerate() {
-        for &(j, v) in &row.entries[..row.len] {
-            ti.push(m_eq + r);
-            tj.push(j);
-            tv.push(v);
-        }
-        let relaxed = row.tag.resultant != Resultant::Passive;
-        b.push(if relaxed { row.b + shift } else { row.b });
-    }
+    let (ti, tj, tv, b) = assemble(eq, rows, b_eq, shift);
     run_clarabel(
         (m, n, m_eq),
         (ti, tj, tv),
@@ -159,6 +127,45 @@ pub(super) fn solve_state_programme(
         (settings, refinement),
         None,
     )
+}
+
+/// The triplets of H with the limit rows below it (row m_eq + r for rows[r]), and b: `b_eq`
+/// then each row's b, raised by `shift` (the passive bounds never).
+fn assemble(
+    eq: &Equilibrium,
+    rows: &[Row],
+    b_eq: &[f64],
+    shift: f64,
+) -> (Vec<usize>, Vec<usize>, Vec<f64>, Vec<f64>) {
+    let capacity = eq.triplets.len() + eq.rows + 4 * rows.len() + 1;
+    let (mut ti, mut tj, mut tv) = (
+        Vec::with_capacity(capacity),
+        Vec::with_capacity(capacity),
+        Vec::with_capacity(capacity),
+    );
+    for &(i, j, v) in &eq.triplets {
+        ti.push(i);
+        tj.push(j);
+        tv.push(v);
+    }
+    let mut b = Vec::with_capacity(b_eq.len() + rows.len() + 1);
+    b.extend_from_slice(b_eq);
+    for (r, row) in rows.iter().enumerate() {
+        for &(j, v) in &row.entries[..row.len] {
+            ti.push(eq.rows + r);
+            tj.push(j);
+            tv.push(v);
+        }
+        // Unraised rows keep their b bit for bit (−0.0 + 0.0 would be +0.0).
+        let raise = relaxed(row) && shift != 0.0;
+        b.push(if raise { row.b + shift } else { row.b });
+    }
+    (ti, tj, tv, b)
+}
+
+/// Whether a row is a yield limit a margin may relax (the passive bounds are hard).
+fn relaxed(row: &Row) -> bool {
+    row.tag.resultant != Resultant::Passive
 }
 
 /// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq); with
