@@ -215,7 +215,7 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
         .run(move || {
             let mut input = input;
             let mut rolling = None;
-            let (solution, friction) = match (which, input.rolling.take()) {
+            let (mut solution, friction) = match (which, input.rolling.take()) {
                 (Problem::LiveLoad, Some(stops)) => match roll(&mut input, &stops) {
                     Ok((solution, curve)) => {
                         rolling = Some(curve);
@@ -238,9 +238,9 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
                 },
                 _ => solve_with_friction(which, &input),
             };
-            let mut solution = solution;
             if let (Ok(solution), false) = (&mut solution, input.non_associative) {
-                // A state squeezed by a self-stress (assemblies): the least one instead.
+                // A state squeezed by a self-stress (assemblies) is relieved (README,
+                // Assemblies); a non-associative answer keeps its iteration's state.
                 let of = match which {
                     Problem::DeadLoad => StateOf::DeadLoad,
                     Problem::LiveLoad => StateOf::LiveLoad,
