@@ -6,12 +6,13 @@
 //! the loop together without limit — two blocks side by side on a support, the inner and outer
 //! ring of an arch at a springing. The interior-point method then ends on a state with normal
 //! forces of 1e5 times the weight (measured on wall panels and two-ring arches). Such a state
-//! ([`is_squeezed`]) is replaced by the one of least normal force, Σ(q + s) over the normal
-//! forces that have a lower bound, among those the limits admit at the answer's factors: a
-//! second programme over the resultants alone (see
-//! [`super::context::Context::least_normal_state`]), written a hair inside the optimum
-//! ([`STATE_BACKOFF`]), where it has an interior. It costs about as much as the first, so it
-//! runs only where the state is squeezed.
+//! ([`is_squeezed`]) is relieved ([`relieve_squeeze`]): first on the contacts that carry more
+//! than the loads, every other contact held ([`super::squeeze`]: a programme as small as the
+//! squeeze); where that is not enough, replaced by the whole structure's state of least normal
+//! force, Σ(q + s) over the normal forces that have a lower bound, among those the limits admit
+//! at the answer's factors ([`show_least_normal_state`]: a second programme over the
+//! resultants alone, written a hair inside the optimum, [`STATE_BACKOFF`], where it has an
+//! interior; it costs about as much as the first). States that are not squeezed run neither.
 //!
 //! What that state keeps is what the answer needs: a squeeze that gives a sliding contact the
 //! normal force its friction needs at collapse stays (bounded by the loads), and a contact
