@@ -65,6 +65,19 @@ fn normal_costs(rows: &[Row], columns: usize) -> Vec<f64> {
 /// The largest residual [`state_holds`] accepts, in units of the total weight.
 const STATE_CHECK: f64 = 1e-7;
 
+/// Whether `problem` is written on the chain's three redundants: asked for, and a chain
+/// (passive forces are variables of their own: only the general assembly has room for them,
+/// and only a chain has the chain's three redundants).
+pub(super) fn on_chain(problem: &ArchProblem, settings: &LimitSettings) -> bool {
+    let chain = problem.passive.is_empty() && problem.assembly.is_chain();
+    settings.formulation == Formulation::Chain && chain
+}
+
+/// Whether a state programme ended with a state worth checking.
+fn usable(status: SolverStatus) -> bool {
+    matches!(status, SolverStatus::Solved | SolverStatus::AlmostSolved)
+}
+
 /// The answer of a solve, before the solve statistics are added.
 pub(super) struct Found {
     pub status: LimitStatus,
@@ -107,12 +120,10 @@ impl<'a> Context<'a> {
         let (a, gamma, loads) = (&problem.assembly, problem.unit_weight, &problem.live_loads);
         let dead = &problem.dead_loads;
         let force_scale = force_scale(a, gamma, dead);
-        // Passive forces are variables of their own: only the general assembly has room for them.
-        // and only a chain has the chain's three redundants.
         let chain = problem.passive.is_empty() && a.is_chain();
-        let model = match (settings.formulation, chain) {
-            (Formulation::Chain, true) => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
-            _ => {
+        let model = match on_chain(problem, settings) {
+            true => Model::Chain(ChainStatics::new(a, gamma, dead, loads)),
+            false => {
                 let mut eq = assemble_equilibrium(a, gamma, dead, loads);
                 eq.add_passive(a, &problem.passive);
                 Model::Assembly(eq)
@@ -305,17 +316,11 @@ impl<'a> Context<'a> {
         );
         self.iterations += programme.iterations;
         self.programmes += 1;
-        let usable = matches!(
-            programme.status,
-            SolverStatus::Solved | SolverStatus::AlmostSolved
-        );
-        (usable && state_holds(eq, &self.rows, &programme.x, (&b_eq, margin))).then(|| {
-            let x = &programme.x;
-            (
-                self.resultants(x, dead_factor, live_factor),
-                self.passive(x),
-            )
-        })
+        if !usable(programme.status) {
+            return None;
+        }
+        let factors = (dead_factor, live_factor);
+        self.checked_state(eq, &programme.x, (&b_eq, margin), factors)
     }
 
     /// [`Self::least_normal_state`] changing only the resultants of `contacts`: every other
@@ -349,20 +354,28 @@ impl<'a> Context<'a> {
         );
         self.iterations += programme.iterations;
         self.programmes += 1;
-        if !matches!(
-            programme.status,
-            SolverStatus::Solved | SolverStatus::AlmostSolved
-        ) || programme.x.len() < local.columns.len()
-        {
+        if !usable(programme.status) || programme.x.len() < local.columns.len() {
             return None;
         }
         for (&j, &v) in local.columns.iter().zip(&programme.x) {
             x[j] = v;
         }
-        state_holds(eq, &self.rows, &x, (&b_eq, margin + local.excess)).then(|| {
+        let factors = (dead_factor, live_factor);
+        self.checked_state(eq, &x, (&b_eq, margin + local.excess), factors)
+    }
+
+    /// The state x (scaled, every column) in force units, when it passes [`state_holds`].
+    fn checked_state(
+        &self,
+        eq: &Equilibrium,
+        x: &[f64],
+        (b_eq, shift): (&[f64], f64),
+        (dead_factor, live_factor): (f64, f64),
+    ) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
+        state_holds(eq, &self.rows, x, (b_eq, shift)).then(|| {
             (
-                self.resultants(&x, dead_factor, live_factor),
-                self.passive(&x),
+                self.resultants(x, dead_factor, live_factor),
+                self.passive(x),
             )
         })
     }

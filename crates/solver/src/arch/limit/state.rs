@@ -23,7 +23,7 @@
 
 use std::time::Instant;
 
-use super::context::Context;
+use super::context::{on_chain, Context};
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus};
 use crate::arch::equilibrium::force_scale;
 
@@ -47,9 +47,7 @@ pub fn is_squeezed(problem: &ArchProblem, solution: &LimitSolution, programme: S
     let Some(factor) = solution.load_factor else {
         return false;
     };
-    let loads = carried_loads(problem, factor, programme);
-    let largest = solution.resultants.iter().map(force).fold(0.0, f64::max);
-    largest > SQUEEZED * loads
+    largest_force(&solution.resultants) > SQUEEZED * carried_loads(problem, factor, programme)
 }
 
 /// The loads an answer carries: the dead weight at its factor (dead load) or whole (live
@@ -68,6 +66,11 @@ fn carried_loads(problem: &ArchProblem, factor: f64, programme: StateOf) -> f64 
 /// The force at a contact, |q| + |s| + |t|.
 fn force(r: &[f64; 3]) -> f64 {
     r[0].abs() + r[1].abs() + r[2].abs()
+}
+
+/// The largest [`force`] of a state.
+fn largest_force(resultants: &[[f64; 3]]) -> f64 {
+    resultants.iter().map(force).fold(0.0, f64::max)
 }
 
 /// Which of Livesley's programmes an answer is of.
@@ -89,7 +92,7 @@ pub fn show_least_normal_state(
     programme: StateOf,
     solution: &mut LimitSolution,
 ) -> bool {
-    let Some(at) = state_at(problem, solution, programme) else {
+    let Some(at) = state_at(problem, settings, solution, programme) else {
         return false;
     };
     let start = Instant::now();
@@ -109,13 +112,13 @@ pub fn relieve_squeeze(
     programme: StateOf,
     solution: &mut LimitSolution,
 ) -> bool {
-    if !is_squeezed(problem, solution, programme) {
-        return false;
-    }
-    let Some(at) = state_at(problem, solution, programme) else {
+    let Some(at) = state_at(problem, settings, solution, programme) else {
         return false;
     };
     let loads = carried_loads(problem, at.factor, programme);
+    if largest_force(&solution.resultants) <= SQUEEZED * loads {
+        return false;
+    }
     let contacts: Vec<usize> = (solution.resultants.iter().enumerate())
         .filter(|(_, r)| force(r) > loads)
         .map(|(k, _)| k)
@@ -131,7 +134,7 @@ pub fn relieve_squeeze(
     let state = local
         .then(|| cx.relieve_squeeze((dead, live, margin * inside()), shown, &contacts))
         .flatten()
-        .filter(|(r, _)| r.iter().map(force).fold(0.0, f64::max) <= SQUEEZED * loads)
+        .filter(|(r, _)| largest_force(r) <= SQUEEZED * loads)
         .or_else(|| least_inside(&mut cx, at));
     replace(solution, &cx, start, state)
 }
@@ -161,11 +164,12 @@ impl StateAt {
 /// belong to the refined problem).
 fn state_at(
     problem: &ArchProblem,
+    settings: &LimitSettings,
     solution: &LimitSolution,
     programme: StateOf,
 ) -> Option<StateAt> {
     let has_state = solution.status == LimitStatus::Solved && !solution.resultants.is_empty();
-    if !has_state || problem.crushing.is_some() {
+    if !has_state || problem.crushing.is_some() || on_chain(problem, settings) {
         return None;
     }
     let carried = programme == DeadLoad && solution.dead_load_carried == Some(true);
