@@ -218,6 +218,27 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
         na
     );
     assert_eq!(answer["friction_may_overestimate"], false);
+    assert!(answer["non_associative"]["mixing_from_step"].is_null());
+    // Leaves 0.3 × 1 under a 0.6 × 0.5 cap, μ = 0.9: the paper's relaxation oscillates for
+    // its 50 steps; the mixing settles it on the state worked out by hand in the solver's
+    // tests: the right leaf and the cap overturn, the left leaf pressing with
+    // N = 0.3μ/(1 + μ²), 1.5λ = 0.045 + 0.09 + 0.3μN.
+    let mut leaves = body.clone();
+    leaves["geometry"]["blocks"] = json!([{"polygon": [[0, 0], [0.3, 0], [0.3, 1], [0, 1]]},
+                                          {"polygon": [[0.3, 0], [0.6, 0], [0.6, 1], [0.3, 1]]},
+                                          {"polygon": [[0, 1], [0.6, 1], [0.6, 1.5], [0, 1.5]]}]);
+    leaves["friction_coefficient"] = json!(0.9);
+    leaves["loads"] = json!([{"block": 3, "x": 0, "y": 1.5, "fx": 1}]);
+    let (status, _, answer) = server.post("/arch/live-load", &leaves).await;
+    assert_eq!(status, 200, "{answer}");
+    let check = &answer["non_associative"];
+    assert_eq!(check["settled"], true, "{check}");
+    assert_eq!(check["mixing_from_step"], 50, "{check}");
+    let n = 0.3 * 0.9 / (1.0 + 0.81);
+    let by_hand = (0.045 + 0.09 + 0.3 * 0.9 * n) / 1.5;
+    let na = answer["load_factor"].as_f64().unwrap();
+    assert!((na - by_hand).abs() < 1e-6, "{na} vs {by_hand}");
+    assert_eq!(answer["solver"]["status"], "solved");
 }
 
 #[tokio::test]

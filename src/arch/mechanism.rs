@@ -103,14 +103,22 @@ pub struct NonAssociativeOutDto {
     pub load_factor: Option<f64>,
     /// λ at each step: the associative programme's, then each programme with the friction
     /// rows replaced by Gilbert, Casapulla & Ahmed's modified surface |t| ≤ (1 − α)·μ·Ñ +
-    /// α·μ·N (α = 0.01), Ñ the normal forces of the last two steps relaxed (β = 0.6).
+    /// α·μ·N (α = 0.01), Ñ the normal forces of the last two steps relaxed (β = 0.6) — or,
+    /// after `mixing_from_step`, the Anderson mixing of the last steps. Null for a step whose
+    /// programme did not solve.
     pub load_factors: Vec<Option<f64>>,
+    /// The paper's relaxation stopped without settling after this many steps (50, 10 without
+    /// halving its inconsistency, or a step that did not solve), and the Anderson mixing of the
+    /// last three steps' normal forces took over from its last solved state, for up to as many
+    /// steps again; null when the paper's relaxation settled (or when nothing was iterated).
+    #[schema(required = true)]
+    pub mixing_from_step: Option<usize>,
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every
     /// joint (to 1e-7 of the weight; of its largest normal force for a state at the cap of λ,
     /// when nothing collapses), with the normal forces no longer moving — or, when no
     /// step left the associative λ (to 1e-8), the associative state, which is then such a
-    /// state. The iteration stops unsettled after 50 steps, or after 10 that did not halve its
-    /// inconsistency.
+    /// state. Each phase (the paper's relaxation, then the mixing) stops after 50 steps, or
+    /// after 10 that did not halve its inconsistency.
     pub settled: bool,
     /// The corrected mechanism (Livesley §2.7), the first step's: sliding joints slide and
     /// open by only α·μ = 1 % of Coulomb's dilatancy; null when nothing slides.
@@ -128,6 +136,7 @@ impl NonAssociativeOutDto {
                 .then_some(outcome.solution.load_factor)
                 .flatten(),
             load_factors: outcome.history.clone(),
+            mixing_from_step: outcome.mixed_from,
             settled: outcome.settled,
             corrected_mechanism: outcome.corrected.as_ref().map(MechanismDto::new),
         }

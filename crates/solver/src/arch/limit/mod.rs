@@ -32,6 +32,7 @@
 //! positive work. See [`super::mechanism`].
 
 mod context;
+mod mixing;
 pub(crate) mod problem;
 mod programme;
 mod rows;

@@ -3,22 +3,42 @@
 //! joint open as it slides (normality on μ(q + s) ∓ t ≥ 0), which real joints do not; the
 //! load factor may then over-estimate (Livesley 1978, §2.7–2.9).
 //!
-//! The iteration, as the paper has it: start from the normal forces N⁰ of the associative
+//! The iteration, the paper's programmes: start from the normal forces N⁰ of the associative
 //! solution; at step k solve the programme with each friction row replaced by the modified
 //! surface |t| ≤ c + α·μ·N, whose intercept c = (1 − α)·μ·Ñ makes it pass through Coulomb's
 //! line at the normal force Ñ the previous steps left (so the shear is limited almost
 //! independently of the normal force: its flow is sliding with the dilatancy α·μ of 1 % of
-//! Coulomb's, nearly the corrected mechanism of Livesley §2.7). Ñ is relaxed between the last
-//! two steps' normal forces, Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), with the paper's α = 0.01 and
-//! β = 0.6 (Ñ = N⁰ for the first step).
+//! Coulomb's, nearly the corrected mechanism of Livesley §2.7), with the paper's α = 0.01
+//! (Ñ = N⁰ for the first step).
+//!
+//! Ñ for the next step is the paper's relaxation between the last two steps' normal forces,
+//! Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), β = 0.6 (SPEC §5.5: its starting point and
+//! relaxation). It converges geometrically, and on some walls not at all: on 108 walls, panels
+//! and arches (`bench/na_walls.py`: two leaves under a cap, 0.5–3 high and 0.3 or 0.5 wide,
+//! μ 0.3–0.9, pushed at the cap's top or mid-height; three leaves; running-bond panels of 3–6
+//! courses of 3–4 bricks pushed on every brick or the top course; arches of 20–40 voussoirs)
+//! it took a median of 27 programmes and did not settle on 18 — every μ = 0.9 wall oscillated
+//! about its fixed point for all 50 steps. Where it stops without settling (its 50 steps, 10
+//! without halving the inconsistency, or a step that does not solve) the Anderson mixing
+//! ([`super::mixing`]) of the last [`MEMORY`] steps' (Ñ, N), with the same β, takes over from
+//! its last state that solved, for up to as many steps again: once a step's active set stops
+//! changing the map Ñ ↦ N is affine and the mixing lands on its fixed point instead of
+//! circling it. On the 108 it settled 17 of the 18 (the μ = 0.9 walls in 3 steps; one panel of
+//! 6 × 4 bricks at μ = 0.8 still not), and where the paper's relaxation settles it is not used.
+//! Run from the start instead, the mixing settled all but 2 with a median of 10 programmes
+//! (1306 in all against 2993), the same λ to 1e-6 wherever both settled; it is kept as the
+//! rescue so that every answer the paper's procedure gives is the paper's. The mixing forgets
+//! its memory every [`RESTART`] steps that do not halve the inconsistency (a fit across active
+//! sets misleads); a step of it that does not solve (a mixed Ñ can make the programme
+//! degenerate: reduced accuracy) is retried once by plain relaxation from the last step that
+//! solved.
 //!
 //! Without the slope (α = 0, capacities fixed outright) the programmes are degenerate in the
 //! normal forces of the joints at capacity, and the iteration lands on other fixed points: on
 //! nine walls of two leaves under a cap (μ = 0.3, 0.5, 0.7; leaves 1, 2, 3 high) it settled
 //! 8 of 9 against 9 of 9, λ up to 7 % lower on four (0.2256 against 0.2400, for one). With
 //! the slope the fixed point did not depend on the relaxation (β = 1, 0.6 mixed or smoothed:
-//! the same λ to 1e-7 on all nine), so the paper's is kept; unrelaxed, the steps were 7–37
-//! against 10–38 now.
+//! the same λ to 1e-7 on all nine).
 //!
 //! A fixed point is a collapse state under friction that does not dilate, not necessarily the
 //! lowest one: non-associative collapse loads are not unique (the normal forces of a joint
@@ -26,12 +46,13 @@
 //! iteration settles at 0.2400, yet with no force between the leaves the right leaf and the
 //! cap overturn about its toe at 0.2, a state the iteration does not reach.
 //!
-//! Stop when the solution's own normal forces carry its shear (|t| ≤ μ·N at every joint, to
+//! Settled when the solution's own normal forces carry its shear (|t| ≤ μ·N at every joint, to
 //! 1e-7 of the total weight) and, at every joint at its capacity, equal the Ñ it was built from
 //! (to 1e-7 W; the surface is then Coulomb's there): that state is admissible for the
-//! associative programme too, so its λ is no more than the associative one. Not settled after
-//! [`MAX_STEPS`], or after [`STALLED_STEPS`] steps that did not halve the smallest
-//! inconsistency so far (the iteration wanders or jitters): say so, with one exception. Where
+//! associative programme too, so its λ is no more than the associative one. Each phase (the
+//! paper's relaxation, then the mixing) stops after [`MAX_STEPS`], or after [`STALLED_STEPS`]
+//! steps that did not halve its smallest inconsistency so far (it wanders or jitters); not
+//! settled after both: say so, with one exception. Where the paper's relaxation stopped and
 //! no step's λ left the associative one (a programme so degenerate that the interior-point
 //! method does not pin its normal forces down: a wall panel sliding at λ = μ on any of its bed
 //! joints), the associative state is itself a fixed point — it carries its shear by its own
@@ -54,7 +75,8 @@
 //! their neighbours, and λ enters a cycle (period 18, λ 10.41–11.70, on 2 × 20 voussoirs with
 //! ring μ 3 and 300 steps allowed). Starting from the least-normal-force associative optimum,
 //! taking each step's optimum closest to Ñ, α = 0, or a cost on the normal forces in every
-//! programme were tried (2026-11-24): none settled. The answer says `not settled`.
+//! programme were tried (2026-11-24), and the Anderson mixing of Ñ: none settled. The answer
+//! says `not settled`.
 //!
 //! Where the associative programme finds no collapse up to its cap on λ (a load that goes into
 //! a springing inside the friction cone), the iteration starts from the state at the cap and
@@ -65,6 +87,7 @@
 //! A single step cannot lower λ below the associative answer when started from its normal
 //! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
 
+use super::mixing::Mixing;
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus};
 use crate::arch::equilibrium::force_scale;
 use crate::arch::mechanism::Mechanism;
@@ -87,8 +110,24 @@ pub const SAME_FACTOR: f64 = 1e-8;
 /// slope.
 pub const SLOPE: f64 = 0.01;
 
-/// The paper's β: the weight of the last step's normal forces against the step's before.
+/// The paper's β: the relaxation of each step's normal forces against the Ñ it was built from
+/// (the mixing's β).
 pub const RELAXATION: f64 = 0.6;
+
+/// Steps the Anderson mixing of Ñ remembers.
+pub const MEMORY: usize = 3;
+
+/// Steps without halving the inconsistency after which the mixing forgets its memory (a fit
+/// over steps from another active set misleads; each third such step starts afresh).
+pub const RESTART: usize = 3;
+
+/// How the next step's Ñ is formed.
+enum Next {
+    /// The paper's relaxation between the last two steps' normal forces: the one before.
+    Paper { previous: Vec<f64> },
+    /// The Anderson mixing of the last steps (the rescue).
+    Mixing(Mixing),
+}
 
 /// The outcome of the iteration.
 #[derive(Debug, Clone, PartialEq)]
@@ -108,6 +147,9 @@ pub struct NonAssociative {
     /// Interior-point iterations, programmes and wall time of the whole iteration (the
     /// associative solve included).
     pub totals: (u32, usize, f64),
+    /// The steps of the paper's relaxation after which the Anderson mixing took over (it had
+    /// stopped without settling); `None` when it did not.
+    pub mixed_from: Option<usize>,
 }
 
 fn normal_forces(solution: &LimitSolution) -> Vec<f64> {
@@ -172,6 +214,7 @@ pub fn iterate<E>(
             settled: true,
             corrected: None,
             totals: single,
+            mixed_from: None,
         });
     }
     // No collapse up to the cap: friction that does not dilate may still collapse it; the
@@ -197,6 +240,7 @@ pub fn iterate<E>(
             settled,
             corrected: None,
             totals: single,
+            mixed_from: None,
         });
     }
     // The programmes' own force scale W: the blocks' and the other dead loads' weight.
@@ -207,13 +251,35 @@ pub fn iterate<E>(
     );
     let tolerance = SETTLED * weight;
     let mut used = normal_forces(&associative);
-    let mut previous = used.clone();
+    let mut next = Next::Paper {
+        previous: used.clone(),
+    };
+    let mut mixed_from = None;
+    // The last step that solved: the Ñ it was built from and its normal forces.
+    let mut good: Option<(Vec<f64>, Vec<f64>)> = None;
     let mut first_mechanism = None;
     let mut last = associative.clone();
     let (mut iterations, mut programmes) = (last.iterations, last.programmes);
-    // The smallest inconsistency so far, and the steps since it last halved.
-    let (mut best, mut stalled) = (f64::INFINITY, 0);
-    for _ in 0..MAX_STEPS {
+    // The smallest inconsistency so far in this phase, the steps since it last halved, and
+    // the phase's steps.
+    let (mut best, mut stalled, mut steps) = (f64::INFINITY, 0, 0);
+    loop {
+        // The paper's relaxation has had its steps without settling: the mixing takes over
+        // from its last state that solved, once, with steps of its own.
+        let stopped = steps >= MAX_STEPS || stalled >= STALLED_STEPS;
+        if stopped {
+            let Next::Paper { .. } = next else { break };
+            let Some((x, n)) = good.take() else { break };
+            if never_left(&history) {
+                break;
+            }
+            let mut mixing = Mixing::default();
+            used = mixing.next(x, n, MEMORY, RELAXATION);
+            next = Next::Mixing(mixing);
+            mixed_from = Some(history.len() - 1);
+            (best, stalled, steps) = (f64::INFINITY, 0, 0);
+        }
+        steps += 1;
         let step = step(
             &problem.with_fixed_friction(&used, SLOPE),
             settings,
@@ -228,7 +294,21 @@ pub fn iterate<E>(
         let open = step.status == LimitStatus::Unbounded;
         if !(step.status == LimitStatus::Solved || open) || step.resultants.is_empty() {
             last = step;
-            break;
+            match &mut next {
+                // The paper's relaxation ends here: the mixing may take over.
+                Next::Paper { .. } => stalled = STALLED_STEPS,
+                // A mixed Ñ whose programme the solver cannot solve (reduced accuracy on a
+                // degenerate programme): once, forget the mixing and relax plainly from the
+                // last step that solved.
+                Next::Mixing(mixing) => {
+                    let Some((x, n)) = good.take() else { break };
+                    mixing.forget();
+                    used = mixing.next(x, n, 0, RELAXATION);
+                    mixing.forget();
+                    stalled += 1;
+                }
+            }
+            continue;
         }
         let normal = normal_forces(&step);
         // A state at the cap carries forces far beyond the weight: its consistency is
@@ -249,22 +329,33 @@ pub fn iterate<E>(
                 settled: true,
                 corrected: corrected(sliding, &first_mechanism),
                 totals: (iterations, programmes, start.elapsed().as_secs_f64()),
+                mixed_from,
             });
         }
         if worst <= 0.5 * best {
             (best, stalled) = (worst, 0);
         } else {
             stalled += 1;
-            if stalled >= STALLED_STEPS {
-                break;
-            }
         }
-        used = previous
-            .iter()
-            .zip(&normal)
-            .map(|(p, n)| p + RELAXATION * (n - p))
-            .collect();
-        previous = normal;
+        good = Some((used.clone(), normal.clone()));
+        used = match &mut next {
+            // The paper's: between the last two steps' normal forces.
+            Next::Paper { previous } => {
+                let relaxed = previous
+                    .iter()
+                    .zip(&normal)
+                    .map(|(p, n)| p + RELAXATION * (n - p))
+                    .collect();
+                *previous = normal;
+                relaxed
+            }
+            Next::Mixing(mixing) => {
+                if stalled > 0 && stalled % RESTART == 0 {
+                    mixing.forget();
+                }
+                mixing.next(used, normal, MEMORY, RELAXATION)
+            }
+        };
     }
     let totals = (iterations, programmes, start.elapsed().as_secs_f64());
     let corrected = corrected(sliding, &first_mechanism);
@@ -279,6 +370,7 @@ pub fn iterate<E>(
             settled: true,
             corrected,
             totals,
+            mixed_from,
         });
     }
     Ok(NonAssociative {
@@ -288,6 +380,7 @@ pub fn iterate<E>(
         settled: false,
         corrected,
         totals,
+        mixed_from,
     })
 }
 
