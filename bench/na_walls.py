@@ -3,13 +3,15 @@ or more running thrustline services (compare builds side by side): per request t
 and the programmes solved, then per service the total and median programmes, how many took more
 than 10, how many did not settle; and the requests whose status or λ (1e-6) differ.
 
-Usage: python3 bench/na_walls.py BASE_URL[,BASE_URL...] [NAME_FILTER]
-       (e.g. http://127.0.0.1:8080,http://127.0.0.1:8081)
+Usage: python3 bench/na_walls.py BASE_URL[,BASE_URL...] [NAME_FILTER] [RELAXATION]
+       (e.g. http://127.0.0.1:8080,http://127.0.0.1:8081 "" anderson: every request with
+       "friction_relaxation": "anderson"; the default is the service's, the paper's)
 """
 import itertools, json, sys, urllib.request
 
 bases = sys.argv[1].split(",") if len(sys.argv) > 1 else ["http://127.0.0.1:8080"]
 only = sys.argv[2] if len(sys.argv) > 2 else ""
+relaxation = sys.argv[3] if len(sys.argv) > 3 else None
 
 def post(base, path, body):
     req = urllib.request.Request(base + path, data=json.dumps(body).encode(), headers={"content-type": "application/json"})
@@ -55,6 +57,8 @@ differ = []
 for name, body in cases:
     if only not in name:
         continue
+    if relaxation:
+        body = dict(body, friction_relaxation=relaxation)
     row, outcomes = [], []
     for b in bases:
         d = post(b, "/arch/live-load", body)

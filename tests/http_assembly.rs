@@ -239,6 +239,22 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
     let na = answer["load_factor"].as_f64().unwrap();
     assert!((na - by_hand).abs() < 1e-6, "{na} vs {by_hand}");
     assert_eq!(answer["solver"]["status"], "solved");
+    // `friction_relaxation: anderson`: the mixing from the first step, the same λ (to the
+    // consistency tolerance) in fewer programmes; an unknown relaxation is a 422 naming it.
+    let mut mixed = leaves.clone();
+    mixed["friction_relaxation"] = json!("anderson");
+    let (status, _, fast) = server.post("/arch/live-load", &mixed).await;
+    assert_eq!(status, 200, "{fast}");
+    assert_eq!(fast["non_associative"]["mixing_from_step"], 0, "{fast}");
+    assert!((fast["load_factor"].as_f64().unwrap() - by_hand).abs() < 1e-6);
+    let (slow, quick) = (
+        answer["solver"]["programmes"].as_u64().unwrap(),
+        fast["solver"]["programmes"].as_u64().unwrap(),
+    );
+    assert!(quick <= 12 && quick < slow, "{quick} vs {slow}");
+    mixed["friction_relaxation"] = json!("aitken");
+    let (status, content_type, problem) = server.post("/arch/live-load", &mixed).await;
+    assert_problem(status, &content_type, &problem, 422, "friction_relaxation");
 }
 
 #[tokio::test]

@@ -240,6 +240,7 @@ fn input(
         time_limit_secs,
         formulation,
         tolerance: number("solver_tolerance", fields.solver_tolerance, min, false, max)?,
+        relaxation: fields.friction_relaxation.solver(),
         ..LimitSettings::default()
     };
     Ok(ArchInput {

@@ -40,7 +40,7 @@ pub use limit::{is_squeezed, relieve_squeeze, show_least_normal_state, StateOf};
 pub use limit::{
     non_associative, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
     solve_live_load_after, solve_live_load_non_associative, ArchProblem, Crushing, Formulation,
-    InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, WarmLiveLoad, WarmStop,
+    InterfaceLimits, LimitSettings, LimitSolution, LimitStatus, Relaxation, WarmLiveLoad, WarmStop,
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{

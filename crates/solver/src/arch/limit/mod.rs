@@ -53,6 +53,7 @@ mod warm;
 
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
+    Relaxation,
 };
 pub use state::{is_squeezed, relieve_squeeze, show_least_normal_state, StateOf};
 pub use warm::{WarmLiveLoad, WarmStop};

@@ -355,6 +355,22 @@ pub struct LimitSettings {
     pub time_limit_secs: f64,
     /// Which model the programmes are written on. Defaults to [`Formulation::Chain`].
     pub formulation: Formulation,
+    /// How the non-associative iteration forms each step's normal forces. Defaults to
+    /// [`Relaxation::Paper`].
+    pub relaxation: Relaxation,
+}
+
+/// How the non-associative iteration (see [`super::non_associative`]) forms the normal forces
+/// Ñ each step's shear capacities are built from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Relaxation {
+    /// Gilbert, Casapulla & Ahmed's relaxation between the last two steps' normal forces;
+    /// where it stops without settling, the Anderson mixing takes over.
+    #[default]
+    Paper,
+    /// The Anderson mixing of the last steps from the first step on: the same fixed points in
+    /// fewer programmes.
+    Anderson,
 }
 
 /// The model of the limit-analysis programmes; both give the same answers.
@@ -375,6 +391,7 @@ impl Default for LimitSettings {
             max_iterations: 200,
             time_limit_secs: 30.0,
             formulation: Formulation::Chain,
+            relaxation: Relaxation::Paper,
         }
     }
 }
