@@ -77,6 +77,7 @@ wall = {"geometry": {"kind": "assembly",
     "supports": [{"polygon": [[-2, -1], [3, -1], [3, 0], [-2, 0]]}]},
     "friction_coefficient": 0.5, "friction": "non_associative", "loads": [{"block": 3, "x": 0, "y": 2.5, "fx": 1}]}
 bench("two leaves under a cap, non-associative (whole request: its steps)", "/arch/live-load", wall, lambda d: d["solver"]["time_ms"])
+bench("the same with friction_relaxation anderson", "/arch/live-load", dict(wall, friction_relaxation="anderson"), lambda d: d["solver"]["time_ms"])
 narrow = dict(wall, friction_coefficient=0.9, loads=[{"block": 3, "x": 0, "y": 1.5, "fx": 1}],
     geometry=dict(wall["geometry"], blocks=[{"polygon": [[0, 0], [0.3, 0], [0.3, 1], [0, 1]]}, {"polygon": [[0.3, 0], [0.6, 0], [0.6, 1], [0.3, 1]]}, {"polygon": [[0, 1], [0.6, 1], [0.6, 1.5], [0, 1.5]]}]))
 bench("leaves 0.3 × 1 under a cap, μ = 0.9, non-associative (the paper's 50 steps, then the mixing's)", "/arch/live-load", narrow, lambda d: d["solver"]["time_ms"])

@@ -76,8 +76,12 @@
 //! their neighbours, and λ enters a cycle (period 18, λ 10.41–11.70, on 2 × 20 voussoirs with
 //! ring μ 3 and 300 steps allowed). Starting from the least-normal-force associative optimum,
 //! taking each step's optimum closest to Ñ, α = 0, or a cost on the normal forces in every
-//! programme were tried (2026-11-24), and the Anderson mixing of Ñ: none settled. The answer
-//! says `not settled`.
+//! programme were tried (2026-11-24), and the Anderson mixing of Ñ, or relieving each step's
+//! squeeze (its least-normal-force state: steps with no admissible state follow): none
+//! settled. The answer says `not settled`. Under the dead load alone (2 × 40, ring μ 0.6) the
+//! steps' dead-load factor falls by about 0.85 a step towards 0 (each ring alone is too thin to
+//! stand, and the ring contacts lose the normal force their shear needs) until a step no longer
+//! solves; at ring μ 0.8 and 1.5 it settles at 1.
 //!
 //! Where the associative programme finds no collapse up to its cap on λ (a load that goes into
 //! a springing inside the friction cone), the iteration starts from the state at the cap and
