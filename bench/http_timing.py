@@ -67,6 +67,7 @@ rings = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "vouss
 bench("two staggered rings, 2 × 100 voussoirs, ring μ = 0.6: dead load", "/arch/dead-load", rings, lambda d: d["solver"]["time_ms"])
 bench("the same: live load on inner-ring block 26 (associative solve; the friction check adds its steps)", "/arch/live-load", dict(rings, loads=[{"block": 26, "fy": -1}]), lambda d: d["solver"]["time_ms"])
 bench("two staggered rings, 2 × 100, without ring friction: dead load (a self-stress at the springings: the least-normal-force state too)", "/arch/dead-load", {"geometry": rings["geometry"]}, lambda d: d["solver"]["time_ms"])
+bench("the same: live load on inner-ring block 26 (nothing slides: no friction check)", "/arch/live-load", {"geometry": rings["geometry"], "loads": [{"block": 26, "fy": -1}]}, lambda d: d["solver"]["time_ms"])
 spans = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 60, "spans": 3, "pier_width": 4, "pier_height": 6}}
 bench("three spans × 60 voussoirs on two piers: live load on block 16", "/arch/live-load", dict(spans, loads=[{"block": 16, "fy": -1}]), lambda d: d["solver"]["time_ms"])
 filled_spans = {"geometry": dict(spans["geometry"], rings=2, ring_joints="aligned"),
