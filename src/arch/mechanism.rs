@@ -110,7 +110,8 @@ pub struct NonAssociativeOutDto {
     /// The paper's relaxation stopped without settling after this many steps (50, 10 without
     /// halving its inconsistency, or a step that did not solve), and the Anderson mixing of the
     /// last three steps' normal forces took over from its last solved state, for up to as many
-    /// steps again; null when the paper's relaxation settled (or when nothing was iterated).
+    /// steps again; 0 with `friction_relaxation: anderson` (the mixing from the first step);
+    /// null when the paper's relaxation settled (or when nothing was iterated).
     #[schema(required = true)]
     pub mixing_from_step: Option<usize>,
     /// Whether it reached a state whose own normal forces carry its shear, |t| ≤ μ·N at every

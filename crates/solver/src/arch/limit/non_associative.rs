@@ -28,11 +28,10 @@
 //! Run from the first step instead ([`Relaxation::Anderson`], on request), the mixing settled
 //! all but 2 with a median of 10 programmes (1306 in all against 3092), the same λ to 2.2e-7
 //! wherever both settled; by default it is the rescue, so that every answer the paper's
-//! procedure gives is the paper's. The mixing forgets
-//! its memory every [`RESTART`] steps that do not halve the inconsistency (a fit across active
-//! sets misleads); a step of it that does not solve (a mixed Ñ can make the programme
-//! degenerate: reduced accuracy) is retried once by plain relaxation from the last step that
-//! solved.
+//! procedure gives is the paper's. The mixing forgets its memory every [`RESTART`] steps that
+//! do not halve the inconsistency (a fit across active sets misleads); a step of it that does
+//! not solve (a mixed Ñ can make the programme degenerate: reduced accuracy) is retried once by
+//! plain relaxation from the last step that solved.
 //!
 //! Without the slope (α = 0, capacities fixed outright) the programmes are degenerate in the
 //! normal forces of the joints at capacity, and the iteration lands on other fixed points: on
@@ -115,8 +114,8 @@ pub const SAME_FACTOR: f64 = 1e-8;
 /// slope.
 pub const SLOPE: f64 = 0.01;
 
-/// The paper's β: the relaxation of each step's normal forces against the Ñ it was built from
-/// (the mixing's β).
+/// The paper's β: the weight of the last step's normal forces against the step's before; the
+/// mixing's relaxation too.
 pub const RELAXATION: f64 = 0.6;
 
 /// Steps the Anderson mixing of Ñ remembers.
@@ -130,7 +129,7 @@ pub const RESTART: usize = 3;
 enum Next {
     /// The paper's relaxation between the last two steps' normal forces: the one before.
     Paper { previous: Vec<f64> },
-    /// The Anderson mixing of the last steps (the rescue).
+    /// The Anderson mixing of the last steps (the rescue, or from the first step on request).
     Mixing(Mixing),
 }
 
@@ -153,7 +152,7 @@ pub struct NonAssociative {
     /// associative solve included).
     pub totals: (u32, usize, f64),
     /// The steps of the paper's relaxation after which the Anderson mixing took over (it had
-    /// stopped without settling); `None` when it did not.
+    /// stopped without settling; 0 with [`Relaxation::Anderson`]); `None` when it did not.
     pub mixed_from: Option<usize>,
 }
 
