@@ -78,6 +78,15 @@ impl Mixing {
     }
 }
 
+/// Plain relaxation x + β(g − x), clamped to ≥ 0: what [`Mixing::next`] gives with no memory.
+pub(crate) fn relaxed(input: &[f64], output: &[f64], beta: f64) -> Vec<f64> {
+    input
+        .iter()
+        .zip(output)
+        .map(|(x, g)| (x + beta * (g - x)).max(0.0))
+        .collect()
+}
+
 fn difference(a: &[f64], b: &[f64]) -> Vec<f64> {
     a.iter().zip(b).map(|(a, b)| a - b).collect()
 }
@@ -156,5 +165,6 @@ mod tests {
         mixing.forget();
         let x = mixing.next(vec![0.0], vec![1.0], 3, 0.6);
         assert_eq!(x, vec![0.6]);
+        assert_eq!(relaxed(&[1.0, 2.0], &[3.0, -8.0], 0.5), vec![2.0, 0.0]);
     }
 }

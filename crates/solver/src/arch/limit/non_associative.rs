@@ -91,7 +91,7 @@
 //! A single step cannot lower λ below the associative answer when started from its normal
 //! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
 
-use super::mixing::Mixing;
+use super::mixing::{relaxed, Mixing};
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus, Relaxation};
 use crate::arch::equilibrium::force_scale;
 use crate::arch::mechanism::Mechanism;
@@ -312,8 +312,7 @@ pub fn iterate<E>(
                 Next::Mixing(mixing) => {
                     let Some((x, n)) = good.take() else { break };
                     mixing.forget();
-                    used = mixing.next(x, n, 0, RELAXATION);
-                    mixing.forget();
+                    used = relaxed(&x, &n, RELAXATION);
                     stalled += 1;
                 }
             }
