@@ -86,6 +86,7 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::Surface => "surface".to_owned(),
         SlopeParameter::SurfaceVertex { index } => format!("surface[{index}]"),
         SlopeParameter::MomentCentre => "moment_centre".to_owned(),
+        SlopeParameter::Search => "search".to_owned(),
     }
 }
 

@@ -29,6 +29,7 @@ pub mod openapi;
 pub mod page;
 pub mod pool;
 pub mod slope;
+pub mod stop;
 pub mod svg;
 pub mod table;
 pub mod validation;

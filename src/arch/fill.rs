@@ -2,6 +2,7 @@
 //! validation into the solver's dead and live loads.
 
 use serde::{Deserialize, Serialize};
+use thrustline_solver::arch::analysis::RollingCurve;
 use thrustline_solver::arch::fill::{
     fill_dead_loads, passive_forces, road_load_on, ExtradosFaces, ExtradosProfile, Fill, Passive,
     PassiveForce, RoadLoad,
@@ -368,4 +369,18 @@ pub struct RollingOutDto {
     /// Wall time of the first loaded stop in milliseconds: a cold start, dead-load check
     /// included, to compare with `time_per_position_ms`.
     pub first_position_ms: f64,
+}
+
+impl RollingOutDto {
+    /// The curve of a sweep over the stops at `positions`.
+    pub fn new(curve: &RollingCurve, positions: Vec<f64>) -> Self {
+        Self {
+            critical_position: curve.critical.map(|(i, _)| positions[i]),
+            critical_load_factor: curve.critical.map(|(_, f)| f),
+            positions,
+            load_factor: curve.load_factors.clone(),
+            time_per_position_ms: curve.time_per_stop_ms,
+            first_position_ms: curve.first_stop_ms,
+        }
+    }
 }

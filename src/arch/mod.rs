@@ -19,15 +19,11 @@ pub mod response;
 pub mod tables;
 
 use axum::extract::State;
-use fill::{Rolling, RollingOutDto};
-use thrustline_solver::arch::non_associative::NonAssociative;
-use thrustline_solver::arch::{
-    relieve_squeeze, solve_dead_load, solve_dead_load_non_associative, solve_live_load,
-    solve_live_load_non_associative, sweep_live_loads, thrust_line, ArchError, LimitSolution,
-    LimitStatus, SolverFailure, StateOf,
-};
+use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
+use thrustline_solver::budget::Budget;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::stop::Work;
 use crate::svg::Svg;
 use crate::table::{Answer, CsvTable};
 use crate::AppState;
@@ -200,184 +196,62 @@ pub async fn live_load_svg(
     Ok(Svg(drawing::draw(&solved, &title)))
 }
 
-/// Which of Livesley's two programmes.
+/// Which of Livesley's two programmes a route asks for.
 #[derive(Debug, Clone, Copy)]
 enum Problem {
     DeadLoad,
     LiveLoad,
 }
 
-/// Solves on the pool; the solver's time limit becomes the README's outcome rule's 422 (or 503
-/// when other solves ran beside it).
+/// The plan of a validated request: the programme (a rolling load's stops for a live load that
+/// rolls) and the treatment of friction.
+fn plan(which: Problem, input: &ArchInput) -> ArchPlan {
+    let programme = match (which, &input.rolling) {
+        (Problem::DeadLoad, _) => Programme::DeadLoad,
+        (Problem::LiveLoad, Some(rolling)) => Programme::Rolling(rolling.loads.clone()),
+        (Problem::LiveLoad, None) => Programme::LiveLoad,
+    };
+    let friction = if input.non_associative {
+        Friction::NonAssociative
+    } else {
+        Friction::Checked
+    };
+    ArchPlan {
+        programme,
+        friction,
+        settings: input.settings,
+    }
+}
+
+/// Analyses the request on the pool within the solve time limit; a stop at the limit becomes
+/// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
 async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<SolvedArch, ApiError> {
+    let plan = plan(which, &input);
+    let budget = Budget::with_time_limit(state.solve_time_limit);
+    let problem = input.problem.clone();
     let ran = state
         .pool
-        .run(move || {
-            let mut input = input;
-            let mut rolling = None;
-            let (mut solution, friction) = match (which, input.rolling.take()) {
-                (Problem::LiveLoad, Some(stops)) => match roll(&mut input, &stops) {
-                    Ok((solution, curve)) => {
-                        rolling = Some(curve);
-                        // The friction check at the critical stop, when it slides.
-                        let check = solution
-                            .mechanism
-                            .as_ref()
-                            .is_some_and(|m| m.involves_friction())
-                            .then(|| {
-                                solve_live_load_non_associative(
-                                    &input.problem,
-                                    &input.settings,
-                                    true,
-                                )
-                            })
-                            .and_then(Result::ok);
-                        (Ok(solution), check)
-                    }
-                    Err(e) => (Err(e), None),
-                },
-                _ => solve_with_friction(which, &input),
-            };
-            if let (Ok(solution), false) = (&mut solution, input.non_associative) {
-                // A state squeezed by a self-stress (assemblies) is relieved (README,
-                // Assemblies); a non-associative answer keeps its iteration's state.
-                let of = match which {
-                    Problem::DeadLoad => StateOf::DeadLoad,
-                    Problem::LiveLoad => StateOf::LiveLoad,
-                };
-                relieve_squeeze(&input.problem, &input.settings, of, solution);
-            }
-            (input, solution, rolling, friction)
-        })
+        .run(move || analyse(&problem, &plan, &budget))
         .await?;
-    let (elapsed, shared) = (ran.elapsed, ran.shared);
-    let (input, solution, rolling, friction) = ran.value;
-    let mut solution = solution?;
+    let outcome = ran.value?;
     tracing::info!(
         problem = ?which,
-        blocks = input.problem.assembly().blocks.len(),
-        iterations = solution.iterations,
-        solve_ms = elapsed.as_secs_f64() * 1e3,
-        load_factor = solution.load_factor,
+        blocks = outcome.problem.assembly().blocks.len(),
+        iterations = outcome.solution.iterations,
+        solve_ms = ran.elapsed.as_secs_f64() * 1e3,
+        load_factor = outcome.solution.load_factor,
         "arch solved"
     );
-    let mut status = ArchStatusDto::try_from(solution.status).map_err(|_| {
-        let error = ApiError::OverTimeLimit {
-            field: "geometry".to_owned(),
-            seconds: state.solve_time_limit_secs(),
+    let status = ArchStatusDto::try_from(outcome.status)
+        .ok()
+        .filter(|_| outcome.stop.is_finished());
+    let Some(status) = status else {
+        let work = Work {
+            field: "geometry",
             advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
-            busy: None,
+            no_candidate: "",
         };
-        state.pool.judge(error, shared)
-    })?;
-    if input.non_associative && friction.as_ref().is_some_and(|f| !f.settled) {
-        // No factor the iteration cannot vouch for; its steps are in `non_associative`.
-        status = ArchStatusDto::NotSettled;
-        solution.load_factor = None;
-    }
-    if solution.status == LimitStatus::Unbounded {
-        // The state at the cap of λ (the non-associative iteration's start): not an answer.
-        solution.resultants.clear();
-    }
-    let thrust_line = thrust_line(input.problem.assembly(), &solution.resultants);
-    Ok(SolvedArch {
-        input,
-        solution,
-        status,
-        thrust_line,
-        rolling,
-        friction,
-    })
-}
-
-/// One dead- or live-load solve; with friction, the non-associative iteration too (all of it
-/// for `friction: non_associative`, whose answer it then is; otherwise only when the
-/// associative mechanism slides, for `friction_may_overestimate`).
-fn solve_with_friction(
-    which: Problem,
-    input: &ArchInput,
-) -> (Result<LimitSolution, ArchError>, Option<NonAssociative>) {
-    let (problem, settings) = (&input.problem, &input.settings);
-    let check_only = !input.non_associative;
-    // The answer's solver figures count the whole iteration (the check included).
-    let pick = |o: &NonAssociative| {
-        let mut solution = if input.non_associative {
-            o.solution.clone()
-        } else {
-            o.associative.clone()
-        };
-        (
-            solution.iterations,
-            solution.programmes,
-            solution.solve_time_secs,
-        ) = o.totals;
-        solution
+        return Err(state.refuse(outcome.stop, work, ran.shared));
     };
-    match (which, problem.has_friction()) {
-        (Problem::DeadLoad, true) => {
-            let o = solve_dead_load_non_associative(problem, settings, check_only);
-            (Ok(pick(&o)), Some(o))
-        }
-        (Problem::DeadLoad, false) => (Ok(solve_dead_load(problem, settings)), None),
-        (Problem::LiveLoad, true) => {
-            match solve_live_load_non_associative(problem, settings, check_only) {
-                Ok(o) => (Ok(pick(&o)), Some(o)),
-                Err(e) => (Err(e), None),
-            }
-        }
-        (Problem::LiveLoad, false) => (solve_live_load(problem, settings), None),
-    }
-}
-
-/// Solves the live load at every stop of a rolling load; the input's problem becomes the
-/// critical stop's, whose solution is returned with the curve. A stop whose solve fails
-/// (time) fails the whole.
-fn roll(
-    input: &mut ArchInput,
-    stops: &Rolling,
-) -> Result<(LimitSolution, RollingOutDto), ArchError> {
-    let start = std::time::Instant::now();
-    let sweep = sweep_live_loads(&input.problem, &input.settings, &stops.loads)?;
-    let factors: Vec<Option<f64>> = sweep
-        .stops
-        .iter()
-        .map(|s| s.as_ref().and_then(|s| s.load_factor))
-        .collect();
-    let first_position_ms = sweep.first_stop_secs * 1e3;
-    let best = sweep.critical();
-    let elapsed_ms = start.elapsed().as_secs_f64() * 1e3;
-    let mut curve = RollingOutDto {
-        positions: stops.positions.clone(),
-        load_factor: factors,
-        critical_position: best.map(|(i, _)| stops.positions[i]),
-        critical_load_factor: best.map(|(_, f)| f),
-        time_per_position_ms: elapsed_ms / stops.positions.len().max(1) as f64,
-        first_position_ms,
-    };
-    let mut solutions = sweep.stops;
-    let critical = best
-        .filter(|_| !sweep.out_of_time)
-        .and_then(|(i, _)| solutions[i].take().map(|s| (i, s)));
-    if let Some((i, solution)) = critical {
-        input.problem = input
-            .problem
-            .clone()
-            .with_live_loads(stops.loads[i].clone())?;
-        return Ok((solution, curve));
-    }
-    // Out of time, or no stop collapses: the first loaded stop's answer (the input's problem)
-    // as the sweep found it.
-    let mut solution = solutions
-        .into_iter()
-        .flatten()
-        .next()
-        .map_or_else(|| solve_live_load(&input.problem, &input.settings), Ok)?;
-    if sweep.out_of_time {
-        // The sweep is not finished, and says so through the status.
-        curve.critical_position = None;
-        curve.critical_load_factor = None;
-        curve.time_per_position_ms = 0.0;
-        solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
-    }
-    Ok((solution, curve))
+    Ok(SolvedArch::new(input, outcome, status))
 }

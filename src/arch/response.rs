@@ -2,6 +2,7 @@
 //! blocks and interfaces numbered from 1, angles in degrees.
 
 use serde::Serialize;
+use thrustline_solver::arch::analysis::{ArchOutcome, ArchStatus};
 use thrustline_solver::arch::non_associative::NonAssociative;
 use thrustline_solver::arch::{
     support_reactions, LimitSolution, LimitStatus, SolverFailure, ThrustPoint,
@@ -79,11 +80,15 @@ pub enum ArchStatusDto {
     NotSettled,
 }
 
-impl TryFrom<LimitStatus> for ArchStatusDto {
+impl TryFrom<ArchStatus> for ArchStatusDto {
     type Error = SolverFailure;
 
-    /// The status of a solution; the time limit is not one (the service answers it 422).
-    fn try_from(status: LimitStatus) -> Result<Self, SolverFailure> {
+    /// The status of an answer; the time limit is not one (the service answers it 422).
+    fn try_from(status: ArchStatus) -> Result<Self, SolverFailure> {
+        let status = match status {
+            ArchStatus::NotSettled => return Ok(Self::NotSettled),
+            ArchStatus::Limit(status) => status,
+        };
         Ok(match status {
             LimitStatus::Solved => Self::Solved,
             LimitStatus::DeadLoadNotCarried => Self::DeadLoadNotCarried,
@@ -221,6 +226,27 @@ pub struct SolvedArch {
     pub rolling: Option<RollingOutDto>,
     /// With friction: the non-associative iteration, when it ran.
     pub friction: Option<NonAssociative>,
+}
+
+impl SolvedArch {
+    /// The answer to `input` from the analysis' `outcome` with its `status`; the problem shown
+    /// is the one answered (a rolling load's critical stop).
+    pub fn new(mut input: ArchInput, outcome: ArchOutcome, status: ArchStatusDto) -> Self {
+        let rolling = outcome
+            .rolling
+            .as_ref()
+            .zip(input.rolling.take())
+            .map(|(curve, stops)| RollingOutDto::new(curve, stops.positions));
+        input.problem = outcome.problem;
+        Self {
+            input,
+            solution: outcome.solution,
+            status,
+            thrust_line: outcome.thrust_line,
+            rolling,
+            friction: outcome.friction,
+        }
+    }
 }
 
 impl DeadLoadResponse {

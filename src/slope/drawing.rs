@@ -3,11 +3,11 @@
 
 use thrustline_solver::slope::Sliced;
 
-use super::analysed::{Analysed, PlacedCircle};
 use super::contours::{contour, refine};
 use super::fills::{layer_fills, LAYER_COLOURS};
 use super::report::SolvedSlope;
 use crate::svg::{heat, Canvas};
+use thrustline_solver::slope::analysis::{Analysed, PlacedCircle};
 
 /// What is drawn of the ground, in the request's coordinates.
 struct Scene {

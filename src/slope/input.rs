@@ -5,7 +5,6 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::slope::section::search::CircleRegion;
 use thrustline_solver::slope::section::{
     Layer, Polyline, Section, SectionParts, SectionProblem, SlipShape,
 };
@@ -13,11 +12,10 @@ use thrustline_solver::slope::{
     Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, SlopeProblem, Soil,
 };
 
-use super::analysed::Analysed;
-use super::methods::{interslice_function, MethodName};
+use super::methods::interslice_function;
 use super::request::{CircleDto, SearchDto, SpencerRequest};
 use super::section::{
-    polyline, refuse_section_only, search_region, section_from, soil as soil_from, Noncircular,
+    polyline, refuse_section_only, search_region, section_from, soil as soil_from,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -25,54 +23,7 @@ use crate::limits::{
     MAX_LENGTH, MAX_SLICES, MIN_LENGTH, SLICE_TOLERANCE,
 };
 use crate::validation::{count, finite, number};
-use thrustline_solver::slope::spencer::methods::InterSliceFunction;
-use thrustline_solver::slope::spencer::NegativeEffectiveStress;
-
-/// A validated Spencer request, ready for the solver.
-#[derive(Debug, Clone)]
-pub struct SpencerInput {
-    /// One slip surface, or a search for the critical circle.
-    pub target: Target,
-    /// With a slice tolerance: refine the slices until F settles within it.
-    pub slice_tolerance: Option<f64>,
-    /// Whether to compute Spencer's curves F_f(θ), F_m(θ).
-    pub curves: bool,
-    /// Other methods to report.
-    pub methods: Vec<MethodName>,
-    /// Morgenstern–Price's inter-slice function.
-    pub interslice_function: InterSliceFunction,
-    /// The treatment of tension at slice bases.
-    pub negative_effective_stress: NegativeEffectiveStress,
-}
-
-/// One slip surface, or a search.
-#[derive(Debug, Clone)]
-pub enum Target {
-    /// The slip surface to analyse.
-    Surface(Analysed),
-    /// The grid to search, everything but the circle, and whether the bounds were given (they
-    /// then stay put).
-    Search(SearchGrid, SearchProblem, bool),
-    /// A search over a section.
-    SectionSearch(Box<SectionSearch>),
-}
-
-/// A search for the critical circle of a section.
-#[derive(Debug, Clone)]
-pub struct SectionSearch {
-    /// The section.
-    pub section: Section,
-    /// The centres and radii.
-    pub region: CircleRegion,
-    /// Whether the bounds were given (they then stay put).
-    pub hard: bool,
-    /// Slices per circle.
-    pub slices: NonZeroUsize,
-    /// Seismic coefficients.
-    pub seismic: Seismic,
-    /// With a non-circular search: its polyline.
-    pub noncircular: Option<Noncircular>,
-}
+use thrustline_solver::slope::analysis::{Analysed, SectionSearch, SlopePlan, Target};
 
 /// The ground and soil: a section, or the simple slope with its soil.
 enum Ground {
@@ -89,8 +40,8 @@ struct Parts {
 }
 
 impl SpencerRequest {
-    /// Validates the request into the solver's input.
-    pub fn validate(&self) -> Result<SpencerInput, ApiError> {
+    /// Validates the request into the analysis' plan.
+    pub fn validate(&self) -> Result<SlopePlan, ApiError> {
         let parts = self.parts()?;
         let slice_tolerance = self
             .slice_tolerance
@@ -178,11 +129,12 @@ impl SpencerRequest {
         };
         let mut methods = self.methods.clone();
         methods.dedup();
-        Ok(SpencerInput {
+        Ok(SlopePlan {
             target,
             slice_tolerance,
+            max_slices: MAX_SLICES,
             curves: self.curves,
-            methods,
+            methods: methods.into_iter().map(Into::into).collect(),
             interslice_function: interslice_function(self.interslice_function.as_deref())?,
             negative_effective_stress: self.negative_effective_stress.into(),
         })
@@ -425,5 +377,9 @@ fn search_from(
     let hard = [search.x_min, search.x_max, search.y_min, search.y_max]
         .iter()
         .any(Option::is_some);
-    Ok(Target::Search(grid, problem, hard))
+    Ok(Target::SimpleSearch {
+        problem,
+        grid,
+        hard_bounds: hard,
+    })
 }

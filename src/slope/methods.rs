@@ -2,10 +2,8 @@
 //! same slices (SPEC §4.3).
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::slope::spencer::methods::{
-    bishop, janbu, morgenstern_price, ordinary, InterSliceFunction, MethodFactor,
-};
-use thrustline_solver::slope::{SliceModel, SpencerSolution};
+use thrustline_solver::slope::analysis::{Method, MethodFactors};
+use thrustline_solver::slope::spencer::methods::{InterSliceFunction, MethodFactor};
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
@@ -88,45 +86,35 @@ pub fn interslice_function(points: Option<&[[f64; 2]]>) -> Result<InterSliceFunc
     ))
 }
 
-/// Each method asked for on the slices of the answer; Morgenstern–Price starts from Spencer's
-/// (F, tan θ), or Bishop's F with λ = 0.
-pub fn methods(
-    names: &[MethodName],
-    function: &InterSliceFunction,
-    model: &SliceModel,
-    spencer: &SpencerSolution,
-) -> MethodsDto {
-    let dto = |m: MethodFactor| MethodDto {
-        converged: m.factor_of_safety.is_some(),
-        factor_of_safety: m.factor_of_safety,
-        lambda: m.lambda,
-    };
-    let mut out = MethodsDto::default();
-    for name in names {
+impl From<MethodName> for Method {
+    fn from(name: MethodName) -> Self {
         match name {
-            MethodName::MorgensternPrice => {
-                let starts = [
-                    spencer
-                        .factor_of_safety
-                        .zip(spencer.theta_rad.map(f64::tan)),
-                    spencer.bishop_factor_of_safety.map(|f| (f, 0.0)),
-                    Some((1.0, 0.0)),
-                ];
-                let found = starts
-                    .into_iter()
-                    .flatten()
-                    .map(|start| morgenstern_price(model, function, start))
-                    .find(|m| m.factor_of_safety.is_some());
-                out.morgenstern_price = Some(dto(found.unwrap_or(MethodFactor {
-                    factor_of_safety: None,
-                    lambda: None,
-                    iterations: 0,
-                })));
-            }
-            MethodName::Bishop => out.bishop = Some(dto(bishop(model))),
-            MethodName::Janbu => out.janbu = Some(dto(janbu(model))),
-            MethodName::Ordinary => out.ordinary = Some(dto(ordinary(model))),
+            MethodName::MorgensternPrice => Self::MorgensternPrice,
+            MethodName::Bishop => Self::Bishop,
+            MethodName::Janbu => Self::Janbu,
+            MethodName::Ordinary => Self::Ordinary,
         }
     }
-    out
+}
+
+impl MethodDto {
+    fn new(m: &MethodFactor) -> Self {
+        Self {
+            converged: m.factor_of_safety.is_some(),
+            factor_of_safety: m.factor_of_safety,
+            lambda: m.lambda,
+        }
+    }
+}
+
+impl MethodsDto {
+    /// The methods' answers as the API states them.
+    pub fn new(found: &MethodFactors) -> Self {
+        Self {
+            morgenstern_price: found.morgenstern_price.as_ref().map(MethodDto::new),
+            bishop: found.bishop.as_ref().map(MethodDto::new),
+            janbu: found.janbu.as_ref().map(MethodDto::new),
+            ordinary: found.ordinary.as_ref().map(MethodDto::new),
+        }
+    }
 }

@@ -5,7 +5,6 @@
 //! and [`drawing`] the picture, both from the solver's results. Slices are numbered from 1 at
 //! the lower end of the slip surface, as the thesis prints them.
 
-pub mod analysed;
 pub mod contours;
 pub mod drawing;
 pub mod fills;
@@ -19,30 +18,20 @@ pub mod section;
 pub mod tables;
 pub mod warnings;
 
-use std::time::{Duration, Instant};
-
 use axum::extract::State;
-use thrustline_solver::slope::{
-    factor_curves_around, refine_slices, search_critical_circle, solve_spencer, RefinementSettings,
-    RefinementStatus, SearchSettings, SearchStatus, Sliced, SlopeProblem, SolverFailure,
-    SpencerSettings,
-};
+use thrustline_solver::budget::Budget;
+use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
+use thrustline_solver::slope::Sliced;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
-use crate::limits::MAX_SLICES;
+use crate::stop::Work;
 use crate::svg::Svg;
 use crate::table::{Answer, CsvTable};
 use crate::AppState;
-use analysed::Analysed;
-use input::{SectionSearch, SpencerInput, Target};
-use report::SearchReport;
-use report::{Refinement, SolvedSlope};
+use report::SolvedSlope;
 use request::SpencerRequest;
 use response::SpencerResponse;
 use tables::{slope_table, SlopeTableQuery};
-use thrustline_solver::slope::section::noncircular::search_noncircular;
-use thrustline_solver::slope::section::search::{search_circles, CircleSearchSettings};
-use thrustline_solver::slope::section::{Polyline, SectionProblem, SlipShape};
 
 /// Spencer's method for one slip surface, or the critical circle.
 ///
@@ -136,14 +125,44 @@ pub async fn spencer_svg(
     Ok(Svg(drawing::draw(&solved, title)))
 }
 
-async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, ApiError> {
-    let time_limit = state.solve_time_limit;
-    let ran = state
-        .pool
-        .run(move || solve_blocking(input, time_limit))
-        .await?;
-    let mut solved = ran.value.map_err(|e| state.pool.judge(e, ran.shared))?;
-    solved.solve_time_ms = ran.elapsed.as_secs_f64() * 1e3;
+/// Analyses the plan on the pool within the solve time limit; a stage that stopped without an
+/// answer becomes the outcome rule's 422 naming the field that sets the work (503 when other
+/// solves ran beside it, [`AppState::refuse`]).
+async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
+    let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
+    let budget = Budget::with_time_limit(state.solve_time_limit);
+    let ran = state.pool.run(move || analyse(&plan, &budget)).await?;
+    let answer = match ran.value? {
+        SlopeOutcome::Answered(answer) => *answer,
+        SlopeOutcome::Stopped { stage, stop } => {
+            let work = match stage {
+                SlopeStage::Search if is_simple_search => Work {
+                    field: "search",
+                    advice: "use a smaller grid, fewer slices or no lower_end_factor_max",
+                    no_candidate: "no centre in the region searched gives a circle with a \
+                                   solution: widen or move the bounds (or leave them out for \
+                                   automatic ones)",
+                },
+                SlopeStage::Search => Work {
+                    field: "search",
+                    advice: "use a smaller grid, fewer radii or fewer slices",
+                    no_candidate: "no circle in the region searched cuts a sliding mass with a \
+                                   solution: widen or move the bounds or the radii (or leave \
+                                   them out)",
+                },
+                SlopeStage::Refinement => Work {
+                    field: "slice_tolerance",
+                    advice: "use a larger slice_tolerance",
+                    no_candidate: "",
+                },
+            };
+            return Err(state.refuse(stop, work, ran.shared));
+        }
+    };
+    let solved = SolvedSlope {
+        answer,
+        solve_time_ms: ran.elapsed.as_secs_f64() * 1e3,
+    };
     tracing::info!(
         slices = solved.problem.slice_count(),
         iterations = solved.solution.iterations,
@@ -153,198 +172,4 @@ async fn solve(state: &AppState, input: SpencerInput) -> Result<SolvedSlope, Api
         "spencer solved"
     );
     Ok(solved)
-}
-
-/// With automatic search bounds, circles beyond this many times the embankment's larger
-/// dimension are not candidates.
-const MAX_RADIUS_OVER_SIZE: f64 = 50.0;
-
-/// Runs on the blocking pool: the search if asked, then the full solution of the circle (refined
-/// if asked), then the curves if asked. A solver stopped by the time limit is the README's
-/// outcome rule's 422 naming the field that sets the work ([`crate::pool::SolvePool::judge`] makes it 503
-/// when other solves ran beside it).
-fn solve_blocking(input: SpencerInput, time_limit: Duration) -> Result<SolvedSlope, ApiError> {
-    let deadline = Instant::now() + time_limit;
-    let over_time = |field: &str, advice| ApiError::OverTimeLimit {
-        field: field.to_owned(),
-        seconds: time_limit.as_secs_f64(),
-        advice,
-        busy: None,
-    };
-    let spencer = SpencerSettings {
-        negative_effective_stress: input.negative_effective_stress,
-        ..SpencerSettings::default()
-    };
-    let (problem, search) =
-        match input.target {
-            Target::Surface(problem) => (problem, None),
-            Target::Search(grid, search_problem, hard_bounds) => {
-                let size = search_problem
-                    .embankment
-                    .height()
-                    .max(search_problem.embankment.length());
-                let settings = SearchSettings {
-                    time_limit: Some(time_limit),
-                    spencer,
-                    hard_bounds,
-                    // Automatic bounds may move; not to circles that dwarf the embankment.
-                    max_radius: (!hard_bounds).then_some(MAX_RADIUS_OVER_SIZE * size),
-                    ..SearchSettings::default()
-                };
-                let found = search_critical_circle(&search_problem, grid, &settings);
-                let circle = match (found.status, found.circle) {
-                    (SearchStatus::Found, Some(circle)) => circle,
-                    (SearchStatus::SolverFailed(SolverFailure::MaxTime), _) => {
-                        return Err(over_time(
-                            "search",
-                            "use a smaller grid, fewer slices or no lower_end_factor_max",
-                        ))
-                    }
-                    (
-                        SearchStatus::Found
-                        | SearchStatus::NoValidCircle
-                        | SearchStatus::SolverFailed(_),
-                        _,
-                    ) => return Err(ApiError::invalid(
-                        "search",
-                        "no centre in the region searched gives a circle with a solution: widen \
-                         or move the bounds (or leave them out for automatic ones)",
-                    )),
-                };
-                // The grid's circles start at the lower end of F_e as given (the refinement may
-                // move F_e within lower_end_factor_max; the grid does not).
-                let grid_lower_end = (
-                    -search_problem.lower_end_factor * search_problem.embankment.height() + 0.0,
-                    0.0,
-                );
-                let problem = SlopeProblem::new(
-                    search_problem.embankment,
-                    circle,
-                    search_problem.slices,
-                    search_problem.soil,
-                    search_problem.seismic,
-                    Vec::new(),
-                )?;
-                (
-                    Analysed::Simple(problem),
-                    Some(SearchReport::of_simple(&found, hard_bounds, grid_lower_end)),
-                )
-            }
-            Target::SectionSearch(search) => {
-                let settings = CircleSearchSettings {
-                    deadline: Some(deadline),
-                    spencer,
-                    ..CircleSearchSettings::default()
-                };
-                let SectionSearch {
-                    section,
-                    region,
-                    hard,
-                    slices,
-                    seismic,
-                    noncircular,
-                } = *search;
-                let found = search_circles(&section, region, hard, slices, seismic, &settings);
-                let circle = match (found.status, found.circle) {
-                    (SearchStatus::Found, Some(circle)) => circle,
-                    (SearchStatus::SolverFailed(SolverFailure::MaxTime), _) => {
-                        return Err(over_time(
-                            "search",
-                            "use a smaller grid, fewer radii or fewer slices",
-                        ))
-                    }
-                    _ => return Err(ApiError::invalid(
-                        "search",
-                        "no circle in the region searched cuts a sliding mass with a solution: \
-                         widen or move the bounds or the radii (or leave them out)",
-                    )),
-                };
-                let shape = SlipShape::Circle {
-                    centre: circle.0,
-                    radius: circle.1,
-                };
-                let mut problem = SectionProblem::new(section, shape, slices, seismic, None)?;
-                let mut report = SearchReport::of_section(&found, hard);
-                if let Some(noncircular) = noncircular {
-                    let budget = noncircular
-                        .budget
-                        .and_then(|b| std::time::Instant::now().checked_add(b))
-                        .map_or(deadline, |end| end.min(deadline));
-                    let better = search_noncircular(
-                        problem.section(),
-                        &problem.surface(),
-                        noncircular.vertices,
-                        slices,
-                        seismic,
-                        &spencer,
-                        Some(budget),
-                    );
-                    if let Some(better) = better {
-                        let line = Polyline::new(better.surface.clone())
-                            .map_err(|e| ApiError::invalid("search", e.to_string()))?;
-                        problem = SectionProblem::new(
-                            problem.section().clone(),
-                            SlipShape::Polyline(line),
-                            slices,
-                            seismic,
-                            None,
-                        )?;
-                        report.evaluations += better.evaluations;
-                        report.path = Some(better.path);
-                        report.path_ms = Some(better.path_ms);
-                        report.timed_out = better.timed_out;
-                    }
-                }
-                (Analysed::Section(Box::new(problem)), Some(report))
-            }
-        };
-    let (problem, solution, refinement) = match input.slice_tolerance {
-        None => {
-            let solution = solve_spencer(&problem.model(), &spencer);
-            (problem, solution, None)
-        }
-        Some(tolerance) => {
-            let settings = RefinementSettings {
-                max_slices: MAX_SLICES,
-                deadline: Some(deadline),
-                spencer,
-                ..RefinementSettings::new(tolerance)
-            };
-            let refined = refine_slices(problem, &settings)?;
-            let is_settled = match refined.status {
-                RefinementStatus::Settled => true,
-                RefinementStatus::SliceLimit => false,
-                RefinementStatus::SolverFailed(_) => {
-                    return Err(over_time("slice_tolerance", "use a larger slice_tolerance"))
-                }
-            };
-            let refinement = Refinement {
-                tolerance,
-                steps: refined.steps,
-                is_settled,
-            };
-            (refined.problem, refined.solution, Some(refinement))
-        }
-    };
-    let curves = match (solution.theta_rad, input.curves) {
-        (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
-        _ => None,
-    };
-    let methods = (!input.methods.is_empty()).then(|| {
-        methods::methods(
-            &input.methods,
-            &input.interslice_function,
-            &problem.model(),
-            &solution,
-        )
-    });
-    Ok(SolvedSlope {
-        problem,
-        solution,
-        search,
-        curves,
-        methods,
-        refinement,
-        solve_time_ms: 0.0,
-    })
 }

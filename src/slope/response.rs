@@ -378,7 +378,7 @@ impl SpencerResponse {
                 x_absolute: search.grid.xs.iter().map(|x| x + search.origin.0).collect(),
                 y_absolute: search.grid.ys.iter().map(|y| y + search.origin.1).collect(),
             }),
-            methods: solved.methods.clone(),
+            methods: solved.methods.as_ref().map(MethodsDto::new),
             curves: solved.curves.as_ref().map(|c| CurvesDto {
                 theta_deg: c.theta_deg.clone(),
                 force_factor: c.force_factor.clone(),

@@ -3,6 +3,7 @@
 
 use std::time::Duration;
 
+use thrustline_solver::slope::analysis::Noncircular;
 use thrustline_solver::slope::section::search::{CircleRegion, Radii};
 use thrustline_solver::slope::section::{
     Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
@@ -55,15 +56,6 @@ pub fn refuse_section_only(search: &SearchDto) -> Result<(), ApiError> {
         ));
     }
     Ok(())
-}
-
-/// A non-circular search: its polyline's vertices and its time budget.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Noncircular {
-    /// Vertices of the polyline.
-    pub vertices: usize,
-    /// The most the polyline search may spend.
-    pub budget: Option<Duration>,
 }
 
 /// The region of a search over a section, whether its bounds were given (hard), and a

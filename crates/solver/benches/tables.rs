@@ -7,6 +7,7 @@ use std::num::NonZeroUsize;
 use std::time::Instant;
 
 use thrustline_solver::arch::*;
+use thrustline_solver::budget::Budget;
 use thrustline_solver::reference::{semicircle, spencer_1967};
 use thrustline_solver::slope::*;
 
@@ -108,7 +109,7 @@ fn critical(grid_points: usize, refine: bool) -> f64 {
             ..SearchSettings::default()
         }
     };
-    search_critical_circle(&p, grid, &settings)
+    search_critical_circle(&p, grid, &settings, &Budget::unlimited())
         .factor_of_safety
         .unwrap()
 }

@@ -6,6 +6,7 @@
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
+use thrustline_solver::budget::Budget;
 use thrustline_solver::slope::section::search::{
     search_circles, CircleRegion, CircleSearchSettings,
 };
@@ -53,6 +54,7 @@ fn main() {
             NonZeroUsize::new(50).unwrap(),
             Seismic::default(),
             &CircleSearchSettings::default(),
+            &Budget::unlimited(),
         );
         println!(
             "{:.1} ms  F = {:?}  circle {:?}  evaluations {}  unsolved {}  regrids {}",

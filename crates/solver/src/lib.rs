@@ -11,6 +11,7 @@
 #![warn(missing_docs)]
 
 pub mod arch;
+pub mod budget;
 pub mod numerics;
 pub mod outcome;
 mod polygon;

@@ -3,6 +3,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::budget::Budget;
 use thrustline_solver::slope::section::noncircular::search_noncircular;
 use thrustline_solver::slope::section::search::{
     search_circles, CircleRegion, CircleSearchSettings,
@@ -56,6 +57,7 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
         slices,
         Seismic::default(),
         &CircleSearchSettings::default(),
+        &Budget::unlimited(),
     );
     let f_circle = circle.factor_of_safety.unwrap();
     let ((xc, yc), r) = circle.circle.unwrap();
@@ -78,7 +80,7 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
         slices,
         Seismic::default(),
         &SpencerSettings::default(),
-        None,
+        &Budget::unlimited(),
     )
     .unwrap();
     let f = found.factor_of_safety;

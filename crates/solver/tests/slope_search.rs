@@ -5,6 +5,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::budget::Budget;
 use thrustline_solver::reference::spencer_1967;
 use thrustline_solver::slope::*;
 
@@ -49,7 +50,7 @@ fn spencer_example_circle_lies_in_the_valley_of_the_contour_map() {
         nx: 36,
         ny: 51,
     };
-    let s = search_critical_circle(&p, grid, &SearchSettings::default());
+    let s = search_critical_circle(&p, grid, &SearchSettings::default(), &Budget::unlimited());
     let f_min = s.factor_of_safety.unwrap();
     let critical = s.circle.unwrap();
     assert!(!s.is_on_edge);
@@ -98,7 +99,7 @@ fn taylor_stability_numbers_for_toe_circles() {
             ny: 41,
             ..SearchGrid::automatic(&p.embankment, 0.0)
         };
-        let f = search_critical_circle(&p, grid, &SearchSettings::default())
+        let f = search_critical_circle(&p, grid, &SearchSettings::default(), &Budget::unlimited())
             .factor_of_safety
             .unwrap();
         let number = c / (gamma * h * f);
@@ -128,6 +129,7 @@ fn cohesionless_shallow_circle_tends_to_the_infinite_slope() {
         &p,
         SearchGrid::automatic(&p.embankment, 0.0),
         &SearchSettings::default(),
+        &Budget::unlimited(),
     );
     assert!(
         s.factor_of_safety.unwrap() >= 0.995 * infinite,
@@ -228,8 +230,13 @@ fn searching_the_lower_end_too_never_does_worse() {
         ..toe
     };
     let grid = SearchGrid::automatic(&toe.embankment, 0.0);
-    let a = search_critical_circle(&toe, grid, &SearchSettings::default());
-    let b = search_critical_circle(&free, grid, &SearchSettings::default());
+    let a = search_critical_circle(&toe, grid, &SearchSettings::default(), &Budget::unlimited());
+    let b = search_critical_circle(
+        &free,
+        grid,
+        &SearchSettings::default(),
+        &Budget::unlimited(),
+    );
     assert!(b.factor_of_safety.unwrap() <= a.factor_of_safety.unwrap() + 1e-12);
     let f_e = b.circle.unwrap().lower_end_factor;
     assert!((0.0..=1.0).contains(&f_e));
@@ -243,11 +250,14 @@ fn a_search_past_its_time_limit_says_so() {
         spencer_soil(),
         50,
     );
-    let settings = SearchSettings {
-        time_limit: Some(std::time::Duration::ZERO),
-        ..SearchSettings::default()
-    };
-    let s = search_critical_circle(&p, SearchGrid::automatic(&p.embankment, 0.0), &settings);
+    let spent = Budget::with_time_limit(std::time::Duration::ZERO);
+    let settings = SearchSettings::default();
+    let s = search_critical_circle(
+        &p,
+        SearchGrid::automatic(&p.embankment, 0.0),
+        &settings,
+        &spent,
+    );
     assert_eq!(
         s.status,
         SearchStatus::SolverFailed(thrustline_solver::outcome::SolverFailure::MaxTime)

@@ -11,6 +11,7 @@
 //! - Equilibrium of block b is written for forces in x, y and the moment about its centroid,
 //!   counter-clockwise positive: H r + λ_dead·w + λ·p = 0 with w, p the applied loads.
 //!
+//! - [`analysis`]: one analysis of a plan within a budget — what runs after what.
 //! - [`geometry`]: blocks, interfaces, the circular arch generator and block chains.
 //! - [`equilibrium`]: the sparse equilibrium matrix H and the load vectors.
 //! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
@@ -19,6 +20,7 @@
 //! - [`rolling`]: the live-load factor at each stop of a rolling load.
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
+pub mod analysis;
 pub mod chain;
 pub mod contacts;
 pub mod equilibrium;

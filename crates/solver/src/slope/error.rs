@@ -83,6 +83,8 @@ pub enum SlopeParameter {
     },
     /// The centre about which moment-only methods take moments.
     MomentCentre,
+    /// A search (what it found could not be analysed).
+    Search,
 }
 
 impl std::fmt::Display for SlopeParameter {
@@ -117,6 +119,7 @@ impl std::fmt::Display for SlopeParameter {
             Self::Surface => write!(f, "slip surface"),
             Self::SurfaceVertex { index } => write!(f, "slip surface vertex {index}"),
             Self::MomentCentre => write!(f, "moment centre"),
+            Self::Search => write!(f, "search"),
         }
     }
 }

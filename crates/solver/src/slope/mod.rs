@@ -10,7 +10,10 @@
 //! - [`spencer`]: the two equilibrium equations and their solution for (F, θ).
 //! - [`refinement`]: F made independent of the slice count by doubling the slices.
 //! - [`search`]: the critical slip circle over a grid of centres, refined.
+//! - [`section`]: any cross-section, any slip surface, and their searches.
+//! - [`analysis`]: one analysis of a plan within a budget — what runs after what.
 
+pub mod analysis;
 mod error;
 pub mod geometry;
 pub mod refinement;

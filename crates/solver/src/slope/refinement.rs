@@ -3,11 +3,11 @@
 //! F-against-N table shows the error falling as 1/N², so each doubling cuts it about fourfold).
 
 use std::num::NonZeroUsize;
-use std::time::Instant;
 
 use super::error::SlopeError;
 use super::slices::Sliced;
 use super::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
+use crate::budget::Budget;
 use crate::outcome::SolverFailure;
 
 /// Settings of a slice refinement.
@@ -17,8 +17,6 @@ pub struct RefinementSettings {
     pub tolerance: f64,
     /// No more slices than this. Defaults to 10000.
     pub max_slices: usize,
-    /// No doubling starts after this instant. Defaults to none.
-    pub deadline: Option<Instant>,
     /// Settings of each Spencer solution.
     pub spencer: SpencerSettings,
 }
@@ -29,7 +27,6 @@ impl RefinementSettings {
         Self {
             tolerance,
             max_slices: 10_000,
-            deadline: None,
             spencer: SpencerSettings::default(),
         }
     }
@@ -51,7 +48,7 @@ pub enum RefinementStatus {
     Settled,
     /// The slice limit was reached first.
     SliceLimit,
-    /// The deadline was reached first.
+    /// The budget was spent first.
     SolverFailed(SolverFailure),
 }
 
@@ -68,10 +65,12 @@ pub struct RefinedSolution<P> {
     pub steps: Vec<RefinementStep>,
 }
 
-/// Solves `problem`, then doubles its slices until F settles within the tolerance.
+/// Solves `problem`, then doubles its slices until F settles within the tolerance; no doubling
+/// starts once `budget` is spent.
 pub fn refine_slices<P: Sliced>(
     problem: P,
     settings: &RefinementSettings,
+    budget: &Budget,
 ) -> Result<RefinedSolution<P>, SlopeError> {
     let mut solution = solve_spencer(&problem.model(), &settings.spencer);
     let mut problem = problem;
@@ -85,7 +84,7 @@ pub fn refine_slices<P: Sliced>(
         let Some(doubled) = doubled else {
             break RefinementStatus::SliceLimit;
         };
-        if settings.deadline.is_some_and(|d| Instant::now() > d) {
+        if budget.is_spent() {
             break RefinementStatus::SolverFailed(SolverFailure::MaxTime);
         }
         let finer = problem.with_slices(doubled)?;
@@ -123,7 +122,8 @@ mod tests {
         // in the thesis' table) the doublings settle to 1e-5; the answer is within 5e-5 of the
         // published four digits (their rounding).
         let settings = RefinementSettings::new(1e-5);
-        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+        let refined =
+            refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited()).unwrap();
         assert_eq!(refined.status, RefinementStatus::Settled);
         let f = refined.solution.factor_of_safety.unwrap();
         assert!((f - spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-5, "F = {f}");
@@ -148,15 +148,15 @@ mod tests {
             max_slices: 80,
             ..RefinementSettings::new(1e-15)
         };
-        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+        let refined =
+            refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited()).unwrap();
         assert_eq!(refined.status, RefinementStatus::SliceLimit);
         assert_eq!(refined.steps.len(), 4); // 10, 20, 40, 80
-                                            // A deadline in the past stops before the first doubling.
-        let settings = RefinementSettings {
-            deadline: Some(Instant::now()),
-            ..RefinementSettings::new(1e-15)
-        };
-        let refined = refine_slices(spencer_1967::problem(10), &settings).unwrap();
+
+        // A spent budget stops before the first doubling.
+        let spent = Budget::with_time_limit(std::time::Duration::ZERO);
+        let settings = RefinementSettings::new(1e-15);
+        let refined = refine_slices(spencer_1967::problem(10), &settings, &spent).unwrap();
         assert_eq!(
             refined.status,
             RefinementStatus::SolverFailed(SolverFailure::MaxTime)
@@ -173,6 +173,11 @@ mod tests {
             fy: -1.0,
             moment: 0.0,
         });
-        assert!(refine_slices(problem, &RefinementSettings::new(1e-4)).is_err());
+        assert!(refine_slices(
+            problem,
+            &RefinementSettings::new(1e-4),
+            &Budget::unlimited()
+        )
+        .is_err());
     }
 }

@@ -13,6 +13,7 @@ use std::num::NonZeroUsize;
 use rayon::prelude::*;
 
 use super::geometry::{Embankment, SlipCircle};
+use crate::budget::Budget;
 use crate::numerics::{nelder_mead, Minimum};
 use crate::outcome::SolverFailure;
 
@@ -110,9 +111,6 @@ pub struct SearchSettings {
     pub max_regrids: usize,
     /// Nelder–Mead evaluations per start. Defaults to 300.
     pub max_refine_evaluations: usize,
-    /// Wall-time limit of the whole search; circles not evaluated by then count as invalid and
-    /// the solution says it timed out. Defaults to none.
-    pub time_limit: Option<std::time::Duration>,
     /// Whether the grid's bounds were given: they then stay put (no regrids) and the refined
     /// centre stays inside them. Defaults to false.
     pub hard_bounds: bool,
@@ -128,7 +126,6 @@ impl Default for SearchSettings {
             starts: 3,
             max_regrids: 4,
             max_refine_evaluations: 300,
-            time_limit: None,
             hard_bounds: false,
             max_radius: None,
         }
@@ -219,18 +216,9 @@ fn within_reach(circle: SlipCircle, max_radius: Option<f64>) -> bool {
     max_radius.is_none_or(|m| circle.x.hypot(circle.y) <= m)
 }
 
-/// An optional instant after which no more circles are evaluated.
-struct Deadline(Option<std::time::Instant>);
-
-impl Deadline {
-    fn is_past(&self) -> bool {
-        self.0.is_some_and(|d| std::time::Instant::now() >= d)
-    }
-}
-
-/// `otherwise`, unless the deadline cut the search short.
-fn status(deadline: &Deadline, otherwise: SearchStatus) -> SearchStatus {
-    if deadline.is_past() {
+/// `otherwise`, unless the budget cut the search short.
+fn status(budget: &Budget, otherwise: SearchStatus) -> SearchStatus {
+    if budget.is_spent() {
         SearchStatus::SolverFailed(SolverFailure::MaxTime)
     } else {
         otherwise
@@ -244,7 +232,7 @@ fn evaluate_grid(
     problem: &SearchProblem,
     grid: &SearchGrid,
     settings: &SearchSettings,
-    deadline: &Deadline,
+    budget: &Budget,
 ) -> (FactorGrid, Outcomes) {
     let (xs, ys) = (grid.xs(), grid.ys());
     let outcomes: Outcomes = ys
@@ -252,7 +240,7 @@ fn evaluate_grid(
         .map(|&y| {
             xs.iter()
                 .map(|&x| {
-                    if deadline.is_past() {
+                    if budget.is_spent() {
                         return Err(None);
                     }
                     let circle = SlipCircle {
@@ -301,22 +289,19 @@ pub(crate) fn unsolved_summary(
     (count, least, near)
 }
 
-/// Searches the critical circle over `grid` (moving it when the minimum is on its edge).
+/// Searches the critical circle over `grid` (moving it when the minimum is on its edge), within
+/// `budget`: circles not evaluated by its end count as invalid and the status says so.
 pub fn search_critical_circle(
     problem: &SearchProblem,
     grid: SearchGrid,
     settings: &SearchSettings,
+    budget: &Budget,
 ) -> SearchSolution {
-    let deadline = Deadline(
-        settings
-            .time_limit
-            .map(|limit| std::time::Instant::now() + limit),
-    );
     let mut grid = grid;
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let (factors, outcomes) = evaluate_grid(problem, &grid, settings, &deadline);
+        let (factors, outcomes) = evaluate_grid(problem, &grid, settings, budget);
         evaluations += grid.nx * grid.ny;
         let mut points: Vec<(f64, usize, usize)> = factors
             .factors
@@ -332,7 +317,7 @@ pub fn search_critical_circle(
         let Some(&(_, bi, bj)) = points.first() else {
             let (unsolved, unsolved_bishop_minimum, _) = unsolved_summary(&outcomes, (0, 0));
             return SearchSolution {
-                status: status(&deadline, SearchStatus::NoValidCircle),
+                status: status(budget, SearchStatus::NoValidCircle),
                 circle: None,
                 factor_of_safety: None,
                 grid: factors,
@@ -368,7 +353,7 @@ pub fn search_critical_circle(
                     lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
                 };
                 let objective = |v: &[f64]| {
-                    if deadline.is_past() {
+                    if budget.is_spent() {
                         return f64::INFINITY;
                     }
                     let outside = v[0] < grid.x_min
@@ -444,7 +429,7 @@ pub fn search_critical_circle(
         if (on_edge || outside)
             && !settings.hard_bounds
             && regrids < settings.max_regrids
-            && !deadline.is_past()
+            && !budget.is_spent()
         {
             // Centre a grid of the same size on the best point found.
             let (half_x, half_y) = (
@@ -465,7 +450,7 @@ pub fn search_critical_circle(
         let (unsolved, unsolved_bishop_minimum, unsolved_near_minimum) =
             unsolved_summary(&outcomes, (bi, bj));
         return SearchSolution {
-            status: status(&deadline, SearchStatus::Found),
+            status: status(budget, SearchStatus::Found),
             circle: Some(circle),
             factor_of_safety: Some(f),
             grid: factors,

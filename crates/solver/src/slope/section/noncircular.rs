@@ -15,6 +15,7 @@ use super::blocks;
 use super::cut::place;
 use super::polyline::Polyline;
 use super::{Section, SlipShape};
+use crate::budget::Budget;
 use crate::numerics::nelder_mead;
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
 
@@ -209,7 +210,8 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<Vec<(
 }
 
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
-/// the best block surface along the section's layer boundaries when that is lower.
+/// the best block surface along the section's layer boundaries when that is lower. Once `budget`
+/// is spent every trial fails, so that the optimisers stop with the best found so far.
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
@@ -217,7 +219,7 @@ pub fn search_noncircular(
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &SpencerSettings,
-    deadline: Option<Instant>,
+    budget: &Budget,
 ) -> Option<NoncircularSearch> {
     let mirror = section.mirrored();
     // Trial surfaces without a Newton solution are skipped rather than searched for one.
@@ -226,7 +228,7 @@ pub fn search_noncircular(
         ..*settings
     };
     let evaluations = std::cell::Cell::new(0usize);
-    let late = || deadline.is_some_and(|d| Instant::now() >= d);
+    let late = || budget.is_spent();
     // A trial's F at the search's slices, if four times as many give it again (to 1 %): a
     // surface can have a root at one slicing only, which an optimiser would happily exploit.
     let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);

@@ -8,12 +8,12 @@
 //! but have no solution are counted, and flagged when they lie next to the minimum.
 
 use std::num::NonZeroUsize;
-use std::time::Instant;
 
 use rayon::prelude::*;
 
 use super::cut::place;
 use super::{Section, SlipShape};
+use crate::budget::Budget;
 use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
 use crate::slope::search::{spaced, FactorGrid, SearchStatus};
@@ -123,8 +123,6 @@ pub struct CircleSearchSettings {
     pub max_refine_evaluations: usize,
     /// Times automatic bounds may move. Defaults to 3.
     pub max_regrids: usize,
-    /// No circle is evaluated after this instant; the search then says it ran out of time.
-    pub deadline: Option<Instant>,
 }
 
 impl Default for CircleSearchSettings {
@@ -134,7 +132,6 @@ impl Default for CircleSearchSettings {
             starts: 3,
             max_refine_evaluations: 400,
             max_regrids: 3,
-            deadline: None,
         }
     }
 }
@@ -177,14 +174,14 @@ struct Evaluator<'a> {
     slices: NonZeroUsize,
     seismic: Seismic,
     spencer: SpencerSettings,
-    deadline: Option<Instant>,
+    budget: &'a Budget,
     /// Lowest y a circle may usefully reach (automatic radii).
     deep: f64,
 }
 
 impl Evaluator<'_> {
     fn is_late(&self) -> bool {
-        self.deadline.is_some_and(|d| Instant::now() >= d)
+        self.budget.is_spent()
     }
 
     fn factor(&self, centre: (f64, f64), radius: f64) -> Outcome {
@@ -235,7 +232,8 @@ impl Evaluator<'_> {
 type CentreResult = (Option<(f64, f64)>, usize, Option<f64>);
 
 /// Searches the critical circle of `section` over `region`; `hard` bounds stay put, automatic
-/// ones move when the minimum lies on their edge.
+/// ones move when the minimum lies on their edge. No circle is evaluated once `budget` is spent;
+/// the search then says it ran out of time.
 pub fn search_circles(
     section: &Section,
     region: CircleRegion,
@@ -243,6 +241,7 @@ pub fn search_circles(
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &CircleSearchSettings,
+    budget: &Budget,
 ) -> CircleSearch {
     let (_, _, y_low, y_top) = relief(section);
     let deep = section
@@ -257,7 +256,7 @@ pub fn search_circles(
         slices,
         seismic,
         spencer: settings.spencer,
-        deadline: settings.deadline,
+        budget,
         deep,
     };
     let mut region = region;

@@ -4,6 +4,7 @@ use std::num::NonZeroUsize;
 
 use super::search::{search_circles, CircleRegion, CircleSearch, CircleSearchSettings, Radii};
 use super::*;
+use crate::budget::Budget;
 use crate::slope::search::SearchStatus;
 use crate::slope::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
 
@@ -371,6 +372,7 @@ fn acads_search(region: CircleRegion, hard: bool) -> CircleSearch {
         NonZeroUsize::new(50).unwrap(),
         Seismic::default(),
         &CircleSearchSettings::default(),
+        &Budget::unlimited(),
     )
 }
 

@@ -1,16 +1,18 @@
-//! The slip surface a request analyses: on the simple embankment (the thesis' relative circle)
-//! or on a section; what the response and the drawing read of it, in the request's coordinates.
+//! The slip surface an analysis answers: on the simple embankment (the thesis' relative circle)
+//! or on a section; what an answer and its drawing read of it, in the caller's coordinates.
 
 use std::borrow::Cow;
 use std::num::NonZeroUsize;
 
-use thrustline_solver::slope::section::{SectionProblem, SlipShape};
-use thrustline_solver::slope::{SliceModel, Sliced, SlopeError, SlopeProblem};
+use crate::slope::section::{SectionProblem, SlipShape};
+use crate::slope::slices::{SliceModel, Sliced};
+use crate::slope::spencer::SlopeProblem;
+use crate::slope::SlopeError;
 
 /// One slip surface on the simple embankment (the thesis' relative circle) or on a section.
 #[derive(Debug, Clone)]
 pub enum Analysed {
-    /// The simple form of SPEC §2 with a relative circle.
+    /// The simple embankment with a circle relative to its lower end.
     Simple(SlopeProblem),
     /// A section (or the simple slope as one) with an absolute circle or a polyline.
     Section(Box<SectionProblem>),

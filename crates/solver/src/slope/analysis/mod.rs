@@ -1,0 +1,186 @@
+//! One slope analysis: a [`SlopePlan`] (every option resolved into what will run) analysed
+//! within a [`Budget`] into a [`SlopeOutcome`].
+//!
+//! What runs after what is written here once: the search for the critical circle (the simple
+//! slope's or a section's), the non-circular stage that starts from the best circle, the
+//! refinement of the slices, Spencer's curves and the methods side by side on the answered
+//! slices. Studies, design checks and batches call [`analyse`] as the service does.
+
+pub mod methods;
+pub mod report;
+mod search;
+pub mod surface;
+
+use std::num::NonZeroUsize;
+use std::time::Duration;
+
+use crate::budget::{Budget, Stop};
+use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStatus};
+use crate::slope::search::{SearchGrid, SearchProblem};
+use crate::slope::section::search::CircleRegion;
+use crate::slope::section::Section;
+use crate::slope::slices::Sliced;
+use crate::slope::spencer::methods::InterSliceFunction;
+use crate::slope::spencer::{
+    factor_curves_around, solve_spencer, NegativeEffectiveStress, Seismic, SpencerSettings,
+};
+use crate::slope::SlopeError;
+pub use methods::{Method, MethodFactors};
+pub use report::{Refinement, SearchReport, SlopeAnswer, SlopeOutcome, SlopeStage};
+pub use surface::{Analysed, PlacedCircle};
+
+/// What an analysis answers: one given surface, or the critical one of a search.
+#[derive(Debug, Clone)]
+pub enum Target {
+    /// One slip surface.
+    Surface(Analysed),
+    /// The critical circle of the simple slope over a grid of centres (relative to the lower
+    /// end); `hard_bounds`: the grid was given and stays put.
+    SimpleSearch {
+        /// Everything but the circle.
+        problem: SearchProblem,
+        /// The centres.
+        grid: SearchGrid,
+        /// Whether the bounds were given.
+        hard_bounds: bool,
+    },
+    /// The critical circle of a section, then perhaps a non-circular surface.
+    SectionSearch(Box<SectionSearch>),
+}
+
+/// A search for the critical circle of a section.
+#[derive(Debug, Clone)]
+pub struct SectionSearch {
+    /// The section.
+    pub section: Section,
+    /// The centres and radii.
+    pub region: CircleRegion,
+    /// Whether the bounds were given (they then stay put).
+    pub hard: bool,
+    /// Slices per surface.
+    pub slices: NonZeroUsize,
+    /// Seismic coefficients.
+    pub seismic: Seismic,
+    /// With a non-circular stage: its polyline.
+    pub noncircular: Option<Noncircular>,
+}
+
+/// The non-circular stage: a polyline of `vertices` points, moved from the best circle's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Noncircular {
+    /// Vertices of the polyline.
+    pub vertices: usize,
+    /// The most the stage may spend (within the analysis' own budget).
+    pub budget: Option<Duration>,
+}
+
+/// Every option of a slope analysis, resolved.
+#[derive(Debug, Clone)]
+pub struct SlopePlan {
+    /// The surface, or the search.
+    pub target: Target,
+    /// With a tolerance: the slices are doubled from the target's until F settles within it.
+    pub slice_tolerance: Option<f64>,
+    /// The most slices a refinement may reach.
+    pub max_slices: usize,
+    /// Whether to compute Spencer's curves F_f(θ), F_m(θ) around the answer.
+    pub curves: bool,
+    /// The other methods to answer beside Spencer's.
+    pub methods: Vec<Method>,
+    /// Morgenstern–Price's inter-slice function.
+    pub interslice_function: InterSliceFunction,
+    /// The treatment of tension at slice bases, in every method and every search.
+    pub negative_effective_stress: NegativeEffectiveStress,
+}
+
+impl SlopePlan {
+    /// A plan that answers `target` with Spencer's method alone.
+    pub fn spencer(target: Target) -> Self {
+        Self {
+            target,
+            slice_tolerance: None,
+            max_slices: 10_000,
+            curves: false,
+            methods: Vec::new(),
+            interslice_function: InterSliceFunction::HalfSine,
+            negative_effective_stress: NegativeEffectiveStress::Keep,
+        }
+    }
+}
+
+/// Analyses `plan` within `budget`: the search (if any), the answered surface's solution
+/// (refined if planned), then the curves and methods planned. `Err` only for input the solver
+/// cannot accept; a stage stopped by the budget, or a search without a candidate, is an outcome.
+pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeError> {
+    let spencer = SpencerSettings {
+        negative_effective_stress: plan.negative_effective_stress,
+        ..SpencerSettings::default()
+    };
+    let (problem, search) = match &plan.target {
+        Target::Surface(problem) => (problem.clone(), None),
+        Target::SimpleSearch {
+            problem,
+            grid,
+            hard_bounds,
+        } => match search::simple(problem, *grid, *hard_bounds, &spencer, budget)? {
+            Ok((problem, report)) => (problem, Some(report)),
+            Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
+        },
+        Target::SectionSearch(plan) => match search::section(plan, &spencer, budget)? {
+            Ok((problem, report)) => (problem, Some(report)),
+            Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
+        },
+    };
+    let (problem, solution, refinement) = match plan.slice_tolerance {
+        None => {
+            let solution = solve_spencer(&problem.model(), &spencer);
+            (problem, solution, None)
+        }
+        Some(tolerance) => {
+            let settings = RefinementSettings {
+                max_slices: plan.max_slices,
+                spencer,
+                ..RefinementSettings::new(tolerance)
+            };
+            let refined = refine_slices(problem, &settings, budget)?;
+            let is_settled = match refined.status {
+                RefinementStatus::Settled => true,
+                RefinementStatus::SliceLimit => false,
+                RefinementStatus::SolverFailed(_) => {
+                    let stop = budget.check().err().unwrap_or(Stop::TimeLimit);
+                    return Ok(stopped(SlopeStage::Refinement, stop));
+                }
+            };
+            let refinement = Refinement {
+                tolerance,
+                steps: refined.steps,
+                is_settled,
+            };
+            (refined.problem, refined.solution, Some(refinement))
+        }
+    };
+    let curves = match (solution.theta_rad, plan.curves) {
+        (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
+        _ => None,
+    };
+    let methods = (!plan.methods.is_empty()).then(|| {
+        methods::side_by_side(
+            &plan.methods,
+            &plan.interslice_function,
+            &problem.model(),
+            &solution,
+        )
+    });
+    Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
+        problem,
+        solution,
+        search,
+        curves,
+        methods,
+        refinement,
+    })))
+}
+
+fn stopped(stage: SlopeStage, stop: Stop) -> SlopeOutcome {
+    SlopeOutcome::Stopped { stage, stop }
+}

@@ -1,0 +1,135 @@
+//! The search stages of a slope analysis: the simple slope's critical circle, and a section's
+//! critical circle followed by the non-circular stage when planned. Each answers the surface
+//! found (rebuilt at the plan's slices) with its report, or the stop that left it without one.
+
+use super::report::SearchReport;
+use super::surface::Analysed;
+use super::SectionSearch;
+use crate::budget::{Budget, Stop};
+use crate::slope::search::{
+    search_critical_circle, SearchGrid, SearchProblem, SearchSettings, SearchStatus,
+};
+use crate::slope::section::noncircular::search_noncircular;
+use crate::slope::section::search::{search_circles, CircleSearchSettings};
+use crate::slope::section::{Polyline, SectionProblem, SlipShape};
+use crate::slope::spencer::{SlopeProblem, SpencerSettings};
+use crate::slope::{SlopeError, SlopeParameter};
+
+/// With automatic search bounds, circles beyond this many times the embankment's larger
+/// dimension are not candidates (a radius that dwarfs it is a plane, not a slip circle of it).
+const MAX_RADIUS_OVER_SIZE: f64 = 50.0;
+
+/// What a search stage gives: the surface found with its report, or why there is none.
+pub(super) type Found = Result<(Analysed, SearchReport), Stop>;
+
+/// The stop of a search that found nothing: the budget's reason when it is spent, else no
+/// candidate.
+fn no_circle(status: SearchStatus, budget: &Budget) -> Stop {
+    match (status, budget.check()) {
+        (_, Err(stop)) => stop,
+        (SearchStatus::SolverFailed(crate::outcome::SolverFailure::MaxTime), Ok(())) => {
+            Stop::TimeLimit
+        }
+        (SearchStatus::Found | SearchStatus::NoValidCircle | SearchStatus::SolverFailed(_), _) => {
+            Stop::NoCandidate
+        }
+    }
+}
+
+/// The simple slope's critical circle over `grid`.
+pub(super) fn simple(
+    problem: &SearchProblem,
+    grid: SearchGrid,
+    hard_bounds: bool,
+    spencer: &SpencerSettings,
+    budget: &Budget,
+) -> Result<Found, SlopeError> {
+    let size = problem.embankment.height().max(problem.embankment.length());
+    let settings = SearchSettings {
+        spencer: *spencer,
+        hard_bounds,
+        // Automatic bounds may move; not to circles that dwarf the embankment.
+        max_radius: (!hard_bounds).then_some(MAX_RADIUS_OVER_SIZE * size),
+        ..SearchSettings::default()
+    };
+    let found = search_critical_circle(problem, grid, &settings, budget);
+    let circle = match (found.status, found.circle) {
+        (SearchStatus::Found, Some(circle)) => circle,
+        (status, _) => return Ok(Err(no_circle(status, budget))),
+    };
+    // The grid's circles start at the lower end of F_e as given (the refinement may move F_e
+    // within lower_end_factor_max; the grid does not).
+    let grid_lower_end = (
+        -problem.lower_end_factor * problem.embankment.height() + 0.0,
+        0.0,
+    );
+    let answered = SlopeProblem::new(
+        problem.embankment,
+        circle,
+        problem.slices,
+        problem.soil,
+        problem.seismic,
+        Vec::new(),
+    )?;
+    let report = SearchReport::of_simple(&found, hard_bounds, grid_lower_end);
+    Ok(Ok((Analysed::Simple(answered), report)))
+}
+
+/// A section's critical circle, then the non-circular stage from it when planned.
+pub(super) fn section(
+    plan: &SectionSearch,
+    spencer: &SpencerSettings,
+    budget: &Budget,
+) -> Result<Found, SlopeError> {
+    let settings = CircleSearchSettings {
+        spencer: *spencer,
+        ..CircleSearchSettings::default()
+    };
+    let found = search_circles(
+        &plan.section,
+        plan.region.clone(),
+        plan.hard,
+        plan.slices,
+        plan.seismic,
+        &settings,
+        budget,
+    );
+    let (centre, radius) = match (found.status, found.circle) {
+        (SearchStatus::Found, Some(circle)) => circle,
+        (status, _) => return Ok(Err(no_circle(status, budget))),
+    };
+    let shape = SlipShape::Circle { centre, radius };
+    let mut problem =
+        SectionProblem::new(plan.section.clone(), shape, plan.slices, plan.seismic, None)?;
+    let mut report = SearchReport::of_section(&found, plan.hard);
+    if let Some(noncircular) = plan.noncircular {
+        let stage_budget = budget.narrowed(noncircular.budget);
+        let better = search_noncircular(
+            problem.section(),
+            &problem.surface(),
+            noncircular.vertices,
+            plan.slices,
+            plan.seismic,
+            spencer,
+            &stage_budget,
+        );
+        if let Some(better) = better {
+            let line = Polyline::new(better.surface.clone()).map_err(|e| SlopeError::Conflict {
+                parameter: SlopeParameter::Search,
+                reason: e.to_string(),
+            })?;
+            problem = SectionProblem::new(
+                problem.section().clone(),
+                SlipShape::Polyline(line),
+                plan.slices,
+                plan.seismic,
+                None,
+            )?;
+            report.evaluations += better.evaluations;
+            report.path = Some(better.path);
+            report.path_ms = Some(better.path_ms);
+            report.timed_out = better.timed_out;
+        }
+    }
+    Ok(Ok((Analysed::Section(Box::new(problem)), report)))
+}
