@@ -1,5 +1,6 @@
-//! The layout rules of the code (issue #11): no two modules import each other, and every file is
-//! short enough to read in one sitting (the service's at most 450 lines, the solver's 600).
+//! The layout rules of the code: no import cycle of any length, no function over 100 lines, and
+//! every file short enough to read in one sitting (the service's at most 450 lines, the
+//! solver's 600).
 //!
 //! A module's imports are the `use` paths that start with `crate::`, `super::` or `self::`,
 //! resolved to the longest module prefix that is a file of the crate (an item re-exported by a
@@ -132,7 +133,7 @@ fn imports(root: &Path) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
             let source = std::fs::read_to_string(file).unwrap();
             // Inline test modules come last; their `super` is the file itself.
             let source = source
-                .split("#[cfg(test)]\nmod tests")
+                .split("#[cfg(test)]\nmod tests {")
                 .next()
                 .unwrap_or_default();
             let targets = use_paths(source)
@@ -145,17 +146,125 @@ fn imports(root: &Path) -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
         .collect()
 }
 
-fn mutual_imports(root: &Path) -> Vec<String> {
+/// Every import cycle of any length: the strongly connected components of the import graph
+/// with more than one module (Tarjan's algorithm), each listed by its modules.
+fn import_cycles(root: &Path) -> Vec<String> {
     let graph = imports(root);
-    let mut pairs = Vec::new();
-    for (a, targets) in &graph {
-        for b in targets {
-            if a < b && graph.get(b).is_some_and(|t| t.contains(a)) {
-                pairs.push(format!("{} <-> {}", a.join("::"), b.join("::")));
+    let names: Vec<&Vec<String>> = graph.keys().collect();
+    let index_of: BTreeMap<&Vec<String>, usize> =
+        names.iter().enumerate().map(|(i, n)| (*n, i)).collect();
+    let edges: Vec<Vec<usize>> = names
+        .iter()
+        .map(|n| {
+            graph[*n]
+                .iter()
+                .filter_map(|t| index_of.get(t).copied())
+                .collect()
+        })
+        .collect();
+    let mut tarjan = Tarjan {
+        edges: &edges,
+        index: vec![None; names.len()],
+        low: vec![0; names.len()],
+        on_stack: vec![false; names.len()],
+        stack: Vec::new(),
+        next: 0,
+        components: Vec::new(),
+    };
+    for v in 0..names.len() {
+        if tarjan.index[v].is_none() {
+            tarjan.visit(v);
+        }
+    }
+    tarjan
+        .components
+        .into_iter()
+        .filter(|c| c.len() > 1)
+        .map(|mut c| {
+            c.sort_unstable();
+            c.iter()
+                .map(|&i| names[i].join("::"))
+                .collect::<Vec<_>>()
+                .join(" -> ")
+        })
+        .collect()
+}
+
+struct Tarjan<'a> {
+    edges: &'a [Vec<usize>],
+    index: Vec<Option<usize>>,
+    low: Vec<usize>,
+    on_stack: Vec<bool>,
+    stack: Vec<usize>,
+    next: usize,
+    components: Vec<Vec<usize>>,
+}
+
+impl Tarjan<'_> {
+    fn visit(&mut self, v: usize) {
+        self.index[v] = Some(self.next);
+        self.low[v] = self.next;
+        self.next += 1;
+        self.stack.push(v);
+        self.on_stack[v] = true;
+        for &w in &self.edges[v] {
+            match self.index[w] {
+                None => {
+                    self.visit(w);
+                    self.low[v] = self.low[v].min(self.low[w]);
+                }
+                Some(iw) if self.on_stack[w] => self.low[v] = self.low[v].min(iw),
+                Some(_) => {}
+            }
+        }
+        if Some(self.low[v]) == self.index[v] {
+            let mut component = Vec::new();
+            while let Some(w) = self.stack.pop() {
+                self.on_stack[w] = false;
+                component.push(w);
+                if w == v {
+                    break;
+                }
+            }
+            self.components.push(component);
+        }
+    }
+}
+
+/// Functions outside test code longer than `limit` lines: `fn` items found by their opening
+/// line, measured to the closing brace at their own indentation.
+fn long_functions(root: &Path, limit: usize) -> Vec<String> {
+    let mut found = Vec::new();
+    for file in modules(root).values() {
+        let source = std::fs::read_to_string(file).unwrap();
+        let source = source.split("#[cfg(test)]").next().unwrap_or_default();
+        let lines: Vec<&str> = source.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            let trimmed = line.trim_start();
+            let is_fn = [
+                "fn ",
+                "pub fn ",
+                "pub(crate) fn ",
+                "pub(super) fn ",
+                "async fn ",
+                "pub async fn ",
+            ]
+            .iter()
+            .any(|p| trimmed.starts_with(p));
+            if !is_fn || trimmed.ends_with(';') {
+                continue;
+            }
+            let indent = line.len() - trimmed.len();
+            let close = format!("{}}}", " ".repeat(indent));
+            let Some(end) = lines[i + 1..].iter().position(|l| *l == close) else {
+                continue;
+            };
+            if end + 2 > limit {
+                found.push(format!("{}:{} ({} lines)", file.display(), i + 1, end + 2));
             }
         }
     }
-    pairs
+    found
 }
 
 fn long_files(root: &Path, limit: usize) -> Vec<String> {
@@ -173,12 +282,20 @@ fn crate_root(relative: &str) -> PathBuf {
 }
 
 #[test]
-fn no_two_modules_import_each_other() {
+fn no_import_cycle_of_any_length() {
     for root in ["src", "crates/solver/src"] {
-        let pairs = mutual_imports(&crate_root(root));
+        let cycles = import_cycles(&crate_root(root));
+        assert!(cycles.is_empty(), "{root}: import cycles: {cycles:?}");
+    }
+}
+
+#[test]
+fn no_function_over_a_hundred_lines() {
+    for root in ["src", "crates/solver/src"] {
+        let long = long_functions(&crate_root(root), 100);
         assert!(
-            pairs.is_empty(),
-            "{root}: modules importing each other: {pairs:?}"
+            long.is_empty(),
+            "{root}: functions over 100 lines: {long:?}"
         );
     }
 }
@@ -200,9 +317,22 @@ fn the_check_sees_a_circle_and_a_grouped_import() {
     let dir = std::env::temp_dir().join(format!("thrustline-layout-{}", std::process::id()));
     std::fs::create_dir_all(dir.join("a")).unwrap();
     std::fs::write(dir.join("lib.rs"), "mod a;\n").unwrap();
-    std::fs::write(dir.join("a/mod.rs"), "mod b;\nuse b::X;\n").unwrap();
+    std::fs::write(
+        dir.join("a/mod.rs"),
+        "mod b;\nmod c;\nmod d;\nmod e;\nuse b::X;\n",
+    )
+    .unwrap();
     std::fs::write(dir.join("a/b.rs"), "use super::Z;\npub struct X;\n").unwrap();
-    let pairs = mutual_imports(&dir);
+    std::fs::write(dir.join("a/c.rs"), "use super::d::Y;\npub struct Z;\n").unwrap();
+    std::fs::write(dir.join("a/d.rs"), "use super::e::W;\npub struct Y;\n").unwrap();
+    std::fs::write(dir.join("a/e.rs"), "use super::c::Z;\npub struct W;\n").unwrap();
+    let cycles = import_cycles(&dir);
     std::fs::remove_dir_all(&dir).unwrap();
-    assert_eq!(pairs, ["a <-> a::b"]);
+    // The pair, and a cycle of three that no pair check sees.
+    assert_eq!(cycles.len(), 2, "{cycles:?}");
+    assert!(cycles.contains(&"a -> a::b".to_owned()), "{cycles:?}");
+    assert!(
+        cycles.contains(&"a::c -> a::d -> a::e".to_owned()),
+        "{cycles:?}"
+    );
 }

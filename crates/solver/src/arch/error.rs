@@ -1,6 +1,6 @@
 //! Input the arch solver cannot accept, naming the offending input by what it is.
 
-use super::mechanism::{Bound, Resultant};
+use super::resultant::{Bound, Resultant};
 
 /// An input of the arch solver, named by what it is (the service maps it to its request field).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -31,6 +31,7 @@ pub mod geometry;
 pub mod limit;
 pub mod mechanism;
 pub mod minimum_thickness;
+pub mod resultant;
 pub mod rolling;
 pub mod thrust_line;
 

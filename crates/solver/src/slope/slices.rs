@@ -6,8 +6,7 @@
 use std::borrow::Cow;
 use std::num::NonZeroUsize;
 
-use super::error::SlopeError;
-use super::spencer::{ExternalLoad, Seismic};
+use super::error::{check_range, SlopeError, SlopeParameter};
 
 /// One vertical slice: its geometry, weight, base strength and pore pressure.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,4 +95,51 @@ pub trait Sliced: Sized {
     fn slice_count(&self) -> usize;
     /// The same surface cut into (about) `slices` slices.
     fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError>;
+}
+
+/// Pseudo-static seismic coefficients: k_h·W towards the toe and k_v·W downwards, at the slice
+/// centroids.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Seismic {
+    /// Horizontal coefficient k_h (≥ 0 acts towards the toe).
+    pub kh: f64,
+    /// Vertical coefficient k_v (positive downwards).
+    pub kv: f64,
+}
+
+impl Seismic {
+    /// Seismic coefficients −10 ≤ k_h ≤ 10 and −0.99 ≤ k_v ≤ 10 (k_v > −1 keeps gravity acting).
+    pub fn new(kh: f64, kv: f64) -> Result<Self, SlopeError> {
+        Ok(Self {
+            kh: check_range(
+                SlopeParameter::SeismicKh,
+                kh,
+                -10.0,
+                false,
+                10.0,
+                "-10 ≤ kh ≤ 10",
+            )?,
+            kv: check_range(
+                SlopeParameter::SeismicKv,
+                kv,
+                -0.99,
+                false,
+                10.0,
+                "-0.99 ≤ kv ≤ 10",
+            )?,
+        })
+    }
+}
+
+/// A known force on one slice, applied at the middle of its base (the thesis' F_x, F_y, M1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ExternalLoad {
+    /// Index of the slice, 0 at the lower end.
+    pub slice: usize,
+    /// Horizontal force, positive towards +x (the crest side).
+    pub fx: f64,
+    /// Vertical force, positive upwards.
+    pub fy: f64,
+    /// Moment of the load about the middle of the base, counter-clockwise positive.
+    pub moment: f64,
 }

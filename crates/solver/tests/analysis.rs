@@ -1,0 +1,294 @@
+//! The composition of an analysis, tested where it lives: `slope::analysis::analyse` and
+//! `arch::analysis::analyse` answer what their stages answer alone, run the stages a plan names
+//! and no other, and say how they stopped when the budget ends them.
+
+// Fixtures: a failed construction should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+use std::num::NonZeroUsize;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+use thrustline_solver::arch::analysis::{
+    analyse as analyse_arch, ArchPlan, ArchStatus, Friction, Programme,
+};
+use thrustline_solver::arch::{
+    solve_dead_load, solve_live_load, ArchProblem, InterfaceLimits, LimitSettings, LimitStatus,
+    LiveLoad,
+};
+use thrustline_solver::budget::{Budget, Stop};
+use thrustline_solver::reference::{milankovitch, semicircle, spencer_1967};
+use thrustline_solver::slope::analysis::{
+    analyse, Analysed, Method, SlopeOutcome, SlopePlan, SlopeStage, Target,
+};
+use thrustline_solver::slope::spencer::methods::bishop;
+use thrustline_solver::slope::{
+    solve_spencer, SearchGrid, SearchProblem, Seismic, SpencerSettings,
+};
+
+fn answered(outcome: SlopeOutcome) -> thrustline_solver::slope::analysis::SlopeAnswer {
+    match outcome {
+        SlopeOutcome::Answered(answer) => *answer,
+        SlopeOutcome::Stopped { stage, stop } => panic!("{stage:?} stopped: {stop}"),
+    }
+}
+
+fn spencer_search(grid: Option<SearchGrid>) -> Target {
+    let problem = SearchProblem {
+        embankment: spencer_1967::embankment(),
+        slices: NonZeroUsize::new(30).unwrap(),
+        soil: spencer_1967::soil(spencer_1967::UNIT_WEIGHT),
+        seismic: Seismic::default(),
+        lower_end_factor: 0.0,
+        lower_end_factor_max: None,
+    };
+    let hard_bounds = grid.is_some();
+    let grid = grid.unwrap_or_else(|| SearchGrid::automatic(&problem.embankment, 0.0));
+    Target::SimpleSearch {
+        problem,
+        grid,
+        hard_bounds,
+    }
+}
+
+#[test]
+fn one_circle_is_answered_as_spencers_method_answers_it() {
+    // Spencer (1967) example at 100 slices: the analysis is the solve, bit for bit, and the
+    // methods planned are the methods on the same slices.
+    let problem = spencer_1967::problem(100);
+    let alone = solve_spencer(&problem.model(), &SpencerSettings::default());
+    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Simple(problem.clone())));
+    plan.methods = vec![Method::Bishop];
+    let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
+    assert_eq!(answer.solution, alone);
+    let bishop_alone = bishop(&problem.model());
+    assert_eq!(answer.methods.unwrap().bishop, Some(bishop_alone));
+    // Nothing else was planned, so nothing else ran.
+    assert!(answer.search.is_none() && answer.curves.is_none() && answer.refinement.is_none());
+    // Spencer (1967): F = 1.0695 converged; 100 slices lie within 5e-4 of it (the thesis'
+    // table), θ = 22.43° within 0.05°.
+    let f = answer.solution.factor_of_safety.unwrap();
+    assert!((f - spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-4, "F = {f}");
+    let theta = answer.solution.theta_rad.unwrap().to_degrees();
+    assert!(
+        (theta - spencer_1967::THETA_DEG).abs() < 0.05,
+        "θ = {theta}"
+    );
+}
+
+#[test]
+fn a_planned_refinement_reaches_the_converged_factor() {
+    // Spencer (1967): F = 1.0695 as N → ∞; from 10 slices to 1e-6, within the published
+    // rounding (5e-5).
+    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Simple(spencer_1967::problem(10))));
+    plan.slice_tolerance = Some(1e-6);
+    let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
+    let refinement = answer.refinement.unwrap();
+    assert!(refinement.is_settled);
+    let f = answer.solution.factor_of_safety.unwrap();
+    assert!((f - spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-5, "F = {f}");
+    assert_eq!(
+        refinement.steps.last().unwrap().slices,
+        answer.problem.slice_count_answered()
+    );
+}
+
+/// The slice count of an answered surface, read through the public trait.
+trait SliceCount {
+    fn slice_count_answered(&self) -> usize;
+}
+
+impl SliceCount for Analysed {
+    fn slice_count_answered(&self) -> usize {
+        thrustline_solver::slope::Sliced::slice_count(self)
+    }
+}
+
+#[test]
+fn a_search_answers_a_circle_no_worse_than_the_published_one() {
+    // The critical circle of Spencer's embankment is at most the example circle's F (the
+    // example circle is one candidate; 1e-3: the search's own grid and 30 slices).
+    let plan = SlopePlan::spencer(spencer_search(None));
+    let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
+    let search = answer.search.unwrap();
+    assert!(search.evaluations > 0);
+    let f = answer.solution.factor_of_safety.unwrap();
+    assert!(f <= spencer_1967::FACTOR_OF_SAFETY + 1e-3, "F = {f}");
+}
+
+#[test]
+fn a_spent_or_cancelled_budget_stops_the_search_and_says_which() {
+    let plan = SlopePlan::spencer(spencer_search(None));
+    let spent = Budget::with_time_limit(Duration::ZERO);
+    let outcome = analyse(&plan, &spent).unwrap();
+    assert!(matches!(
+        outcome,
+        SlopeOutcome::Stopped {
+            stage: SlopeStage::Search,
+            stop: Stop::TimeLimit
+        }
+    ));
+    let flag = Arc::new(AtomicBool::new(true));
+    let cancelled = Budget::with_time_limit(Duration::from_secs(600)).cancelled_by(flag.clone());
+    assert_eq!(analyse(&plan, &cancelled).unwrap().stop(), Stop::Cancelled);
+    flag.store(false, Ordering::Relaxed);
+    assert_eq!(analyse(&plan, &cancelled).unwrap().stop(), Stop::Finished);
+}
+
+#[test]
+fn a_region_without_a_slip_circle_is_no_candidate() {
+    // Centres far behind the crest and below it: every circle through the toe dives under the
+    // embankment and exits nowhere on the ground, so no circle is a candidate.
+    let grid = SearchGrid {
+        x_min: 1000.0,
+        x_max: 1010.0,
+        y_min: 1.0,
+        y_max: 2.0,
+        nx: 3,
+        ny: 3,
+    };
+    let plan = SlopePlan::spencer(spencer_search(Some(grid)));
+    let outcome = analyse(&plan, &Budget::unlimited()).unwrap();
+    assert_eq!(outcome.stop(), Stop::NoCandidate);
+}
+
+fn milankovitch_problem(thickness: f64, voussoirs: usize) -> ArchProblem {
+    let arch = semicircle(voussoirs, milankovitch::RADIUS, thickness).assembly();
+    ArchProblem::new(arch, 1.0, InterfaceLimits::heyman(), None, vec![]).unwrap()
+}
+
+fn plan(programme: Programme, friction: Friction) -> ArchPlan {
+    ArchPlan {
+        programme,
+        friction,
+        settings: LimitSettings::default(),
+    }
+}
+
+#[test]
+fn milankovitch_semicircle_stands_at_1_0748_and_falls_at_1_0747() {
+    // Milankovitch (1904): d/R = 0.10748 at N = 1800 curved voussoirs.
+    let dead = plan(Programme::DeadLoad, Friction::Checked);
+    for (thickness, factor) in [
+        (milankovitch::THICKNESS_STANDS, 1.0),
+        (milankovitch::THICKNESS_FALLS, 0.0),
+    ] {
+        let problem = milankovitch_problem(thickness, milankovitch::VOUSSOIRS);
+        let outcome = analyse_arch(&problem, &dead, &Budget::unlimited()).unwrap();
+        assert_eq!(outcome.stop, Stop::Finished);
+        let lambda = outcome.solution.load_factor.unwrap();
+        // 1e-6: the interior-point tolerance on a cone whose λ₀ is exactly 0 or 1.
+        assert!(
+            (lambda - factor).abs() < 1e-6,
+            "D = {thickness}: λ₀ = {lambda}"
+        );
+        // The dead load alone answers the same λ₀.
+        let alone = solve_dead_load(&problem, &LimitSettings::default());
+        assert_eq!(outcome.solution.load_factor, alone.load_factor);
+    }
+}
+
+fn unit_load(problem: &ArchProblem, block: usize) -> Vec<LiveLoad> {
+    vec![LiveLoad {
+        block,
+        point: problem.assembly().blocks[block].centroid,
+        fx: 0.0,
+        fy: -1.0,
+        moment: 0.0,
+    }]
+}
+
+#[test]
+fn a_rolling_load_answers_its_least_stop_as_that_stop_alone_answers() {
+    // An independent sweep: each stop solved by itself; the analysis' critical stop is the
+    // least of them (first of equal ones), its λ the same to 1e-9 relative (the interior-point
+    // answers of one programme on the same data).
+    let base = milankovitch_problem(1.5, 30);
+    let blocks = [6, 8, 10, 13];
+    let stops: Vec<Vec<LiveLoad>> = blocks.iter().map(|&b| unit_load(&base, b)).collect();
+    let alone: Vec<f64> = stops
+        .iter()
+        .map(|loads| {
+            let p = base.clone().with_live_loads(loads.clone()).unwrap();
+            solve_live_load(&p, &LimitSettings::default())
+                .unwrap()
+                .load_factor
+                .unwrap()
+        })
+        .collect();
+    let (least_at, least) =
+        alone.iter().enumerate().fold(
+            (0, f64::INFINITY),
+            |b, (i, &f)| if f < b.1 { (i, f) } else { b },
+        );
+    let rolling = plan(Programme::Rolling(stops.clone()), Friction::Checked);
+    let outcome = analyse_arch(&base, &rolling, &Budget::unlimited()).unwrap();
+    let curve = outcome.rolling.unwrap();
+    let (at, lambda) = curve.critical.unwrap();
+    assert_eq!(at, least_at);
+    assert!(
+        (lambda - least).abs() <= 1e-9 * least,
+        "{lambda} vs {least}"
+    );
+    // The problem answered is the critical stop's: its live loads are that stop's.
+    assert_eq!(outcome.problem.live_loads(), stops[least_at].as_slice());
+    assert_eq!(outcome.status, ArchStatus::Limit(LimitStatus::Solved));
+}
+
+#[test]
+fn non_associative_friction_answers_below_the_associative_factor() {
+    // Two leaves under a cap (Gilbert, Casapulla & Ahmed 2006's kind of panel): the associative
+    // programme over-estimates; the iteration's settled answer is lower, and `Checked` keeps
+    // the associative factor while reporting the iteration.
+    let wall = thrustline_solver::arch::Assembly::from_polygons(
+        &[
+            vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
+            vec![(0.5, 0.0), (1.0, 0.0), (1.0, 2.0), (0.5, 2.0)],
+            vec![(0.0, 2.0), (1.0, 2.0), (1.0, 2.5), (0.0, 2.5)],
+        ],
+        &[vec![(-2.0, -1.0), (3.0, -1.0), (3.0, 0.0), (-2.0, 0.0)]],
+    )
+    .unwrap();
+    let load = LiveLoad {
+        block: 2,
+        point: (0.0, 2.5),
+        fx: 1.0,
+        fy: 0.0,
+        moment: 0.0,
+    };
+    let problem =
+        ArchProblem::new(wall, 1.0, InterfaceLimits::heyman(), Some(0.5), vec![load]).unwrap();
+    let checked = analyse_arch(
+        &problem,
+        &plan(Programme::LiveLoad, Friction::Checked),
+        &Budget::unlimited(),
+    )
+    .unwrap();
+    let iterated = analyse_arch(
+        &problem,
+        &plan(Programme::LiveLoad, Friction::NonAssociative),
+        &Budget::unlimited(),
+    )
+    .unwrap();
+    let associative = solve_live_load(&problem, &LimitSettings::default()).unwrap();
+    assert_eq!(checked.solution.load_factor, associative.load_factor);
+    assert!(checked.friction.is_some());
+    let (a, n) = (
+        checked.solution.load_factor.unwrap(),
+        iterated.solution.load_factor.unwrap(),
+    );
+    assert!(n < a - 1e-6, "non-associative {n} vs associative {a}");
+    assert!(iterated.friction.unwrap().settled);
+}
+
+#[test]
+fn a_spent_budget_stops_an_arch_at_the_time_limit() {
+    let problem = milankovitch_problem(1.5, 100);
+    let loads = (0..50).map(|b| unit_load(&problem, b)).collect();
+    let rolling = plan(Programme::Rolling(loads), Friction::Checked);
+    let spent = Budget::with_time_limit(Duration::ZERO);
+    let outcome = analyse_arch(&problem, &rolling, &spent).unwrap();
+    assert_eq!(outcome.stop, Stop::TimeLimit);
+    assert!(outcome.rolling.unwrap().critical.is_none());
+}
