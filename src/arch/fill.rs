@@ -4,8 +4,8 @@
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::analysis::RollingCurve;
 use thrustline_solver::arch::fill::{
-    fill_dead_loads, passive_forces, road_load_on, ExtradosFaces, ExtradosProfile, Fill, Passive,
-    PassiveForce, RoadLoad,
+    fill_dead_loads, passive_forces, road_load_on, Extrados, ExtradosFaces, ExtradosProfile, Fill,
+    Passive, PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -167,6 +167,33 @@ pub struct FillLoads {
     pub road: Vec<RoadLoad>,
 }
 
+/// A generated bridge's outer faces: (block, polyline along its face).
+pub type BridgeFaces = Vec<(usize, Vec<(f64, f64)>)>;
+
+/// What a fill lies on: a chain's extrados, a generated bridge's outer faces (`bridge_faces`);
+/// a general assembly has no single extrados. Sampled only when `needs` names the field (fill,
+/// rolling or road loads) that needs it.
+pub fn fill_faces(
+    assembly: &Assembly,
+    bridge_faces: Option<BridgeFaces>,
+    shape: Extrados,
+    needs: Option<&'static str>,
+) -> Result<Option<ExtradosFaces>, ApiError> {
+    Ok(match (needs, bridge_faces) {
+        (None, _) => None,
+        (Some(_), Some(faces)) => Some(ExtradosFaces::of_faces(faces)),
+        (Some(_), None) if assembly.is_chain() => Some(ExtradosFaces::of_chain(assembly, shape)),
+        (Some(field), None) => {
+            return Err(ApiError::invalid(
+                field,
+                "fill, road loads and rolling loads are for circular arches (any rings and \
+                 spans) and block chains: a general assembly has no single extrados (put loads \
+                 on its blocks with loads)",
+            ))
+        }
+    })
+}
+
 /// The fill's and the road's loads on `assembly`, lying on `faces`. Nothing to do for a
 /// request without fill, road loads or rolling.
 pub fn fill_loads(
@@ -181,34 +208,7 @@ pub fn fill_loads(
     }
     let top = faces.top();
     let dto_passive = fill.and_then(|f| f.passive.as_ref());
-    let fill = match fill {
-        Some(dto) => {
-            let unit_weight = number(
-                "fill.unit_weight",
-                dto.unit_weight,
-                0.0,
-                false,
-                MAX_MAGNITUDE,
-            )?;
-            let surface = number("fill.surface", dto.surface, -MAX_LENGTH, false, MAX_LENGTH)?;
-            if surface <= top {
-                return Err(ApiError::invalid(
-                    "fill.surface",
-                    format!(
-                        "{surface} is out of range: the road must lie above the crown's extrados \
-                         (y = {top})"
-                    ),
-                ));
-            }
-            let angle = dto.dispersal_angle_deg.unwrap_or(30.0);
-            Some(Fill {
-                unit_weight,
-                road: surface,
-                dispersal_angle_deg: number("fill.dispersal_angle_deg", angle, 0.0, false, 60.0)?,
-            })
-        }
-        None => None,
-    };
+    let fill = fill.map(|dto| fill_from(dto, top)).transpose()?;
     if fill.is_none() && !road_loads.is_empty() {
         return Err(ApiError::invalid(
             "road_loads",
@@ -281,6 +281,33 @@ pub fn fill_loads(
         passive,
         fill,
         road,
+    })
+}
+
+/// The fill of a request, its road above the crown's extrados at `top`.
+fn fill_from(dto: &FillDto, top: f64) -> Result<Fill, ApiError> {
+    let unit_weight = number(
+        "fill.unit_weight",
+        dto.unit_weight,
+        0.0,
+        false,
+        MAX_MAGNITUDE,
+    )?;
+    let surface = number("fill.surface", dto.surface, -MAX_LENGTH, false, MAX_LENGTH)?;
+    if surface <= top {
+        return Err(ApiError::invalid(
+            "fill.surface",
+            format!(
+                "{surface} is out of range: the road must lie above the crown's extrados \
+                 (y = {top})"
+            ),
+        ));
+    }
+    let angle = dto.dispersal_angle_deg.unwrap_or(30.0);
+    Ok(Fill {
+        unit_weight,
+        road: surface,
+        dispersal_angle_deg: number("fill.dispersal_angle_deg", angle, 0.0, false, 60.0)?,
     })
 }
 

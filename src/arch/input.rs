@@ -12,7 +12,7 @@ use thrustline_solver::arch::{
 };
 
 use super::assembly::Generated;
-use super::fill::{fill_loads, FillDto, FillLoads, RoadLoadDto, Rolling, RollingDto};
+use super::fill::{fill_faces, fill_loads, FillDto, FillLoads, RoadLoadDto, Rolling, RollingDto};
 use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
 };
@@ -57,6 +57,19 @@ struct Extras<'a> {
     fill: Option<&'a FillDto>,
     road_loads: &'a [RoadLoadDto],
     rolling: Option<&'a RollingDto>,
+}
+
+impl Extras<'_> {
+    /// The field that needs an extrados to lie on, if any.
+    fn needing_faces(&self) -> Option<&'static str> {
+        if self.fill.is_some() {
+            Some("fill")
+        } else if self.rolling.is_some() {
+            Some("rolling")
+        } else {
+            (!self.road_loads.is_empty()).then_some("road_loads")
+        }
+    }
 }
 
 /// The material part of every arch request, validated.
@@ -120,29 +133,7 @@ fn input(
     } else {
         Extrados::Straight
     };
-    // What a fill lies on: a chain's extrados, a generated bridge's outer faces; a general
-    // assembly has no single extrados. Sampled only when a fill or road loads need it.
-    let needs_faces =
-        extras.fill.is_some() || !extras.road_loads.is_empty() || extras.rolling.is_some();
-    let faces = match (needs_faces, bridge_faces) {
-        (false, _) => None,
-        (true, Some(faces)) => Some(ExtradosFaces::of_faces(faces)),
-        (true, None) if assembly.is_chain() => Some(ExtradosFaces::of_chain(&assembly, shape)),
-        (true, None) => {
-            return Err(ApiError::invalid(
-                if extras.fill.is_some() {
-                    "fill"
-                } else if extras.rolling.is_some() {
-                    "rolling"
-                } else {
-                    "road_loads"
-                },
-                "fill, road loads and rolling loads are for circular arches (any rings and \
-                 spans) and block chains: a general assembly has no single extrados (put loads \
-                 on its blocks with loads)",
-            ))
-        }
-    };
+    let faces = fill_faces(&assembly, bridge_faces, shape, extras.needing_faces())?;
     let filled = match &faces {
         Some(faces) => fill_loads(
             &assembly,
@@ -192,42 +183,7 @@ fn input(
              the associative rule, then check the critical stop with loads",
         ));
     }
-    let has_rings = problem
-        .assembly()
-        .interfaces
-        .iter()
-        .any(|i| i.kind == InterfaceKind::Ring);
-    // Checked whether or not there are rings: an out-of-range value is an error either way.
-    let (ring_limits, ring_friction) = ring_material(fields.material)?;
-    let problem = if has_rings {
-        problem.with_ring_interfaces(ring_limits, ring_friction)?
-    } else if fields.material.ring_friction_coefficient.is_some() {
-        return Err(ApiError::invalid(
-            "ring_friction_coefficient",
-            "is for arches of more than one ring (geometry.rings > 1): leave it out",
-        ));
-    } else {
-        problem
-    };
-    let problem = match fields.compressive_strength {
-        None if fields.crushing_planes.is_some() => {
-            return Err(ApiError::invalid(
-                "crushing_planes",
-                "is for compressive_strength: give that too, or leave crushing_planes out",
-            ))
-        }
-        None => problem,
-        Some(strength) => problem.with_crushing(Crushing {
-            strength: number("compressive_strength", strength, 0.0, true, MAX_MAGNITUDE)?,
-            planes: count(
-                "crushing_planes",
-                fields.crushing_planes.unwrap_or(4),
-                2,
-                256,
-            )?,
-            cuts: Vec::new(),
-        })?,
-    };
+    let problem = with_rings_and_crushing(problem, &fields)?;
     let (min, max) = SOLVER_TOLERANCE;
     // Passive forces are variables of their own: the general assembly carries them.
     // So do assemblies that are not chains: the answer names what was used.
@@ -256,6 +212,49 @@ fn input(
             .zip(faces)
             .map(|(f, faces)| (f, faces, filled.road)),
         include: include(fields.include),
+    })
+}
+
+/// The ring interfaces' limits and friction (arches of more than one ring) and crushing.
+fn with_rings_and_crushing(
+    problem: ArchProblem,
+    fields: &LimitFields,
+) -> Result<ArchProblem, ApiError> {
+    let has_rings = problem
+        .assembly()
+        .interfaces
+        .iter()
+        .any(|i| i.kind == InterfaceKind::Ring);
+    // Checked whether or not there are rings: an out-of-range value is an error either way.
+    let (ring_limits, ring_friction) = ring_material(fields.material)?;
+    let problem = if has_rings {
+        problem.with_ring_interfaces(ring_limits, ring_friction)?
+    } else if fields.material.ring_friction_coefficient.is_some() {
+        return Err(ApiError::invalid(
+            "ring_friction_coefficient",
+            "is for arches of more than one ring (geometry.rings > 1): leave it out",
+        ));
+    } else {
+        problem
+    };
+    Ok(match fields.compressive_strength {
+        None if fields.crushing_planes.is_some() => {
+            return Err(ApiError::invalid(
+                "crushing_planes",
+                "is for compressive_strength: give that too, or leave crushing_planes out",
+            ))
+        }
+        None => problem,
+        Some(strength) => problem.with_crushing(Crushing {
+            strength: number("compressive_strength", strength, 0.0, true, MAX_MAGNITUDE)?,
+            planes: count(
+                "crushing_planes",
+                fields.crushing_planes.unwrap_or(4),
+                2,
+                256,
+            )?,
+            cuts: Vec::new(),
+        })?,
     })
 }
 

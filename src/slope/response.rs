@@ -2,7 +2,7 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::slope::{Sliced, SpencerStatus, ThrustPoint};
+use thrustline_solver::slope::{SliceModel, Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
 use super::outputs::{CurvesDto, GridDto, SearchOutDto};
@@ -274,44 +274,8 @@ impl SpencerResponse {
         let warnings = warnings(solved);
         let model = problem.model();
         let to_x = |x: f64| problem.request_x(x);
-        // θ of the answer; Bishop's horizontal forces under `moment_only`.
-        let (sin_theta, cos_theta) = solution.theta_rad.unwrap_or(0.0).sin_cos();
         let slices = if has_forces {
-            model
-                .slices
-                .iter()
-                .zip(&solution.slice_forces)
-                .enumerate()
-                .map(|(i, (s, f))| {
-                    let (a, b) = (to_x(s.x_left), to_x(s.x_right));
-                    let normal_stress = f.normal_force / s.base_length;
-                    let effective_normal_stress = f.effective_normal_force / s.base_length;
-                    let available = s.cohesion + effective_normal_stress * s.tan_phi;
-                    SliceDto {
-                        slice: i + 1,
-                        x_left: a.min(b),
-                        x_right: a.max(b),
-                        layer: s.layer,
-                        base_inclination_deg: s.base_inclination_rad().to_degrees(),
-                        base_length: s.base_length,
-                        height: s.height_middle,
-                        weight: f.weight,
-                        pore_pressure: f.pore_pressure,
-                        normal_force: f.normal_force,
-                        effective_normal_force: f.effective_normal_force,
-                        shear_force: f.shear_force,
-                        normal_stress,
-                        effective_normal_stress,
-                        available_shear_strength: available,
-                        mobilised_shear_strength: f.shear_force / s.base_length,
-                        interslice_resultant: f.interslice_resultant,
-                        interslice_force: f.interslice_force_right,
-                        interslice_normal: f.interslice_force_right * cos_theta,
-                        interslice_shear: f.interslice_force_right * sin_theta,
-                        m_alpha: f.m_alpha,
-                    }
-                })
-                .collect()
+            slice_dtos(&model, solution, &to_x)
         } else {
             Vec::new()
         };
@@ -396,4 +360,49 @@ impl SpencerResponse {
             omitted: Vec::new(),
         }
     }
+}
+
+/// Each slice's geometry and forces, numbered from 1 at the lower end, in the request's x.
+fn slice_dtos(
+    model: &SliceModel,
+    solution: &SpencerSolution,
+    to_x: &dyn Fn(f64) -> f64,
+) -> Vec<SliceDto> {
+    // θ of the answer; Bishop's horizontal forces under `moment_only`.
+    let (sin_theta, cos_theta) = solution.theta_rad.unwrap_or(0.0).sin_cos();
+    model
+        .slices
+        .iter()
+        .zip(&solution.slice_forces)
+        .enumerate()
+        .map(|(i, (s, f))| {
+            let (a, b) = (to_x(s.x_left), to_x(s.x_right));
+            let normal_stress = f.normal_force / s.base_length;
+            let effective_normal_stress = f.effective_normal_force / s.base_length;
+            let available = s.cohesion + effective_normal_stress * s.tan_phi;
+            SliceDto {
+                slice: i + 1,
+                x_left: a.min(b),
+                x_right: a.max(b),
+                layer: s.layer,
+                base_inclination_deg: s.base_inclination_rad().to_degrees(),
+                base_length: s.base_length,
+                height: s.height_middle,
+                weight: f.weight,
+                pore_pressure: f.pore_pressure,
+                normal_force: f.normal_force,
+                effective_normal_force: f.effective_normal_force,
+                shear_force: f.shear_force,
+                normal_stress,
+                effective_normal_stress,
+                available_shear_strength: available,
+                mobilised_shear_strength: f.shear_force / s.base_length,
+                interslice_resultant: f.interslice_resultant,
+                interslice_force: f.interslice_force_right,
+                interslice_normal: f.interslice_force_right * cos_theta,
+                interslice_shear: f.interslice_force_right * sin_theta,
+                m_alpha: f.m_alpha,
+            }
+        })
+        .collect()
 }

@@ -65,29 +65,7 @@ pub fn search_region(
     section: &Section,
     slices: usize,
 ) -> Result<(CircleRegion, bool, Option<Noncircular>), ApiError> {
-    let noncircular = match search.shape.unwrap_or_default() {
-        SearchShapeDto::Circular if search.vertices.is_some() => {
-            return Err(ApiError::invalid(
-                "search.vertices",
-                "is for shape: noncircular",
-            ))
-        }
-        SearchShapeDto::Circular if search.time_budget_ms.is_some() => {
-            return Err(ApiError::invalid(
-                "search.time_budget_ms",
-                "is for shape: noncircular",
-            ))
-        }
-        SearchShapeDto::Circular => None,
-        SearchShapeDto::Noncircular => Some(Noncircular {
-            vertices: count("search.vertices", search.vertices.unwrap_or(12), 4, 40)?,
-            budget: search
-                .time_budget_ms
-                .map(|t| number("search.time_budget_ms", t, 0.0, true, 6e5))
-                .transpose()?
-                .map(|t| Duration::from_secs_f64(t / 1e3)),
-        }),
-    };
+    let noncircular = noncircular(search)?;
     if search.lower_end_factor != 0.0 || search.lower_end_factor_max.is_some() {
         return Err(ApiError::invalid(
             "search.lower_end_factor",
@@ -100,57 +78,7 @@ pub fn search_region(
     let nr = count("search.nr", search.nr.unwrap_or(DEFAULT_RADII), 1, MAX_GRID)?;
     let coordinate =
         |field: &str, v: Option<f64>| v.map(|v| number(field, v, -1e9, false, 1e9)).transpose();
-    let radius =
-        |field: &str, v: Option<f64>| v.map(|v| number(field, v, 0.0, true, 1e9)).transpose();
-    let radii = match (
-        radius("search.radius_min", search.radius_min)?,
-        radius("search.radius_max", search.radius_max)?,
-        &search.tangent_elevations,
-    ) {
-        (None, None, None) => Radii::Automatic { count: nr },
-        (Some(min), Some(max), None) if max >= min => Radii::Range {
-            min,
-            max,
-            count: nr,
-        },
-        (Some(_), Some(_), None) => {
-            return Err(ApiError::invalid(
-                "search.radius_max",
-                "must be at least search.radius_min",
-            ))
-        }
-        (None, None, Some(ys)) => {
-            count("search.tangent_elevations", ys.len(), 1, MAX_GRID)?;
-            for (i, &y) in ys.iter().enumerate() {
-                number(
-                    &format!("search.tangent_elevations[{i}]"),
-                    y,
-                    -1e9,
-                    false,
-                    1e9,
-                )?;
-            }
-            Radii::Tangent(ys.clone())
-        }
-        (_, _, Some(_)) => {
-            return Err(ApiError::invalid(
-                "search.tangent_elevations",
-                "give either tangent_elevations or radius_min and radius_max",
-            ))
-        }
-        (Some(_), None, None) => {
-            return Err(ApiError::invalid(
-                "search.radius_max",
-                "give it with radius_min",
-            ))
-        }
-        (None, Some(_), None) => {
-            return Err(ApiError::invalid(
-                "search.radius_min",
-                "give it with radius_max",
-            ))
-        }
-    };
+    let radii = radii(search, nr)?;
     let per_centre = match &radii {
         Radii::Tangent(ys) => ys.len(),
         Radii::Range { count, .. } | Radii::Automatic { count } => *count,
@@ -195,6 +123,90 @@ pub fn search_region(
         ));
     }
     Ok((region, hard, noncircular))
+}
+
+/// The non-circular stage of a search, when its shape asks for one.
+fn noncircular(search: &SearchDto) -> Result<Option<Noncircular>, ApiError> {
+    Ok(match search.shape.unwrap_or_default() {
+        SearchShapeDto::Circular if search.vertices.is_some() => {
+            return Err(ApiError::invalid(
+                "search.vertices",
+                "is for shape: noncircular",
+            ))
+        }
+        SearchShapeDto::Circular if search.time_budget_ms.is_some() => {
+            return Err(ApiError::invalid(
+                "search.time_budget_ms",
+                "is for shape: noncircular",
+            ))
+        }
+        SearchShapeDto::Circular => None,
+        SearchShapeDto::Noncircular => Some(Noncircular {
+            vertices: count("search.vertices", search.vertices.unwrap_or(12), 4, 40)?,
+            budget: search
+                .time_budget_ms
+                .map(|t| number("search.time_budget_ms", t, 0.0, true, 6e5))
+                .transpose()?
+                .map(|t| Duration::from_secs_f64(t / 1e3)),
+        }),
+    })
+}
+
+/// The radii at each centre: automatic, a range, or tangent to given elevations.
+fn radii(search: &SearchDto, nr: usize) -> Result<Radii, ApiError> {
+    let radius =
+        |field: &str, v: Option<f64>| v.map(|v| number(field, v, 0.0, true, 1e9)).transpose();
+    Ok(
+        match (
+            radius("search.radius_min", search.radius_min)?,
+            radius("search.radius_max", search.radius_max)?,
+            &search.tangent_elevations,
+        ) {
+            (None, None, None) => Radii::Automatic { count: nr },
+            (Some(min), Some(max), None) if max >= min => Radii::Range {
+                min,
+                max,
+                count: nr,
+            },
+            (Some(_), Some(_), None) => {
+                return Err(ApiError::invalid(
+                    "search.radius_max",
+                    "must be at least search.radius_min",
+                ))
+            }
+            (None, None, Some(ys)) => {
+                count("search.tangent_elevations", ys.len(), 1, MAX_GRID)?;
+                for (i, &y) in ys.iter().enumerate() {
+                    number(
+                        &format!("search.tangent_elevations[{i}]"),
+                        y,
+                        -1e9,
+                        false,
+                        1e9,
+                    )?;
+                }
+                Radii::Tangent(ys.clone())
+            }
+            (_, _, Some(_)) => {
+                return Err(ApiError::invalid(
+                    "search.tangent_elevations",
+                    "give either tangent_elevations or radius_min and radius_max",
+                ))
+            }
+            (Some(_), None, None) => {
+                return Err(ApiError::invalid(
+                    "search.radius_max",
+                    "give it with radius_min",
+                ))
+            }
+            (None, Some(_), None) => {
+                return Err(ApiError::invalid(
+                    "search.radius_min",
+                    "give it with radius_max",
+                ))
+            }
+        },
+    )
 }
 
 /// A polyline from its points, at `field`.
@@ -300,34 +312,7 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         0,
         MAX_SECTION_LOADS,
     )?;
-    let surcharges = dto
-        .surcharges
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let field = |name: &str| format!("section.surcharges[{i}].{name}");
-            let x_start = number(&field("x_start"), s.x_start, -1e9, false, 1e9)?;
-            let x_end = number(&field("x_end"), s.x_end, -1e9, false, 1e9)?;
-            if x_end <= x_start {
-                return Err(ApiError::invalid(
-                    field("x_end"),
-                    "must be greater than x_start",
-                ));
-            }
-            let pressure = number(&field("pressure"), s.pressure, 0.0, false, MAX_MAGNITUDE)?;
-            let pressure_end = s
-                .pressure_end
-                .map(|p| number(&field("pressure_end"), p, 0.0, false, MAX_MAGNITUDE))
-                .transpose()?
-                .unwrap_or(pressure);
-            Ok(Surcharge {
-                x_start,
-                x_end,
-                pressure,
-                pressure_end,
-            })
-        })
-        .collect::<Result<Vec<_>, ApiError>>()?;
+    let surcharges = surcharges(dto)?;
     let line_loads = dto
         .line_loads
         .iter()
@@ -366,4 +351,35 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         line_loads,
         tension_crack,
     })?)
+}
+
+/// The surcharges on a section's ground, each over x_start < x_end.
+fn surcharges(dto: &SectionDto) -> Result<Vec<Surcharge>, ApiError> {
+    dto.surcharges
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let field = |name: &str| format!("section.surcharges[{i}].{name}");
+            let x_start = number(&field("x_start"), s.x_start, -1e9, false, 1e9)?;
+            let x_end = number(&field("x_end"), s.x_end, -1e9, false, 1e9)?;
+            if x_end <= x_start {
+                return Err(ApiError::invalid(
+                    field("x_end"),
+                    "must be greater than x_start",
+                ));
+            }
+            let pressure = number(&field("pressure"), s.pressure, 0.0, false, MAX_MAGNITUDE)?;
+            let pressure_end = s
+                .pressure_end
+                .map(|p| number(&field("pressure_end"), p, 0.0, false, MAX_MAGNITUDE))
+                .transpose()?
+                .unwrap_or(pressure);
+            Ok(Surcharge {
+                x_start,
+                x_end,
+                pressure,
+                pressure_end,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()
 }

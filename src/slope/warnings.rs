@@ -4,6 +4,7 @@ use thrustline_solver::slope::SpencerStatus;
 
 use super::report::SolvedSlope;
 use crate::limits::MAX_SLICES;
+use thrustline_solver::slope::analysis::SearchReport;
 
 /// Every warning that applies to `solved`, in words.
 pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
@@ -79,46 +80,56 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
         ));
     }
     if let Some(search) = &solved.search {
-        if search.is_on_edge && search.hard {
-            warnings.push(
-                "the critical centre lies on the edge of the given search bounds: F is the \
+        search_warnings(search, solution.factor_of_safety, &mut warnings);
+    }
+    warnings
+}
+
+/// What a search leaves unsure: a minimum on the edge, a non-circular stage out of time,
+/// unsolved circles whose Bishop F lies below the answer or next to it.
+fn search_warnings(
+    search: &SearchReport,
+    factor_of_safety: Option<f64>,
+    warnings: &mut Vec<String>,
+) {
+    if search.is_on_edge && search.hard {
+        warnings.push(
+            "the critical centre lies on the edge of the given search bounds: F is the \
                      least inside them, the true minimum may lie outside"
-                    .to_owned(),
-            );
-        } else if search.is_on_edge {
-            warnings.push(
-                "the critical centre lies on the edge of the search region even after moving \
+                .to_owned(),
+        );
+    } else if search.is_on_edge {
+        warnings.push(
+            "the critical centre lies on the edge of the search region even after moving \
                      the grid: the true minimum may lie outside it"
-                    .to_owned(),
-            );
-        }
-        if search.timed_out {
-            warnings.push(
+                .to_owned(),
+        );
+    }
+    if search.timed_out {
+        warnings.push(
                 "the non-circular search ran out of time: the surface is the best found so far, \
                  a lower F may exist (fewer vertices or slices, a larger time_budget_ms or a longer \
                  time limit)"
                     .to_owned(),
             );
-        }
-        let below = search
-            .unsolved_bishop_minimum
-            .zip(solution.factor_of_safety)
-            .filter(|(b, f)| b < f);
-        if let Some((bishop, f)) = below {
-            warnings.push(format!(
-                "{} circles of the search have no physical Spencer solution, and Bishop's F on \
+    }
+    let below = search
+        .unsolved_bishop_minimum
+        .zip(factor_of_safety)
+        .filter(|(b, f)| b < f);
+    if let Some((bishop, f)) = below {
+        warnings.push(format!(
+            "{} circles of the search have no physical Spencer solution, and Bishop's F on \
                  them goes down to {bishop:.4}, below the F found ({f:.4}): the critical F may \
                  be lower than reported (with φ' near 0, m_α ≤ 0 on steep bases rules Spencer's \
                  solution out there)",
-                search.unsolved
-            ));
-        } else if search.unsolved_near_minimum {
-            warnings.push(format!(
-                "circles next to the critical one have no Spencer solution ({} in the search): \
+            search.unsolved
+        ));
+    } else if search.unsolved_near_minimum {
+        warnings.push(format!(
+            "circles next to the critical one have no Spencer solution ({} in the search): \
                  the least F may lie among them",
-                search.unsolved
-            ));
-        }
+            search.unsolved
+        ));
     }
-    warnings
 }

@@ -1,0 +1,124 @@
+//! Drawing of an arch: voussoirs, line of thrust, hinges with their angles, live loads as
+//! arrows, and the collapse mechanism as the displaced blocks (dashed).
+
+mod joints;
+mod parts;
+mod rolling;
+
+use super::response::SolvedArch;
+use crate::svg::Canvas;
+
+/// The key's entries: colour and text.
+type Legend = Vec<(&'static str, &'static str)>;
+
+/// Chains of more blocks than this are drawn as one outline.
+const MERGED_ABOVE: usize = 200;
+/// Hinges are labelled with their angle when there are at most this many.
+const MAX_HINGE_LABELS: usize = 8;
+
+/// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
+fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
+    if !curved || corners.len() != 4 {
+        return corners.to_vec();
+    }
+    // Intrados-start → extrados-start (straight), along the extrados, extrados-end →
+    // intrados-end (straight), back along the intrados.
+    let arc = |a: (f64, f64), b: (f64, f64)| -> Vec<(f64, f64)> {
+        let (ra, ta) = (a.0.hypot(a.1), a.1.atan2(a.0));
+        let mut tb = b.1.atan2(b.0);
+        while tb - ta > std::f64::consts::PI {
+            tb -= 2.0 * std::f64::consts::PI;
+        }
+        while ta - tb > std::f64::consts::PI {
+            tb += 2.0 * std::f64::consts::PI;
+        }
+        (0..=6)
+            .map(|i| {
+                let t = ta + (tb - ta) * f64::from(i) / 6.0;
+                (ra * t.cos(), ra * t.sin())
+            })
+            .collect()
+    };
+    let mut points = vec![corners[0]];
+    points.extend(arc(corners[1], corners[2]));
+    points.extend(arc(corners[3], corners[0]));
+    points
+}
+
+/// The drawing of a solved arch (with arcs for annular-sector voussoirs).
+pub fn draw(solved: &SolvedArch, title: &str) -> String {
+    let assembly = solved.input.problem.assembly();
+    let loads = solved.input.problem.live_loads();
+    let mechanism = solved.solution.mechanism.as_ref();
+    let corners: Vec<(f64, f64)> = assembly
+        .blocks
+        .iter()
+        .flat_map(|b| b.corners.iter().copied())
+        .collect();
+    // With fill: the fill between the extrados and the road, over the span.
+    let fill = solved.input.fill.as_ref();
+    let (x_lo, x_hi) = corners
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let road = fill.map(|(f, _, _)| [(x_hi, f.road), (x_lo, f.road)]);
+    let mut canvas = Canvas::fitting(corners.iter().copied().chain(road.into_iter().flatten()));
+    let mut legend: Legend = Vec::new();
+    if let (Some(fill), Some(road)) = (fill, road) {
+        parts::fill(&mut canvas, assembly, fill, road, &mut legend);
+    }
+    parts::blocks(&mut canvas, assembly, solved.input.is_curved);
+    if let Some(mechanism) = mechanism {
+        parts::mechanism(&mut canvas, assembly, mechanism, solved.input.is_curved);
+    }
+    // A chain is drawn with its line of thrust; other assemblies block by block, with the
+    // points of action at their contacts.
+    let thrust: Vec<(f64, f64)> = solved
+        .thrust_line
+        .iter()
+        .map(|t| t.point.unwrap_or((f64::NAN, f64::NAN)))
+        .collect();
+    if assembly.is_chain() {
+        canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
+    } else {
+        for point in thrust.iter().filter(|p| p.0.is_finite()) {
+            canvas.dot(*point, 2.5, "fill=\"#c62828\"");
+        }
+    }
+    let hinge_count = parts::hinges_and_loads(&mut canvas, assembly, mechanism, loads);
+    joints::passive(
+        &mut canvas,
+        &solved.input.problem,
+        &solved.solution.passive,
+        &mut legend,
+    );
+    joints::crushing(&mut canvas, assembly, mechanism, &mut legend);
+    joints::sliding(&mut canvas, assembly, mechanism, &mut legend);
+    if !solved.thrust_line.is_empty() {
+        legend.insert(0, ("#c62828", "— line of thrust"));
+    }
+    if mechanism.is_some_and(|m| !m.hinges.is_empty()) {
+        legend.push((
+            "#1b5e20",
+            if hinge_count > MAX_HINGE_LABELS {
+                "● hinges (unlabelled: too many)"
+            } else {
+                "● hinges"
+            },
+        ));
+    }
+    if mechanism.is_some() {
+        legend.push(("#546e7a", "- - collapse mechanism"));
+    }
+    if !loads.is_empty() {
+        legend.push(("#1565c0", "→ live loads"));
+    }
+    for (colour, text) in &legend {
+        canvas.key(text, colour, 11.0, false);
+    }
+    if let Some(curve) = &solved.rolling {
+        rolling::rolling_curve(&mut canvas, curve);
+    }
+    canvas.finish(title)
+}

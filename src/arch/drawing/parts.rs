@@ -1,0 +1,208 @@
+//! The layers of an arch drawing, each drawn on the canvas in turn: the fill and its road
+//! loads, the blocks, the collapse mechanism, the hinges and live loads, passive pressure and
+//! crushing joints.
+
+use thrustline_solver::arch::fill::{ExtradosFaces, ExtradosProfile, Fill, RoadLoad};
+use thrustline_solver::arch::{Assembly, HingeSide, LiveLoad, Mechanism};
+
+use super::{outline, Legend, MAX_HINGE_LABELS, MERGED_ABOVE};
+use crate::svg::{escape, Canvas, Labels};
+
+/// The fill between the extrados and the road, and each road load's patch and dispersal.
+pub fn fill(
+    canvas: &mut Canvas,
+    assembly: &Assembly,
+    (f, faces, road_loads): &(Fill, ExtradosFaces, Vec<RoadLoad>),
+    road: [(f64, f64); 2],
+    legend: &mut Legend,
+) {
+    let chain = assembly.is_chain();
+    let profile = ExtradosProfile::new(faces);
+    // A chain's extrados from the right springing to the left (block order), a bridge's
+    // upper envelope from the left; closed along the road.
+    let mut outline: Vec<(f64, f64)> = if chain {
+        assembly
+            .blocks
+            .iter()
+            .flat_map(|b| [b.corners[1], b.corners[2]])
+            .collect()
+    } else {
+        profile.envelope().iter().rev().copied().collect()
+    };
+    outline.insert(0, road[0]);
+    outline.push(road[1]);
+    canvas.polygon(&outline, "fill=\"#f3ead7\" stroke=\"none\"");
+    canvas.polyline(&road, "stroke=\"#616161\" stroke-width=\"2.5\"");
+    legend.push(("#a1887f", "▬ fill and road"));
+    // Road loads: the patch on the road and its dispersal lines down to the extrados.
+    for load in road_loads {
+        let ends = profile.dispersal_ends(f, *load);
+        let (a, b) = (load.x - 0.5 * load.length, load.x + 0.5 * load.length);
+        let fan = "stroke=\"#1565c0\" stroke-width=\"0.9\" stroke-dasharray=\"3 2\"";
+        canvas.polyline(&[(a, f.road), ends[0]], fan);
+        canvas.polyline(&[(b, f.road), ends[1]], fan);
+        canvas.polyline(
+            &[(a, f.road), (b, f.road)],
+            "stroke=\"#1565c0\" stroke-width=\"4\"",
+        );
+    }
+    if !road_loads.is_empty() {
+        legend.push(("#1565c0", "- - dispersal"));
+    }
+}
+
+/// The blocks: one by one, or a long chain as one outline with every tenth joint marked.
+pub fn blocks(canvas: &mut Canvas, assembly: &Assembly, curved: bool) {
+    let chain = assembly.is_chain();
+    let outlines: Vec<Vec<(f64, f64)>> = assembly
+        .blocks
+        .iter()
+        .map(|b| outline(&b.corners, curved))
+        .collect();
+    let thin = if assembly.blocks.len() > 200 {
+        "0.2"
+    } else {
+        "0.8"
+    };
+    if chain && assembly.blocks.len() > MERGED_ABOVE {
+        // Blocks too small to see one by one: the ring as one outline (extrados out, intrados
+        // back), with every tenth joint marked.
+        let mut ring: Vec<(f64, f64)> = assembly
+            .blocks
+            .iter()
+            .flat_map(|b| [b.corners[1], b.corners[2]])
+            .collect();
+        ring.extend(
+            assembly
+                .blocks
+                .iter()
+                .rev()
+                .flat_map(|b| [b.corners[3], b.corners[0]]),
+        );
+        canvas.polygon(
+            &ring,
+            "fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"0.8\"",
+        );
+        let step = assembly.blocks.len() / 10;
+        for i in assembly.interfaces.iter().step_by(step.max(1)) {
+            canvas.polyline(
+                &[i.intrados, i.extrados],
+                "stroke=\"#8d6e63\" stroke-width=\"0.5\"",
+            );
+        }
+    } else {
+        for o in &outlines {
+            canvas.polygon(
+                o,
+                &format!("fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"{thin}\""),
+            );
+        }
+    }
+}
+
+/// The collapse mechanism: blocks displaced by 8 % of the span at the fastest corner; each
+/// block dashed when there are few, the displaced intrados and extrados when there are many.
+pub fn mechanism(canvas: &mut Canvas, assembly: &Assembly, mechanism: &Mechanism, curved: bool) {
+    let (chain, span) = (assembly.is_chain(), assembly.length_scale());
+    let delta = 0.08 * span;
+    let displaced: Vec<Vec<(f64, f64)>> = assembly
+        .blocks
+        .iter()
+        .zip(&mechanism.velocities)
+        .map(|(block, &[u, v, rotation])| {
+            let g = block.centroid;
+            let corners = if chain && assembly.blocks.len() > 60 {
+                block.corners.to_vec()
+            } else {
+                outline(&block.corners, curved)
+            };
+            corners
+                .into_iter()
+                .map(|(x, y)| {
+                    (
+                        x + delta * (u - rotation * (y - g.1)),
+                        y + delta * (v + rotation * (x - g.0)),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    let style = "fill=\"none\" stroke=\"#546e7a\" stroke-width=\"0.9\" stroke-dasharray=\"4 3\"";
+    if chain && assembly.blocks.len() > 60 {
+        let intrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[0], c[3]]).collect();
+        let extrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[1], c[2]]).collect();
+        canvas.polyline(&intrados, style);
+        canvas.polyline(&extrados, style);
+    } else {
+        for d in &displaced {
+            canvas.polygon(d, style);
+        }
+    }
+}
+
+/// Hinges at the intrados or extrados end of their interface and the live loads as arrows; the
+/// hinges' labels (polar angle and side) placed clear of the dots, the arrows and each other.
+/// Answers how many hinges there are (their labels are left out beyond [`MAX_HINGE_LABELS`]).
+pub fn hinges_and_loads(
+    canvas: &mut Canvas,
+    assembly: &Assembly,
+    mechanism: Option<&Mechanism>,
+    loads: &[LiveLoad],
+) -> usize {
+    let span = assembly.length_scale();
+    let mut hinge_labels = Vec::new();
+    let mut labels = Labels::default();
+    for hinge in mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default() {
+        let Some(interface) = assembly.interfaces.get(hinge.interface) else {
+            continue;
+        };
+        let (point, outward, location) = match hinge.side {
+            HingeSide::Intrados => (interface.intrados, -1.0, "intrados"),
+            HingeSide::Extrados => (interface.extrados, 1.0, "extrados"),
+        };
+        canvas.dot(
+            point,
+            5.0,
+            "fill=\"#1b5e20\" stroke=\"white\" stroke-width=\"1.5\"",
+        );
+        let p = canvas.px(point);
+        labels.avoid([p.0 - 6.0, p.1 - 6.0, p.0 + 6.0, p.1 + 6.0]);
+        // Away from the arch: outwards at the extrados, inwards at the intrados (pixels, y down).
+        let direction = (
+            outward * interface.tangent.0,
+            -outward * interface.tangent.1,
+        );
+        hinge_labels.push((p, direction, format!("{:.1}° {location}", hinge.angle_deg)));
+    }
+    // Live loads: arrows ending at their point, 12 % of the span long.
+    let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
+    for load in loads {
+        let magnitude = load.fx.hypot(load.fy);
+        if magnitude == 0.0 || largest == 0.0 {
+            continue;
+        }
+        let length = 0.12 * span * magnitude / largest;
+        let from = (
+            load.point.0 - length * load.fx / magnitude,
+            load.point.1 - length * load.fy / magnitude,
+        );
+        canvas.arrow(from, load.point, "stroke=\"#1565c0\" stroke-width=\"2\"");
+        labels.avoid_segment(canvas.px(from), canvas.px(load.point), 6.0);
+    }
+    let area = canvas.plot_area();
+    // Many hinges (a multi-ring mechanism) would bury the drawing in labels: their angles are
+    // in the JSON; the key says how many.
+    let hinge_count = hinge_labels.len();
+    if hinge_count > MAX_HINGE_LABELS {
+        hinge_labels.clear();
+    }
+    for (p, direction, text) in hinge_labels {
+        let (x, y) = labels.place(p, direction, (text.chars().count(), 11.0), area);
+        canvas.raw(&format!(
+            "<text x=\"{x:.2}\" y=\"{:.2}\" font-size=\"11\" fill=\"#1b5e20\" font-family=\"sans-serif\">{}</text>",
+            y + 9.0,
+            escape(&text)
+        ));
+    }
+    hinge_count
+}

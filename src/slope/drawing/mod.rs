@@ -1,0 +1,190 @@
+//! Drawing of a slope: the embankment, the slip circle and its centre, the slices, the line of
+//! thrust, and for a search the map of F over the grid of centres with the critical centre.
+
+mod ground;
+mod map;
+mod thrust;
+
+use thrustline_solver::slope::Sliced;
+
+use super::fills::LAYER_COLOURS;
+use super::report::SolvedSlope;
+use crate::svg::Canvas;
+use thrustline_solver::slope::analysis::{Analysed, PlacedCircle};
+
+/// What is drawn of the ground, in the request's coordinates.
+struct Scene {
+    /// The ground line (continued level to the edges of the picture).
+    ground: Vec<(f64, f64)>,
+    /// Layer tops, bedrock and the water line.
+    lines: Vec<Line>,
+    /// The slip surface.
+    surface: Vec<(f64, f64)>,
+    /// The slice sides, base to ground.
+    sides: Vec<[(f64, f64); 2]>,
+    /// The circle, if the surface is one.
+    circle: Option<PlacedCircle>,
+    /// Surcharges as (x_start, x_end) and line loads' x.
+    loads: Vec<(f64, f64)>,
+}
+
+/// A line of the section: points, colour, label (empty: not in the legend).
+type Line = (Vec<(f64, f64)>, &'static str, String);
+
+fn scene(problem: &Analysed) -> Scene {
+    let model = problem.model();
+    let sides: Vec<[(f64, f64); 2]> = model
+        .slices
+        .iter()
+        .skip(1)
+        .map(|s| {
+            let x = problem.request_x(s.x_left);
+            [(x, s.base_left_y), (x, problem.ground_y(s.x_left))]
+        })
+        .collect();
+    match problem {
+        Analysed::Simple(p) => {
+            let e = &p.geometry.embankment;
+            Scene {
+                ground: vec![(0.0, 0.0), (e.length(), e.height())],
+                lines: Vec::new(),
+                surface: problem.surface(),
+                sides,
+                circle: problem.circle(),
+                loads: Vec::new(),
+            }
+        }
+        Analysed::Section(p) => {
+            let section = p.section();
+            let mut lines = Vec::new();
+            for (i, layer) in section.layers().iter().enumerate().skip(1) {
+                if let Some(top) = &layer.top {
+                    lines.push((
+                        top.points().to_vec(),
+                        LAYER_COLOURS[i % LAYER_COLOURS.len()],
+                        // In the legend as the layer's fill.
+                        String::new(),
+                    ));
+                }
+            }
+            if let Some(b) = section.bedrock() {
+                lines.push((b.points().to_vec(), "#424242", "bedrock".to_owned()));
+            }
+            if let Some(w) = section.piezometric_line() {
+                lines.push((
+                    w.points().to_vec(),
+                    "#0277bd",
+                    "piezometric line".to_owned(),
+                ));
+            }
+            let loads = section
+                .surcharges()
+                .iter()
+                .map(|s| (s.x_start, s.x_end))
+                .chain(section.line_loads().iter().map(|l| (l.x, l.x)))
+                .collect();
+            Scene {
+                ground: section.ground().points().to_vec(),
+                lines,
+                surface: p.surface(),
+                sides,
+                circle: problem.circle(),
+                loads,
+            }
+        }
+    }
+}
+
+/// The drawing of a solved request (the analysed or critical surface) and its answer.
+pub fn draw(solved: &SolvedSlope, title: &str) -> String {
+    let scene = scene(&solved.problem);
+    let solution = &solved.solution;
+    let grid = solved.search.as_ref().map(|s| &s.grid);
+    let ys = || {
+        scene
+            .ground
+            .iter()
+            .chain(&scene.surface)
+            .chain(scene.lines.iter().flat_map(|l| &l.0))
+            .map(|p| p.1)
+    };
+    let (y_lo, y_hi) = ys().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+        (a.min(y), b.max(y))
+    });
+    let xs = || scene.ground.iter().chain(&scene.surface).map(|p| p.0);
+    let (x_lo, x_hi) = xs().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+        (a.min(x), b.max(x))
+    });
+    let size = (x_hi - x_lo).max(y_hi - y_lo).max(1e-9);
+    let (left, right) = (x_lo - 0.3 * size, x_hi + 0.3 * size);
+    let bottom = y_lo - 0.2 * size;
+    let mut extent = vec![(left, bottom), (right, y_hi + 0.2 * size)];
+    if let Some(c) = scene.circle {
+        // The centre with room above it for its label and the map around it.
+        extent.push((c.centre.0, c.centre.1 + 0.15 * size));
+        extent.push((c.centre.0, (c.centre.1 - c.radius).max(bottom)));
+    }
+    let lower_end = solved.search.as_ref().map_or((0.0, 0.0), |s| s.origin);
+    // A map larger than the scene is cut at the axes: the picture stays on the slope and the
+    // critical centre. Without a critical circle the whole grid is shown.
+    if let (Some(grid), None) = (grid, scene.circle) {
+        extent.extend(grid.xs.iter().flat_map(|&x| {
+            grid.ys
+                .iter()
+                .map(move |&y| (lower_end.0 + x, lower_end.1 + y))
+        }));
+    }
+    let visible = extent.iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| [b[0].min(p.0), b[1].min(p.1), b[2].max(p.0), b[3].max(p.1)],
+    );
+    let mut canvas = Canvas::fitting(extent);
+    // The F map of a search; the key names the refined critical circle's F, which the grid's
+    // least F bounds above.
+    if let Some(grid) = grid {
+        let critical = match (solution.factor_of_safety, scene.circle) {
+            (Some(f), Some(c)) => format!(
+                "; ● refined centre ({:.2}, {:.2}): F = {f:.4}",
+                c.centre.0, c.centre.1
+            ),
+            _ => String::new(),
+        };
+        map::factor_map(&mut canvas, grid, lower_end, visible, critical);
+    }
+    let mut legend = ground::ground(
+        &mut canvas,
+        &scene,
+        &solved.problem,
+        [left, right, bottom],
+        size,
+    );
+    thrust::surface(&mut canvas, &scene, solved, size, &mut legend);
+    let caption = match (solution.factor_of_safety, solution.theta_rad) {
+        (Some(f), Some(theta)) => {
+            let bishop = solution
+                .bishop_factor_of_safety
+                .filter(|b| b.is_finite())
+                .map_or(String::new(), |b| format!("; Bishop {b:.4}"));
+            format!(
+                "F = {f:.4}, θ = {:.2}° (Spencer){bishop}",
+                theta.to_degrees()
+            )
+        }
+        _ => "no solution for this slip surface".to_owned(),
+    };
+    canvas.key(
+        &format!("— line of thrust. {caption}"),
+        "#c62828",
+        12.0,
+        true,
+    );
+    for (colour, label) in legend {
+        canvas.key(&format!("— {label}"), colour, 11.0, true);
+    }
+    canvas.finish(title)
+}

@@ -1,0 +1,106 @@
+//! The slip surface of a slope drawing: the slices, the surface, a circle's centre and radii,
+//! and the lines of thrust (total, and effective where pore water moves it).
+
+use thrustline_solver::slope::analysis::PlacedCircle;
+
+use super::super::report::SolvedSlope;
+use super::Scene;
+use crate::svg::Canvas;
+
+/// The slices, the surface, the centre and the lines of thrust; the key's entries go to
+/// `legend`.
+pub fn surface(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    solved: &SolvedSlope,
+    size: f64,
+    legend: &mut Vec<(&'static str, String)>,
+) {
+    let solution = &solved.solution;
+    // The slices and the slip surface.
+    for side in &scene.sides {
+        canvas.polyline(side, "stroke=\"#8d6e63\" stroke-width=\"0.4\"");
+    }
+    canvas.polyline(&scene.surface, "stroke=\"#212121\" stroke-width=\"1.8\"");
+    // The circle's centre and two radii to the ends of the slip surface.
+    if let Some(PlacedCircle {
+        centre,
+        radius,
+        lower_end,
+        upper_exit,
+    }) = scene.circle
+    {
+        canvas.polyline(
+            &[lower_end, centre, upper_exit],
+            "stroke=\"#9e9e9e\" stroke-width=\"0.6\" stroke-dasharray=\"4 3\"",
+        );
+        canvas.dot(centre, 4.0, "fill=\"#212121\"");
+        canvas.text(
+            centre,
+            (8.0, -6.0),
+            &format!("centre, R = {radius:.3}"),
+            "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
+        );
+    }
+    // The line of thrust on the slice boundaries, broken where a point leaves its slice (an
+    // inter-slice force near zero puts it anywhere): those points are marked with a ring.
+    let thrust: Vec<(f64, f64)> = solution
+        .thrust_line
+        .iter()
+        .map(|t| match t.y {
+            Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+            _ => (f64::NAN, f64::NAN),
+        })
+        .collect();
+    canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
+    let outside = solution
+        .thrust_line
+        .iter()
+        .filter(|t| !t.is_inside_slice)
+        .count();
+    if outside > 0 {
+        for t in solution.thrust_line.iter().filter(|t| !t.is_inside_slice) {
+            // At the ground on that boundary: where the line would leave the mass.
+            let x = solved.problem.request_x(t.x);
+            canvas.dot(
+                (x, solved.problem.ground_y(t.x)),
+                3.0,
+                "fill=\"none\" stroke=\"#c62828\" stroke-width=\"1\"",
+            );
+        }
+        legend.push((
+            "#c62828",
+            format!("○ {outside} boundaries where the line of thrust leaves its slice (not drawn)"),
+        ));
+    }
+    // Pore water moves the effective line off the total one by more than rounding.
+    let has_water = solution
+        .thrust_line
+        .iter()
+        .zip(&solution.effective_thrust_line)
+        .any(|(t, e)| match (t.y, e.y) {
+            (Some(a), Some(b)) => (a - b).abs() > 1e-9 * size,
+            (a, b) => a.is_some() != b.is_some(),
+        });
+    if has_water {
+        // Broken where it leaves its slice, like the total one.
+        let effective: Vec<(f64, f64)> = solution
+            .effective_thrust_line
+            .iter()
+            .map(|t| match t.y {
+                Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+                _ => (f64::NAN, f64::NAN),
+            })
+            .collect();
+        canvas.polyline(
+            &effective,
+            "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
+        );
+        legend.push((
+            "#c62828",
+            "line of thrust of the effective forces (dashed; not drawn where it leaves its \
+             slice)"
+                .to_owned(),
+        ));
+    }
+}
