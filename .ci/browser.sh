@@ -42,12 +42,12 @@ expect() {
         failures=$((failures + 1))
     fi
 }
-# SPEC §1.4: Milankovitch at D = 1.0747 collapses with hinges at 356 and 1446.
+# model §1.4: Milankovitch at D = 1.0747 collapses with hinges at 356 and 1446.
 expect "dead_load_factor: 0   stable: false"
 expect "356 (35.5°, intrados)"
 expect "1446 (144.5°, intrados)"
 expect "load_factor: 22.99688965"
-# SPEC §2.3 / thesis: F = 1.06958 at 100 slices.
+# model §2.3 / thesis: F = 1.06958 at 100 slices.
 expect "factor_of_safety: 1.06957"
 expect "morgenstern_price: "
 expect "solver: solved, assembly, 37 stops"

@@ -1,6 +1,6 @@
 """Calls every route of a running thrustline through the Python client that openapi-python-client
 generated from the committed openapi/openapi.json, with typed models, and checks the answers
-against the published values (SPEC §1.4, §2.3) — what an integrator's first script would do.
+against the published values (model §1.4, §2.3) — what an integrator's first script would do.
 
 Usage: python3 .ci/client_check.py BASE_URL GENERATED_CLIENT_DIR
 """
@@ -45,7 +45,7 @@ def semicircle(thickness, voussoirs):
 health = healthz.sync(client=client)
 check("healthz", health is not None and health.status == "ok", health)
 
-# Milankovitch, N = 1800: D = 1.0747 collapses in the thesis' five hinges (SPEC §1.4).
+# Milankovitch, N = 1800: D = 1.0747 collapses in the thesis' five hinges (model §1.4).
 answer = dead_load.sync(client=client, body=DeadLoadRequest(geometry=semicircle(1.0747, 1800)))
 check("dead load is typed", isinstance(answer, DeadLoadResponse), answer)
 if isinstance(answer, DeadLoadResponse):
@@ -63,7 +63,7 @@ check("live load is typed", isinstance(answer, LiveLoadResponse), answer)
 if isinstance(answer, LiveLoadResponse):
     check("quarter-span load factor", abs(answer.load_factor - 22.996889652) < 1e-6, answer.load_factor)
 
-# Minimum thickness, N = 1800: 0.10747 < d/R < 0.10748 (SPEC §1.4); the same circular geometry
+# Minimum thickness, N = 1800: 0.10747 < d/R < 0.10748 (model §1.4); the same circular geometry
 # type as the other arch routes, its thickness the D of the geometric factor of safety.
 answer = minimum_thickness.sync(client=client, body=MinimumThicknessRequest(
     geometry=semicircle(1.5, 1800)))

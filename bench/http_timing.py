@@ -62,7 +62,7 @@ bench("arch live load, N = 100, crushing σ_c = 100 (cutting planes from 4)", "/
 bench("the same with 8 starting planes", "/arch/live-load", dict(quarter, compressive_strength=100, crushing_planes=8), lambda d: d["solver"]["time_ms"])
 bench("arch live load, N = 100, crushing σ_c = 50", "/arch/live-load", dict(quarter, compressive_strength=50), lambda d: d["solver"]["time_ms"])
 
-# Assemblies (SPEC §5.4–5.5).
+# Assemblies (model §5.4–5.5).
 rings = {"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 100, "rings": 2}, "ring_friction_coefficient": 0.6}
 bench("two staggered rings, 2 × 100 voussoirs, ring μ = 0.6: dead load", "/arch/dead-load", rings, lambda d: d["solver"]["time_ms"])
 bench("the same: live load on inner-ring block 26 (associative solve; the friction check adds its steps)", "/arch/live-load", dict(rings, loads=[{"block": 26, "fy": -1}]), lambda d: d["solver"]["time_ms"])

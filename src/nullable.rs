@@ -1,7 +1,7 @@
 //! Request fields read as generated clients write them. `null` for an optional field means "the
 //! default", exactly as a missing field does: clients generated from the OpenAPI document
 //! (pydantic, Jackson, System.Text.Json) send `null` for the fields they leave unset. The
-//! interface limits keep SPEC §3's meaning, where `null` is "unbounded" and a missing field
+//! interface limits keep model §3's meaning, where `null` is "unbounded" and a missing field
 //! Heyman's value. An integer field takes `100.0` as 100: JSON Schema's `integer` is any number
 //! with a zero fractional part, and some serialisers write whole numbers that way.
 

@@ -14,7 +14,7 @@ fn quarter_span_load() -> Value {
 
 #[tokio::test]
 async fn milankovitch_thickness_1_0748_stands() {
-    // SPEC §1.4: λ₀ = 1 and no active constraints.
+    // model §1.4: λ₀ = 1 and no active constraints.
     let server = Server::start().await;
     let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0748)).await;
     assert_eq!(status, 200, "{body}");
@@ -28,7 +28,7 @@ async fn milankovitch_thickness_1_0748_stands() {
 
 #[tokio::test]
 async fn milankovitch_thickness_1_0747_collapses_as_the_thesis_reports() {
-    // SPEC §1.4: interfaces 1 s 0.0° extrados, 356 q 35.5° intrados, 901 s 90.0° extrados,
+    // model §1.4: interfaces 1 s 0.0° extrados, 356 q 35.5° intrados, 901 s 90.0° extrados,
     // 1446 q 144.5° intrados, 1801 s 180.0° extrados.
     let server = Server::start().await;
     let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0747)).await;
@@ -185,7 +185,7 @@ async fn bad_arch_inputs_are_422_naming_the_field() {
 
 #[tokio::test]
 async fn minimum_thickness_of_milankovitch_semicircle() {
-    // SPEC §1.4: 0.10747 < d/R < 0.10748 at N = 1800, rupture 54.5° from the crown.
+    // model §1.4: 0.10747 < d/R < 0.10748 at N = 1800, rupture 54.5° from the crown.
     let server = Server::start().await;
     let (status, _, body) = server
         .post("/arch/minimum-thickness", &milankovitch(1.0))
@@ -252,7 +252,7 @@ async fn minimum_thickness_edges_and_bad_inputs() {
 }
 
 /// Heyman's geometric factor of safety of Milankovitch's semicircle (N = 1800, d_min/R =
-/// 0.10748, SPEC §1.4) at D = 1.5, R = 10: 1.5 / 1.0748 = 1.39561 (5e-5 relative: the
+/// 0.10748, model §1.4) at D = 1.5, R = 10: 1.5 / 1.0748 = 1.39561 (5e-5 relative: the
 /// published ratio has 5 digits).
 #[tokio::test]
 async fn geometric_factor_of_safety_is_thickness_over_minimum() {
@@ -380,7 +380,7 @@ async fn drawings_and_the_page() {
 #[tokio::test]
 async fn hinges_are_placed_and_reactions_carry_the_weight() {
     let server = Server::start().await;
-    // Milankovitch 1.0747 (SPEC §1.4): each hinge lies on the intrados (radius R − D/2) or the
+    // Milankovitch 1.0747 (model §1.4): each hinge lies on the intrados (radius R − D/2) or the
     // extrados (R + D/2) at the polar angle of its joint.
     let (status, _, body) = server.post("/arch/dead-load", &milankovitch(1.0747)).await;
     assert_eq!(status, 200, "{body}");

@@ -1,4 +1,4 @@
-//! Assemblies, multi-ring arches and spans on piers over HTTP (SPEC §5.4, §5.6).
+//! Assemblies, multi-ring arches and spans on piers over HTTP (model §5.4, §5.6).
 
 // Test scaffolding: a malformed answer should fail the test loudly.
 #![allow(clippy::unwrap_used)]

@@ -1,5 +1,5 @@
 //! Fill, road loads, passive restraint and rolling axles on multi-ring arches and spans on piers
-//! (SPEC §5.1–5.4): the fill lies on the outer ring's extrados and on the pier tops.
+//! (model §5.1–5.4): the fill lies on the outer ring's extrados and on the pier tops.
 
 // Test scaffolding: a failed request should fail the test loudly.
 #![allow(clippy::unwrap_used)]

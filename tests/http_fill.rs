@@ -1,4 +1,4 @@
-//! Arches with fill, road loads and rolling axles over HTTP (SPEC §5.1, §5.3).
+//! Arches with fill, road loads and rolling axles over HTTP (model §5.1, §5.3).
 
 mod common;
 

@@ -1,4 +1,4 @@
-//! Non-circular surfaces and searches against published benchmark problems (SPEC §4.2, §4.4).
+//! Non-circular surfaces and searches against published benchmark problems (model §4.2, §4.4).
 //!
 //! The problems: Yamagami & Ueta's (1988) homogeneous slope, the layered slope of Zolfaghari et
 //! al. (2005) with a weak third layer, and Cheng et al.'s (2007) two variants with a thin weak

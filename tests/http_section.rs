@@ -1,4 +1,4 @@
-//! `POST /slope/spencer` with a `section`, an absolute circle or a polyline surface (SPEC §4).
+//! `POST /slope/spencer` with a `section`, an absolute circle or a polyline surface (model §4).
 
 mod common;
 
@@ -19,7 +19,7 @@ fn fredlund_krahn() -> Value {
 
 #[tokio::test]
 async fn fredlund_krahn_case_1_over_http() {
-    // SPEC §4.5: Spencer 2.073 (their slices; ±0.002), Bishop for this circle 2.07563 by an
+    // model §4.5: Spencer 2.073 (their slices; ±0.002), Bishop for this circle 2.07563 by an
     // independent fine integration (see the solver's section tests).
     let server = Server::start().await;
     let (status, _, body) = server.post("/slope/spencer", &fredlund_krahn()).await;
@@ -279,7 +279,7 @@ fn acads_1a() -> Value {
 
 #[tokio::test]
 async fn acads_1a_critical_circle_over_http() {
-    // SPEC §4.5: Spencer ≈ 0.986 (Slide2), referee 1.00; see the solver's search test.
+    // model §4.5: Spencer ≈ 0.986 (Slide2), referee 1.00; see the solver's search test.
     let server = Server::start().await;
     let (status, _, body) = server.post("/slope/spencer", &acads_1a()).await;
     assert_eq!(status, 200, "{body}");

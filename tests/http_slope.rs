@@ -18,7 +18,7 @@ async fn spencer_example_over_http() {
     assert!((theta - 22.432).abs() <= 5e-4, "θ = {theta}");
     assert_eq!(body["converged"], true);
     assert_eq!(body["status"], "converged");
-    // SPEC §2.3: radius 64.4875, upper exit x ≈ 64.87, Bishop ≈ 1.040.
+    // model §2.3: radius 64.4875, upper exit x ≈ 64.87, Bishop ≈ 1.040.
     assert!((body["radius"].as_f64().unwrap() - 64.4875).abs() < 5e-5);
     assert!((body["circle"]["upper_exit"]["x"].as_f64().unwrap() - 64.87).abs() < 5e-3);
     assert!((body["bishop_factor_of_safety"].as_f64().unwrap() - 1.040).abs() < 5e-4);
@@ -30,7 +30,7 @@ async fn spencer_example_over_http() {
 
 #[tokio::test]
 async fn converged_spencer_example_at_1000_slices() {
-    // SPEC §2.3: F = 1.0695 ± 2e-4 and θ = 22.43° ± 0.01°.
+    // model §2.3: F = 1.0695 ± 2e-4 and θ = 22.43° ± 0.01°.
     let server = Server::start().await;
     let body = with(spencer_example(), "slices", json!(1000));
     let (status, _, body) = server.post("/slope/spencer", &body).await;

@@ -95,7 +95,7 @@ fn strip_timings(value: &mut serde_json::Value) {
 async fn null_for_an_optional_field_means_its_default_on_every_route() {
     // What pydantic's model_dump() sends for unset fields: every optional field null. The answer
     // must be the one for the body without them (interface limits excepted: there null is
-    // "unbounded", SPEC §3).
+    // "unbounded", model §3).
     use serde_json::json;
     let arch = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
                                    "voussoirs": 40}});

@@ -1,4 +1,4 @@
-//! Assemblies in requests (SPEC §5.4): polygons of blocks and supports, the ring and span
+//! Assemblies in requests (model §5.4): polygons of blocks and supports, the ring and span
 //! generators of circular arches, and their one validation into the solver's [`Assembly`].
 
 use serde::{Deserialize, Serialize};

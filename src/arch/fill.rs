@@ -1,4 +1,4 @@
-//! Fill, road loads and rolling axles (SPEC §5.1, §5.3): the request types and their one
+//! Fill, road loads and rolling axles (model §5.1, §5.3): the request types and their one
 //! validation into the solver's dead and live loads.
 
 use serde::{Deserialize, Serialize};
@@ -38,7 +38,7 @@ pub struct FillDto {
     pub passive: Option<PassiveDto>,
 }
 
-/// Passive restraint of the fill (SPEC §5.1).
+/// Passive restraint of the fill (model §5.1).
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PassiveDto {

@@ -46,7 +46,7 @@ pub enum AssemblyKind {
     Assembly,
 }
 
-/// Circular arch (SPEC §1.3): centre at the origin, from polar angle C (right springing) to
+/// Circular arch (model §1.3): centre at the origin, from polar angle C (right springing) to
 /// 180° − B (left springing), N voussoirs of equal angle. The one circular geometry of every
 /// arch route.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
@@ -172,7 +172,7 @@ pub struct BlocksGeometryDto {
     pub blocks: Vec<BlockCornersDto>,
 }
 
-/// Any polygonal blocks on fixed supports (SPEC §5.4): contacts are found where edges of two
+/// Any polygonal blocks on fixed supports (model §5.4): contacts are found where edges of two
 /// blocks, or of a block and a support, run along each other.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]

@@ -1,5 +1,5 @@
 //! `POST /arch/minimum-thickness`: the thinnest circular arch that carries its own weight
-//! (SPEC §3; Milankovitch 1904). A dead-load request with circular geometry whose `thickness`
+//! (model §3; Milankovitch 1904). A dead-load request with circular geometry whose `thickness`
 //! is optional (given, the answer adds the geometric factor of safety), plus an optional
 //! `tolerance` relative to the radius.
 
@@ -108,7 +108,7 @@ pub struct MinimumThicknessResponse {
 /// Minimum thickness of a circular arch under its own weight.
 ///
 /// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
-/// (Milankovitch 1904; SPEC §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
+/// (Milankovitch 1904; model §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
 /// A given `thickness` D adds the geometric factor of safety D / D_min. A solve stopped at the time limit is 422 naming
 /// `tolerance`.
 #[utoipa::path(
@@ -116,7 +116,7 @@ pub struct MinimumThicknessResponse {
     path = "/arch/minimum-thickness",
     tag = "arch",
     request_body(content = MinimumThicknessRequest, examples(
-        ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748 (SPEC §1.4)",
+        ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
     )),
     params(MinimumThicknessTableQuery),

@@ -1,5 +1,5 @@
 //! `POST /arch/dead-load` and `POST /arch/live-load`: limit analysis of rigid-block arches
-//! (Livesley 1978; SPEC §1, §3).
+//! (Livesley 1978; model §1, §3).
 //!
 //! Blocks and interfaces are numbered from 1 in requests and responses, in order of increasing
 //! polar angle for circular arches (interface 1 at the right springing), as the thesis prints
@@ -43,9 +43,9 @@ use tables::{arch_table, ArchTableQuery};
     path = "/arch/dead-load",
     tag = "arch",
     request_body(content = DeadLoadRequest, examples(
-        ("milankovitch_stands" = (summary = "Milankovitch's semicircle, N = 1800, D = 1.0748: stands (SPEC §1.4)",
+        ("milankovitch_stands" = (summary = "Milankovitch's semicircle, N = 1800, D = 1.0748: stands, λ₀ = 1",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0748, "voussoirs": 1800}}))),
-        ("milankovitch_falls" = (summary = "The same, D = 1.0747: five hinges (SPEC §1.4)",
+        ("milankovitch_falls" = (summary = "The same, D = 1.0747: λ₀ = 0, five hinges",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
     )),
     params(ArchTableQuery),
@@ -125,11 +125,11 @@ pub async fn dead_load_svg(
         ("quarter_span_load" = (summary = "A unit load near the quarter span of a semicircle (λ = 22.9969)",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": 100},
                            "loads": [{"block": 26, "fy": -1.0}]}))),
-        ("filled_bridge" = (summary = "A thin semicircle that stands only with its fill, a wheel on the road dispersed at 30°",
+        ("filled_bridge" = (summary = "A thin semicircle that stands only with its fill, a wheel on the road dispersed at 30°: λ = 1.5349",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
                            "fill": {"unit_weight": 1.8, "surface": 11.5, "dispersal_angle_deg": 30.0},
                            "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}]}))),
-        ("rolling_axles" = (summary = "Two axles rolled across the filled arch: λ at 101 stops, the critical one answered",
+        ("rolling_axles" = (summary = "Two axles rolled across the filled arch: λ at 101 stops, the critical one answered (λ = 0.6413)",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
                            "fill": {"unit_weight": 1.8, "surface": 11.5},
                            "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],

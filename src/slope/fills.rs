@@ -1,5 +1,5 @@
 //! The layers of a section as filled areas for the drawing: layer k holds the ground at or
-//! below its top and above the next layer's top (SPEC §4.1's soil rule; validation keeps each
+//! below its top and above the next layer's top (model §4.1's soil rule; validation keeps each
 //! top at or below the one before it, so the next top bounds every later one).
 
 use thrustline_solver::slope::section::{Polyline, Section};

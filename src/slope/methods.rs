@@ -1,5 +1,5 @@
 //! `"methods"`: the factors of safety of the methods engineers compare with Spencer's, on the
-//! same slices (SPEC §4.3).
+//! same slices (model §4.3).
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::slope::analysis::{Method, MethodFactors};

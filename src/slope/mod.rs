@@ -1,4 +1,4 @@
-//! `POST /slope/spencer`: Spencer's method for one slip circle or the critical one (SPEC §2, §3).
+//! `POST /slope/spencer`: Spencer's method for one slip circle or the critical one (model §2, §3).
 //!
 //! [`request`] holds the types clients send, [`input`] validates them once into the solver's
 //! inputs, the handlers here solve on the blocking pool, [`response`] builds the answer whole
@@ -46,17 +46,17 @@ use tables::{slope_table, SlopeTableQuery};
     path = "/slope/spencer",
     tag = "slope",
     request_body(content = SpencerRequest, examples(
-        ("spencer_1967" = (summary = "Spencer's (1967) example circle: F = 1.0696, θ = 22.43° (SPEC §2.3)",
+        ("spencer_1967" = (summary = "Spencer's (1967) example circle at 100 slices: F = 1.0696, θ = 22.43° (converged 1.0695, 22.43°)",
             value = json!({"slope": {"height": 30.48, "length": 60.96},
                            "circle": {"x": 9.63168, "y": 63.76416}, "slices": 100,
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
                                     "pore_pressure_ratio": 0.5}}))),
-        ("fredlund_krahn_1977" = (summary = "Fredlund & Krahn (1977) case 1, a section facing left: Spencer 2.073, Bishop 2.080 (SPEC §4.5)",
+        ("fredlund_krahn_1977" = (summary = "Fredlund & Krahn (1977) case 1, a section facing left, 100 slices: F = 2.0721 (published: Spencer 2.073, Bishop 2.080)",
             value = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
                                        "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
                            "circle": {"centre": [120, 90], "radius": 80}, "slices": 100,
                            "methods": ["morgenstern_price", "bishop", "janbu", "ordinary"]}))),
-        ("layered_section" = (summary = "Layers, bedrock, a water table, a surcharge, a line load and a water-filled tension crack (SPEC §4.1)",
+        ("layered_section" = (summary = "Layers, bedrock, a water table, a surcharge, a line load and a water-filled tension crack: F = 2.3131",
             value = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
                                        "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
                                                   {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}],
@@ -66,11 +66,11 @@ use tables::{slope_table, SlopeTableQuery};
                                        "line_loads": [{"x": 30, "fx": 0, "fy": -50}],
                                        "tension_crack": {"depth": 2.5, "water_depth": 2.5}},
                            "circle": {"centre": [12, 28], "radius": 26}, "slices": 100}))),
-        ("polyline_surface" = (summary = "A non-circular slip surface through the same section as Fredlund & Krahn's",
+        ("polyline_surface" = (summary = "A non-circular slip surface through the same section as Fredlund & Krahn's: F = 2.4795",
             value = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
                                        "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
                            "surface": [[40, 62], [70, 38], [130, 22], [165, 21]], "slices": 100}))),
-        ("critical_circle" = (summary = "The critical circle of the same embankment (automatic search bounds)",
+        ("critical_circle" = (summary = "The critical circle of Spencer's embankment (automatic search bounds): F = 1.0146",
             value = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
                                     "pore_pressure_ratio": 0.5}})))

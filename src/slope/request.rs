@@ -288,7 +288,7 @@ fn default_grid() -> usize {
 /// A point [x, y] of a polyline, in the section's coordinates (y up).
 pub type Coordinates = [f64; 2];
 
-/// A cross-section (SPEC §4.1). Polylines run left to right with strictly increasing x and are
+/// A cross-section (model §4.1). Polylines run left to right with strictly increasing x and are
 /// continued horizontally beyond their ends; the section may face either way.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]

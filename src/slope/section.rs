@@ -1,4 +1,4 @@
-//! The validation of a `section` (SPEC §4.1) into the solver's [`Section`], and of a `surface`:
+//! The validation of a `section` (model §4.1) into the solver's [`Section`], and of a `surface`:
 //! every point and number checked, each failure naming its field path.
 
 use std::time::Duration;

@@ -1,4 +1,4 @@
-//! A real server on 127.0.0.1:0 for the HTTP tests, and the SPEC's example requests.
+//! A real server on 127.0.0.1:0 for the HTTP tests, and the model's example requests.
 #![allow(dead_code)]
 // Test scaffolding: a failed bind or request should fail the test loudly.
 #![allow(clippy::unwrap_used)]
@@ -107,7 +107,7 @@ impl Server {
     }
 }
 
-/// Spencer (1967) example, SPEC §3, from the solver's reference problem.
+/// Spencer (1967) example, model §3, from the solver's reference problem.
 pub fn spencer_example() -> Value {
     use thrustline_solver::reference::spencer_1967 as s;
     json!({
@@ -121,8 +121,8 @@ pub fn spencer_example() -> Value {
     })
 }
 
-/// Milankovitch's semicircle of SPEC §1.4 (N = 1800, R = 10) with the given thickness, every
-/// field spelled out as SPEC §3 prints the request.
+/// Milankovitch's semicircle of model §1.4 (N = 1800, R = 10) with the given thickness, every
+/// field spelled out as model §3 prints the request.
 pub fn milankovitch(thickness: f64) -> Value {
     use thrustline_solver::reference::milankovitch as m;
     json!({

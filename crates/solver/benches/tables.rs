@@ -119,7 +119,7 @@ fn main() {
     println!(
         "### Arch: minimum thickness of the semicircle (Heyman, curved voussoirs) against N\n"
     );
-    println!("Reference: Milankovitch's d/R = 0.10748 (SPEC §1.4); tolerance 1e-6·R.\n");
+    println!("Reference: Milankovitch's d/R = 0.10748 (model §1.4); tolerance 1e-6·R.\n");
     println!("| N | d/R | error to 0.10748 | time |");
     println!("|---|---|---|---|");
     for n in [10, 30, 100, 300, 1000, 1800, 3000, 10000] {

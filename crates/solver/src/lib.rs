@@ -7,7 +7,7 @@
 //! status. Not converging is an outcome reported in the solution, not an error; `Err` is kept
 //! for input the solver cannot accept.
 //!
-//! - [`slope`]: Spencer's method for one slip circle (SPEC §2).
+//! - [`slope`]: Spencer's method for one slip circle (model §2).
 #![warn(missing_docs)]
 
 pub mod arch;

@@ -1,4 +1,4 @@
-//! The published problems the crate is checked against (SPEC §1.4, §2.3), built in one place for
+//! The published problems the crate is checked against (model §1.4, §2.3), built in one place for
 //! the tests, the benchmarks and the service's tests: Spencer's (1967) example embankment and
 //! Milankovitch's (1904) semicircular arch. The reference *values* live next to the problems, with
 //! their sources, so that a test names what it compares with.
@@ -30,13 +30,13 @@ pub mod spencer_1967 {
     /// The unit weight the thesis and the service's examples use (F depends on c' and γ only
     /// through c'/(γH)).
     pub const UNIT_WEIGHT: f64 = 10.0;
-    /// Radius of the circle (SPEC §2.3).
+    /// Radius of the circle (model §2.3).
     pub const RADIUS: f64 = 64.4875;
     /// Converged F as N → ∞ (the thesis: 1.06952 at N = 500 and 1000; Spencer printed 1.070).
     pub const FACTOR_OF_SAFETY: f64 = 1.0695;
     /// Converged θ in degrees.
     pub const THETA_DEG: f64 = 22.43;
-    /// Bishop's simplified F for the same circle (SPEC §2.3, ≈).
+    /// Bishop's simplified F for the same circle (model §2.3, ≈).
     pub const BISHOP_FACTOR_OF_SAFETY: f64 = 1.040;
 
     /// The embankment.

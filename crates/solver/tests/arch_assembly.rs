@@ -1,4 +1,4 @@
-//! Any block assembly and the generators built on it (SPEC §5.4, §5.6): polygons against the
+//! Any block assembly and the generators built on it (model §5.4, §5.6): polygons against the
 //! chain they describe, multi-ring arches against one ring, a wall panel against the hand
 //! calculation, and the geometry errors.
 
@@ -113,7 +113,7 @@ fn a_circular_arch_given_as_polygons_is_the_circular_generator() {
 
 #[test]
 fn two_bonded_rings_with_aligned_joints_are_one_ring_of_the_whole_thickness() {
-    // SPEC §5.6: ring interfaces that can neither open nor slide make each radial pair of
+    // model §5.6: ring interfaces that can neither open nor slide make each radial pair of
     // voussoirs one block: λ equals the one-ring arch's (1e-8: interior-point tolerance).
     let generator = arch(20, 1.5);
     let one = heyman(generator.assembly(), vec![]);
@@ -147,7 +147,7 @@ fn two_bonded_rings_with_aligned_joints_are_one_ring_of_the_whole_thickness() {
 fn staggered_rings_lock_together_and_frictionless_rings_act_alone() {
     // R = 10, total D = 1.0 (t/R = 0.10, below Milankovitch's 0.1075): one ring of the whole
     // thickness falls under its own weight. Two staggered rings that cannot slide on each other
-    // stand (no hinge can form without slip along the ring interface, SPEC §5.6). With
+    // stand (no hinge can form without slip along the ring interface, model §5.6). With
     // frictionless ring interfaces each ring of t/R ≈ 0.05 acts alone, and falls.
     let generator = arch(40, 1.0);
     assert!(dead_factor(&heyman(generator.assembly(), vec![])) < 1.0);

@@ -1,4 +1,4 @@
-//! Crushing of the joints (SPEC §5.2): the rectangular stress block, linearised.
+//! Crushing of the joints (model §5.2): the rectangular stress block, linearised.
 
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]

@@ -1,4 +1,4 @@
-//! Fill over an arch (SPEC §5.1, §5.6) against analytic values and the plain live load.
+//! Fill over an arch (model §5.1, §5.6) against analytic values and the plain live load.
 
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
@@ -88,7 +88,7 @@ fn the_supports_carry_the_arch_the_fill_and_the_live_load() {
 
 #[test]
 fn weightless_fill_without_dispersal_is_the_plain_live_load_on_the_extrados() {
-    // SPEC §5.6: the same λ as a point load at (x, √(Re² − x²)) on the voussoir under it.
+    // model §5.6: the same λ as a point load at (x, √(Re² − x²)) on the voussoir under it.
     let arch = semicircle(100, 10.0, 1.5).assembly();
     let fill = Fill {
         unit_weight: 0.0,

@@ -1,4 +1,4 @@
-//! Limit analysis of arches, grouped by problem class, against the literature (SPEC §1.4) and
+//! Limit analysis of arches, grouped by problem class, against the literature (model §1.4) and
 //! against independent computations written here: block equilibrium summed by hand from the
 //! returned resultants, and the virtual-work equation of the returned mechanism.
 
@@ -109,7 +109,7 @@ mod dead_load {
 
     #[test]
     fn milankovitch_1800_voussoirs_thickness_1_0748_stands() {
-        // SPEC §1.4: N = 1800 curved voussoirs, R = 10, D = 1.0748: λ₀ = 1, no active limits.
+        // model §1.4: N = 1800 curved voussoirs, R = 10, D = 1.0748: λ₀ = 1, no active limits.
         let arch = semicircle(
             milankovitch::VOUSSOIRS,
             milankovitch::RADIUS,
@@ -132,7 +132,7 @@ mod dead_load {
 
     #[test]
     fn milankovitch_1800_voussoirs_thickness_1_0747_collapses_in_five_hinges() {
-        // SPEC §1.4: D = 1.0747: λ₀ = 0 and the active limits are interface 1 s (0.0°, hinge at
+        // model §1.4: D = 1.0747: λ₀ = 0 and the active limits are interface 1 s (0.0°, hinge at
         // the extrados), 356 q (35.5°, intrados), 901 s (90.0°, extrados), 1446 q (144.5°,
         // intrados), 1801 s (180.0°, extrados). Interfaces are 0-based here.
         let arch = semicircle(
@@ -201,7 +201,7 @@ mod dead_load {
 
     #[test]
     fn one_two_or_three_voussoirs_stand_however_thin() {
-        // SPEC §1.4: no mechanism can form under symmetric dead load with N ≤ 3.
+        // model §1.4: no mechanism can form under symmetric dead load with N ≤ 3.
         for n in 1..=3 {
             for d in [1e-3, 0.01, 0.1] {
                 let arch = circular_arch(n, 1.0, d, 0.0, VoussoirShape::Curved);

@@ -1,4 +1,4 @@
-//! Friction without dilatancy (SPEC §5.5): the non-associative iteration against the
+//! Friction without dilatancy (model §5.5): the non-associative iteration against the
 //! associative programme — equal where the mechanism's sliding needs no dilatancy, never above
 //! it, its first step never below it, and a settled state that satisfies Coulomb everywhere.
 
@@ -153,7 +153,7 @@ fn dead_load_with_friction_too_low_is_not_carried_either_way() {
 
 #[test]
 fn the_semicircle_at_its_minimum_thickness_needs_the_published_friction() {
-    // SPEC §5.6 (Cocchetti, Colasante & Rizzi 2011, true centroids): at the minimum thickness
+    // model §5.6 (Cocchetti, Colasante & Rizzi 2011, true centroids): at the minimum thickness
     // the purely rotational mechanism needs μ ≥ 0.395, and below μ = 0.309 the arch slides at
     // its springings. Just above Milankovitch's thickness (D/R = 0.10748, N = 1800): with
     // μ = 0.40 it stands, with 0.39 it does not; with μ = 0.30 it falls, sliding at both

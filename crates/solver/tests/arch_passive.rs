@@ -1,4 +1,4 @@
-//! Passive restraint of a fill (SPEC §5.1, §5.6): its capacities against the closed form, the
+//! Passive restraint of a fill (model §5.1, §5.6): its capacities against the closed form, the
 //! whole bridge in equilibrium with the forces it mobilises, and the load factor never lowered.
 
 // Fixtures: a failed construction should fail the test loudly.

@@ -1,4 +1,4 @@
-//! A load rolled across an arch (SPEC §5.3): the sweep answers each stop as a solve of that stop
+//! A load rolled across an arch (model §5.3): the sweep answers each stop as a solve of that stop
 //! alone does (the warm simplex method's λ against the interior-point solves), its critical stop
 //! with the state a solve of that stop gives, and says when its time ran out.
 

@@ -26,7 +26,7 @@ fn dead_factor(arch: &CircularArch, unit_weight: f64, friction: Option<f64>) -> 
 #[test]
 fn voussoir_counts_from_1_to_10000() {
     // A thick arch (D = 0.5R) stands for every N; a thin one (D = 0.05R) stands only for
-    // N ≤ 3 (SPEC §1.4).
+    // N ≤ 3 (model §1.4).
     for n in [1, 2, 3, 4, 10, 100, 1000, 10_000] {
         assert_eq!(
             dead_factor(&semicircle(n, 10.0, 5.0), 1.0, None),

@@ -1,4 +1,4 @@
-//! Minimum thickness of circular arches against Milankovitch (SPEC §1.4) and against an
+//! Minimum thickness of circular arches against Milankovitch (model §1.4) and against an
 //! independent hand computation of the governing mechanism's virtual work.
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
@@ -32,7 +32,7 @@ fn found(m: &MinimumThickness) -> (f64, f64, Mechanism) {
 
 #[test]
 fn milankovitch_minimum_thickness_1800_voussoirs() {
-    // SPEC §1.4: the thesis brackets d/R between 0.10747 and 0.10748 at N = 1800 curved
+    // model §1.4: the thesis brackets d/R between 0.10747 and 0.10748 at N = 1800 curved
     // voussoirs; the exact limit is 0.10748 (N → ∞: 0.1075) with rupture at 54.5° from the crown.
     let a = circular_arch(1800, 10.0, 1.0, 0.0, VoussoirShape::Curved);
     let m = minimum(&a, None);
@@ -97,7 +97,7 @@ fn four_voussoirs_match_the_hand_computed_mechanism() {
 
 #[test]
 fn three_or_fewer_voussoirs_have_no_finite_minimum() {
-    // SPEC §1.4: N = 1, 2, 3 stand however thin under symmetric dead load.
+    // model §1.4: N = 1, 2, 3 stand however thin under symmetric dead load.
     for n in 1..=3 {
         assert_eq!(
             minimum(

@@ -1,4 +1,4 @@
-//! The non-circular search on a slope over a thin weak layer (SPEC §4.4).
+//! The non-circular search on a slope over a thin weak layer (model §4.4).
 #![allow(clippy::unwrap_used)]
 
 use std::num::NonZeroUsize;

@@ -34,7 +34,7 @@ fn circle(x: f64, y: f64) -> SlipCircle {
 
 #[test]
 fn spencer_example_circle_lies_in_the_valley_of_the_contour_map() {
-    // SPEC §2.3: contours roughly elliptical, the critical centre near the perpendicular bisector
+    // model §2.3: contours roughly elliptical, the critical centre near the perpendicular bisector
     // of the slope on its uphill side; Spencer's circle (X = 31.6 ft, Y = 209.2 ft) near it.
     let p = problem(
         spencer_1967::HEIGHT,

@@ -1,4 +1,4 @@
-//! Any assembly of polygonal blocks on fixed supports (SPEC §5.4): the polygons are checked,
+//! Any assembly of polygonal blocks on fixed supports (model §5.4): the polygons are checked,
 //! oriented counter-clockwise, and their contacts found where an edge of one block runs along
 //! an edge of another block or of a support, in the opposite direction, over a positive length.
 //! Each contact is a Livesley interface between its two ends (q and s there, t along it).

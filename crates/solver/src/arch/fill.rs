@@ -1,4 +1,4 @@
-//! Fill over an arch (SPEC §5.1): its dead weight as a vertical load on each voussoir's extrados
+//! Fill over an arch (model §5.1): its dead weight as a vertical load on each voussoir's extrados
 //! (the column of fill between the extrados and the road), and loads on the road dispersed
 //! through the fill down to the extrados.
 //!
@@ -371,7 +371,7 @@ pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> V
     out
 }
 
-/// Passive restraint of the fill (SPEC §5.1): where the arch sways into the fill, a horizontal
+/// Passive restraint of the fill (model §5.1): where the arch sways into the fill, a horizontal
 /// pressure on the extrados of up to `mobilisation`·K_p·σ_v, K_p = (1 + sin φ)/(1 − sin φ) and
 /// σ_v = γ_f·(road − y) the fill's vertical stress.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,4 +1,4 @@
-//! Assemblies engineers describe by a few numbers (SPEC §5.4): multi-ring circular arches and
+//! Assemblies engineers describe by a few numbers (model §5.4): multi-ring circular arches and
 //! circular spans on piers, built as polygons and handed to [`Assembly::from_polygons`], which
 //! finds their contacts.
 //!

@@ -1,5 +1,5 @@
 //! Blocks and interfaces of a rigid-block assembly, and the two ways to make one: the circular
-//! arch of the thesis' "Arch Stability" program (SPEC §1.3) and an explicit chain of
+//! arch of the thesis' "Arch Stability" program (model §1.3) and an explicit chain of
 //! quadrilaterals given by their corners.
 //!
 //! Circular arch: centre at the origin, middle radius R, thickness D (intrados R − D/2, extrados

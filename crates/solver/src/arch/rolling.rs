@@ -1,4 +1,4 @@
-//! A load rolled across a structure (SPEC §5.3): the live-load factor at each stop of a set of
+//! A load rolled across a structure (model §5.3): the live-load factor at each stop of a set of
 //! live loads on the same blocks, limits and dead loads.
 //!
 //! Consecutive stops share everything but the live loads, so the dead load is checked once, at

@@ -1,5 +1,5 @@
 //! The line of thrust: at every interface, the point of action of the resultant of q and s,
-//! (q·P_q + s·P_s)/(q + s) (SPEC §1.1), with the normal and shear forces and the eccentricity;
+//! (q·P_q + s·P_s)/(q + s) (model §1.1), with the normal and shear forces and the eccentricity;
 //! and the reactions of the two supports, the forces the first and last interfaces carry.
 
 use super::geometry::Assembly;

@@ -1,4 +1,4 @@
-//! The embankment, the slip circle and the vertical slices it is cut into (SPEC §2.1; the
+//! The embankment, the slip circle and the vertical slices it is cut into (model §2.1; the
 //! thesis' "Geometry Configuration" script).
 //!
 //! The slip circle passes through its lower end, which lies on the ground at `F_e·H` in front of

@@ -1,5 +1,5 @@
 //! Stability of embankments by Spencer's method (Spencer 1967, with the moment equation of the
-//! 1973 revision), following the "Slope Stability" program of the thesis in `shared/seed`.
+//! 1973 revision), following the "Slope Stability" program of the thesis in the thesis.
 //!
 //! Coordinates: x to the right, y up, the toe of the embankment at the origin, ground level
 //! y = 0 in front of the toe (x < 0), the slope face rising to the crest (L, H) and the crest at

@@ -118,7 +118,7 @@ mod tests {
 
     #[test]
     fn spencer_example_refined_from_ten_slices_reaches_the_converged_f() {
-        // Spencer (1967) example: converged F = 1.0695 (SPEC §2.3). From 10 slices (F = 1.07188
+        // Spencer (1967) example: converged F = 1.0695 (model §2.3). From 10 slices (F = 1.07188
         // in the thesis' table) the doublings settle to 1e-5; the answer is within 5e-5 of the
         // published four digits (their rounding).
         let settings = RefinementSettings::new(1e-5);

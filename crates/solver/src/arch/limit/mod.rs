@@ -290,7 +290,7 @@ fn final_margin(problem: &ArchProblem, settings: &LimitSettings) -> Option<(f64,
         .map(|m| (m.margin, m.iterations))
 }
 
-/// Livesley's dead-load problem with friction that does not dilate (SPEC §5.5): see
+/// Livesley's dead-load problem with friction that does not dilate (model §5.5): see
 /// [`non_associative`]; with `only_if_sliding` the iteration runs only when the associative
 /// mechanism slides.
 pub fn solve_dead_load_non_associative(
@@ -308,7 +308,7 @@ pub fn solve_dead_load_non_associative(
     }
 }
 
-/// Livesley's live-load problem with friction that does not dilate (SPEC §5.5): see
+/// Livesley's live-load problem with friction that does not dilate (model §5.5): see
 /// [`non_associative`]; `only_if_sliding` as for the dead load.
 pub fn solve_live_load_non_associative(
     problem: &ArchProblem,

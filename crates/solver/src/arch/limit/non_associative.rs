@@ -1,4 +1,4 @@
-//! Friction as it acts (SPEC §5.5): Coulomb sliding without dilatancy, by the iterative linear
+//! Friction as it acts (model §5.5): Coulomb sliding without dilatancy, by the iterative linear
 //! programmes of Gilbert, Casapulla & Ahmed (2006). The associative programme makes a sliding
 //! joint open as it slides (normality on μ(q + s) ∓ t ≥ 0), which real joints do not; the
 //! load factor may then over-estimate (Livesley 1978, §2.7–2.9).
@@ -12,7 +12,7 @@
 //! (Ñ = N⁰ for the first step).
 //!
 //! Ñ for the next step is the paper's relaxation between the last two steps' normal forces,
-//! Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), β = 0.6 (SPEC §5.5: its starting point and
+//! Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), β = 0.6 (model §5.5: its starting point and
 //! relaxation). It converges geometrically, and on some walls not at all: on 108 walls, panels
 //! and arches (`bench/na_walls.py`: two leaves under a cap, 0.5–3 high and 0.3 or 0.5 wide,
 //! μ 0.3–0.9, pushed at the cap's top or mid-height; three leaves; running-bond panels of 3–6

@@ -78,7 +78,7 @@ pub struct ArchProblem {
     pub(super) friction_slope: f64,
 }
 
-/// Crushing of the joints (SPEC §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
+/// Crushing of the joints (model §5.2): a joint of thickness t carries N = q + s ≤ σ_c·t and a
 /// moment about its middle |M| ≤ N·(t − N/σ_c)/2 (the rectangular stress block), linearised by
 /// the tangents to that parabola at `planes` values of N/(σ_c·t) spaced as
 /// ½(1 − cos(πk/(planes − 1))) — denser at both ends, where the curve bends; the first tangent

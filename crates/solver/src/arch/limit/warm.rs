@@ -1,6 +1,6 @@
 //! The live-load programme of a chain (with or without passive restraint), on the simplex
 //! method and warm from one set of live loads to the next: the stops of a rolling load
-//! (SPEC §5.3).
+//! (model §5.3).
 //!
 //! On a chain the resultants of interface k are (q, s, t)_k = D_k (x + C_k) (see
 //! [`crate::arch::chain`]), C_k the wrench of every load on the blocks before k; a passive force

@@ -1,4 +1,4 @@
-//! Where a slip surface enters and leaves the ground (SPEC §4.2).
+//! Where a slip surface enters and leaves the ground (model §4.2).
 
 use super::polyline::Polyline;
 use super::SlipShape;

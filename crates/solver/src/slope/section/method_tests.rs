@@ -1,4 +1,4 @@
-//! The methods side by side and polyline surfaces on sections (SPEC §4.2–4.3), against
+//! The methods side by side and polyline surfaces on sections (model §4.2–4.3), against
 //! independent computations.
 
 use std::num::NonZeroUsize;

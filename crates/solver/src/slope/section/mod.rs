@@ -1,4 +1,4 @@
-//! Real cross-sections (SPEC §4.1–4.2): a ground line facing either way, layers listed from the
+//! Real cross-sections (model §4.1–4.2): a ground line facing either way, layers listed from the
 //! top down, bedrock, a piezometric line (ponded water where it lies above the ground), per-soil
 //! r_u, surcharges, line loads and a tension crack; slip surfaces that are absolute circles or
 //! any polyline.

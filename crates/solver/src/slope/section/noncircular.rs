@@ -1,4 +1,4 @@
-//! The critical non-circular surface (SPEC §4.4). Two starts: the critical circle's polyline
+//! The critical non-circular surface (model §4.4). Two starts: the critical circle's polyline
 //! (`vertices` points at equal steps from entry to exit), and the best block surface along the
 //! section's layer boundaries ([`blocks`]: a grid of x₁, x₂ on each, then Nelder–Mead), which
 //! is where a thin weak layer's surface lies and where no polyline moved from a circle gets.

@@ -1,4 +1,4 @@
-//! The critical circle of a section (SPEC §4.4): centres on a grid, several radii at each (a
+//! The critical circle of a section (model §4.4): centres on a grid, several radii at each (a
 //! range, tangents to given elevations, or chosen from the section), the least F over radii
 //! mapped over the centres, then Nelder–Mead over (x_c, y_c, R) from the best few grid points.
 //!

@@ -1,4 +1,4 @@
-//! Sections checked against published and analytic values (SPEC §4.5).
+//! Sections checked against published and analytic values (model §4.5).
 
 use std::num::NonZeroUsize;
 
@@ -65,7 +65,7 @@ pub(super) fn solve(
 
 #[test]
 fn fredlund_krahn_case_1_facing_left() {
-    // SPEC §4.5: ground falling to the right, circle (120, 90), R = 80; published Spencer 2.073,
+    // model §4.5: ground falling to the right, circle (120, 90), R = 80; published Spencer 2.073,
     // Bishop 2.080, ordinary 1.928 (from their slices). Bishop's F for this circle integrated
     // independently (200,000 strips, /tmp/fk.py-style: F = Σ(c'b + W tan φ')/m_α / Σ W sin α)
     // is 2.07563; the ordinary method 1.92768 agrees with the published 1.928, so the geometry is
@@ -178,7 +178,7 @@ pub(super) fn infinite_slope(beta_deg: f64, z: f64, length: f64) -> (Vec<(f64, f
 
 #[test]
 fn infinite_slope_with_r_u_and_with_parallel_seepage() {
-    // SPEC §4.5: c' = 0, F = (1 − r_u·sec²β)·tan φ'/tan β; with the water table at the ground
+    // model §4.5: c' = 0, F = (1 − r_u·sec²β)·tan φ'/tan β; with the water table at the ground
     // and seepage parallel to the face, F = (γ'/γ)·tan φ'/tan β. Parallel seepage puts the
     // piezometric head z·sin²β below the ground at depth z (u = γ_w·z·cos²β).
     let (beta, phi, z, gamma, gamma_w): (f64, f64, f64, f64, f64) = (20.0, 35.0, 2.0, 20.0, 9.81);
@@ -378,7 +378,7 @@ fn acads_search(region: CircleRegion, hard: bool) -> CircleSearch {
 
 #[test]
 fn acads_1a_critical_circle_with_automatic_bounds() {
-    // SPEC §4.5: Spencer F ≈ 0.986 (Slide2), Bishop 0.987, the study's referee 1.00. The search
+    // model §4.5: Spencer F ≈ 0.986 (Slide2), Bishop 0.987, the study's referee 1.00. The search
     // finds a circle tangent to the level ground at the toe with F = 0.984 (its own grid; a
     // lower F than Slide2's is a better minimum, not an error: 0.2 % apart).
     let section = Section::new(one_soil(&ACADS_1A, 20.0, 3.0, 19.6)).unwrap();

@@ -1,5 +1,5 @@
 //! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
-//! equation alone at a fixed θ (SPEC §2.2; the equations are written out in [`super`]).
+//! equation alone at a fixed θ (model §2.2; the equations are written out in [`super`]).
 
 use super::kernel::{resultant, Kernel, Lane, Sums};
 use super::scan::Scan;
@@ -36,7 +36,7 @@ pub(super) struct Residuals {
     pub min_m_alpha: f64,
 }
 
-/// Q of one slice (SPEC §2.2) and the denominator m_α.
+/// Q of one slice (model §2.2) and the denominator m_α.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct SliceResultant {
     pub q: f64,

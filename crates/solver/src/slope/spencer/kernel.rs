@@ -1,4 +1,4 @@
-//! The arithmetic of one slice's inter-slice resultant Q (SPEC §2.2), and the slice sums of
+//! The arithmetic of one slice's inter-slice resultant Q (model §2.2), and the slice sums of
 //! both residuals computed a block of slices at a time.
 //!
 //! The per-slice work is six divisions; done one slice after the other it is bound by the
@@ -267,7 +267,7 @@ impl pulp::WithSimd for One<'_> {
 mod tests {
     use super::*;
 
-    /// The sums slice after slice, the arithmetic written out as SPEC §2.2 gives it.
+    /// The sums slice after slice, the arithmetic written out as model §2.2 gives it.
     fn one_by_one(lanes: &[Lane], f: f64, theta: f64, start: f64) -> Sums {
         let (sin_t, cos_t) = theta.sin_cos();
         let mut s = Sums {

@@ -1,4 +1,4 @@
-//! The methods engineers compare with Spencer's (SPEC §4.3), on the same slices: the ordinary
+//! The methods engineers compare with Spencer's (model §4.3), on the same slices: the ordinary
 //! method (Fellenius), Bishop's simplified, Janbu's simplified (uncorrected) and
 //! Morgenstern–Price with any inter-slice function.
 //!

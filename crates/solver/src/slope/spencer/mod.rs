@@ -2,7 +2,7 @@
 //! forces that satisfy both force and moment equilibrium (Spencer 1967; moment equation of the
 //! 1973 revision, about each base middle).
 //!
-//! # Equations (SPEC §2.2)
+//! # Equations (model §2.2)
 //! Slice i carries known forces (weight W, seismic k_h·W towards the toe and k_v·W downwards,
 //! external F_x, F_y): A_n is their component normal to the base (pressing it), A_t their
 //! component along the base in the driving sense. With the base shear mobilised as

@@ -35,7 +35,7 @@ fn solve(p: &SlopeProblem) -> (f64, f64, SpencerSolution) {
 
 #[test]
 fn spencer_1967_example_converged() {
-    // Spencer (1967) example, converged F = 1.0695, θ = 22.43° (SPEC §2.3); ±2e-4, ±0.01°.
+    // Spencer (1967) example, converged F = 1.0695, θ = 22.43° (model §2.3); ±2e-4, ±0.01°.
     for n in [500, 1000] {
         let (f, theta, _) = solve(&spencer_example(n, 10.0, 1.0));
         assert!((f - 1.0695).abs() < 2e-4, "N = {n}: F = {f}");
@@ -71,7 +71,7 @@ fn thesis_table_of_f_against_number_of_slices() {
 
 #[test]
 fn bishop_simplified_for_the_spencer_circle() {
-    // SPEC §2.3: Bishop's simplified F for the same circle ≈ 1.040 (1.0397 to 4 decimals).
+    // model §2.3: Bishop's simplified F for the same circle ≈ 1.040 (1.0397 to 4 decimals).
     let (_, _, s) = solve(&spencer_example(1000, 10.0, 1.0));
     let bishop = s.bishop_factor_of_safety.unwrap();
     assert!((bishop - 1.0397).abs() < 1e-4, "Bishop F = {bishop}");
@@ -79,7 +79,7 @@ fn bishop_simplified_for_the_spencer_circle() {
 
 #[test]
 fn f_depends_on_cohesion_and_unit_weight_only_through_their_ratio() {
-    // SPEC §2.3: scaling c' and γ together leaves F and θ unchanged (1e-10: rounding).
+    // model §2.3: scaling c' and γ together leaves F and θ unchanged (1e-10: rounding).
     let (f1, t1, _) = solve(&spencer_example(200, 10.0, 1.0));
     for gamma in [1e-6, 1.0, 18.5, 1e6] {
         let (f, t, _) = solve(&spencer_example(200, gamma, 1.0));
