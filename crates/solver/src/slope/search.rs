@@ -289,6 +289,106 @@ pub(crate) fn unsolved_summary(
     (count, least, near)
 }
 
+/// The grid points that have an F, least F first: (F, i, j).
+fn ranked(factors: &FactorGrid) -> Vec<(f64, usize, usize)> {
+    let mut points: Vec<(f64, usize, usize)> = factors
+        .factors
+        .iter()
+        .enumerate()
+        .flat_map(|(j, row)| {
+            row.iter()
+                .enumerate()
+                .filter_map(move |(i, f)| f.map(|f| (f, i, j)))
+        })
+        .collect();
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    points
+}
+
+/// A grid of the same size centred on the centre `v` (kept above the lower end).
+fn recentred(grid: SearchGrid, v: &[f64]) -> SearchGrid {
+    let (half_x, half_y) = (
+        0.5 * (grid.x_max - grid.x_min),
+        0.5 * (grid.y_max - grid.y_min),
+    );
+    let y_centre = v[1].max(half_y * 0.1 + f64::MIN_POSITIVE);
+    SearchGrid {
+        x_min: v[0] - half_x,
+        x_max: v[0] + half_x,
+        y_min: (y_centre - half_y).max(1e-6 * half_y),
+        y_max: y_centre + half_y,
+        ..grid
+    }
+}
+
+/// Nelder–Mead from grid point (i, j): the centre at the grid's lower-end factor, then, when it
+/// is searched too, the lower end with it.
+fn refine_from(
+    problem: &SearchProblem,
+    grid: &SearchGrid,
+    factors: &FactorGrid,
+    (i, j): (usize, usize),
+    settings: &SearchSettings,
+    budget: &Budget,
+) -> Minimum {
+    let (dx, dy) = grid.cell();
+    let scale = dx.abs().max(dy.abs());
+    let circle_at = |v: &[f64]| SlipCircle {
+        x: v[0],
+        y: v[1],
+        lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
+    };
+    let objective = |v: &[f64]| {
+        if budget.is_spent() {
+            return f64::INFINITY;
+        }
+        let outside =
+            v[0] < grid.x_min || v[0] > grid.x_max || v[1] < grid.y_min || v[1] > grid.y_max;
+        if settings.hard_bounds && outside {
+            return f64::INFINITY;
+        }
+        if let (Some(max), Some(&f_e)) = (problem.lower_end_factor_max, v.get(2)) {
+            if !(0.0..=max).contains(&f_e) {
+                return f64::INFINITY;
+            }
+        }
+        if !within_reach(circle_at(v), settings.max_radius) {
+            return f64::INFINITY;
+        }
+        factor_of_safety(problem, circle_at(v), &settings.spencer).unwrap_or(f64::INFINITY)
+    };
+    // Centres first, at the grid's lower-end factor…
+    let start = [factors.xs[i], factors.ys[j]];
+    let centres = nelder_mead(
+        objective,
+        &start,
+        &[0.5 * dx, 0.5 * dy],
+        1e-9 * scale,
+        settings.max_refine_evaluations,
+    );
+    // …then, when it is searched too, the lower end with them, from there: never
+    // worse than the first refinement, whose point starts the simplex.
+    match problem.lower_end_factor_max {
+        Some(max) if centres.value.is_finite() => {
+            let v = &centres.point;
+            let start = [v[0], v[1], problem.lower_end_factor.clamp(0.0, max)];
+            let step = [0.25 * dx, 0.25 * dy, 0.1 * max];
+            let with_lower_end = nelder_mead(
+                objective,
+                &start,
+                &step,
+                1e-9 * scale,
+                settings.max_refine_evaluations,
+            );
+            Minimum {
+                evaluations: centres.evaluations + with_lower_end.evaluations,
+                ..with_lower_end
+            }
+        }
+        _ => centres,
+    }
+}
+
 /// Searches the critical circle over `grid` (moving it when the minimum is on its edge), within
 /// `budget`: circles not evaluated by its end count as invalid and the status says so.
 pub fn search_critical_circle(
@@ -303,17 +403,7 @@ pub fn search_critical_circle(
     loop {
         let (factors, outcomes) = evaluate_grid(problem, &grid, settings, budget);
         evaluations += grid.nx * grid.ny;
-        let mut points: Vec<(f64, usize, usize)> = factors
-            .factors
-            .iter()
-            .enumerate()
-            .flat_map(|(j, row)| {
-                row.iter()
-                    .enumerate()
-                    .filter_map(move |(i, f)| f.map(|f| (f, i, j)))
-            })
-            .collect();
-        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let points = ranked(&factors);
         let Some(&(_, bi, bj)) = points.first() else {
             let (unsolved, unsolved_bishop_minimum, _) = unsolved_summary(&outcomes, (0, 0));
             return SearchSolution {
@@ -329,7 +419,6 @@ pub fn search_critical_circle(
                 unsolved_near_minimum: false,
             };
         };
-        let (dx, dy) = grid.cell();
         // Refine from the best few grid points that are not neighbours of each other.
         let mut starts: Vec<(usize, usize)> = Vec::new();
         for &(_, i, j) in &points {
@@ -345,66 +434,7 @@ pub fn search_critical_circle(
         }
         let refined: Vec<Minimum> = starts
             .par_iter()
-            .map(|&(i, j)| {
-                let scale = dx.abs().max(dy.abs());
-                let circle_at = |v: &[f64]| SlipCircle {
-                    x: v[0],
-                    y: v[1],
-                    lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
-                };
-                let objective = |v: &[f64]| {
-                    if budget.is_spent() {
-                        return f64::INFINITY;
-                    }
-                    let outside = v[0] < grid.x_min
-                        || v[0] > grid.x_max
-                        || v[1] < grid.y_min
-                        || v[1] > grid.y_max;
-                    if settings.hard_bounds && outside {
-                        return f64::INFINITY;
-                    }
-                    if let (Some(max), Some(&f_e)) = (problem.lower_end_factor_max, v.get(2)) {
-                        if !(0.0..=max).contains(&f_e) {
-                            return f64::INFINITY;
-                        }
-                    }
-                    if !within_reach(circle_at(v), settings.max_radius) {
-                        return f64::INFINITY;
-                    }
-                    factor_of_safety(problem, circle_at(v), &settings.spencer)
-                        .unwrap_or(f64::INFINITY)
-                };
-                // Centres first, at the grid's lower-end factor…
-                let start = [factors.xs[i], factors.ys[j]];
-                let centres = nelder_mead(
-                    objective,
-                    &start,
-                    &[0.5 * dx, 0.5 * dy],
-                    1e-9 * scale,
-                    settings.max_refine_evaluations,
-                );
-                // …then, when it is searched too, the lower end with them, from there: never
-                // worse than the first refinement, whose point starts the simplex.
-                match problem.lower_end_factor_max {
-                    Some(max) if centres.value.is_finite() => {
-                        let v = &centres.point;
-                        let start = [v[0], v[1], problem.lower_end_factor.clamp(0.0, max)];
-                        let step = [0.25 * dx, 0.25 * dy, 0.1 * max];
-                        let with_lower_end = nelder_mead(
-                            objective,
-                            &start,
-                            &step,
-                            1e-9 * scale,
-                            settings.max_refine_evaluations,
-                        );
-                        Minimum {
-                            evaluations: centres.evaluations + with_lower_end.evaluations,
-                            ..with_lower_end
-                        }
-                    }
-                    _ => centres,
-                }
-            })
+            .map(|&start| refine_from(problem, &grid, &factors, start, settings, budget))
             .collect();
         evaluations += refined.iter().map(|r| r.evaluations).sum::<usize>();
         let best = refined
@@ -431,19 +461,7 @@ pub fn search_critical_circle(
             && regrids < settings.max_regrids
             && !budget.is_spent()
         {
-            // Centre a grid of the same size on the best point found.
-            let (half_x, half_y) = (
-                0.5 * (grid.x_max - grid.x_min),
-                0.5 * (grid.y_max - grid.y_min),
-            );
-            let y_centre = v[1].max(half_y * 0.1 + f64::MIN_POSITIVE);
-            grid = SearchGrid {
-                x_min: v[0] - half_x,
-                x_max: v[0] + half_x,
-                y_min: (y_centre - half_y).max(1e-6 * half_y),
-                y_max: y_centre + half_y,
-                ..grid
-            };
+            grid = recentred(grid, &v);
             regrids += 1;
             continue;
         }

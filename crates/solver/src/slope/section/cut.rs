@@ -122,43 +122,12 @@ impl Cut {
         let scale = (exit - entry).max(ground.y_at(entry).abs()).max(1e-9);
         let tolerance = SAME_CUT * scale;
         let (xa, mut xb) = (entry, exit);
-        let mut crack = None;
-        if let Some(c) = section.tension_crack {
-            let crack_line = Polyline::new(
-                ground
-                    .points()
-                    .iter()
-                    .map(|p| (p.0, p.1 - c.depth))
-                    .collect(),
-            )
-            .map_err(|_| SlopeError::Conflict {
-                parameter: SlopeParameter::TensionCrackDepth,
-                reason: "the crack line is not a valid line".to_owned(),
-            })?;
-            let mut candidates = shape_crossings(shape, &crack_line, xa, xb);
-            if let Some(b) = &section.bedrock {
-                candidates.extend(b.crossings(&crack_line, xa, xb));
-            }
-            let last = candidates
-                .into_iter()
-                .filter(|&x| {
-                    x > xa + tolerance
-                        && x < xb - tolerance
-                        && (base(x) - crack_line.y_at(x)).abs() <= 1e-7 * scale
-                })
-                .max_by(f64::total_cmp);
-            let Some(x) = last else {
-                return Err(SlopeError::NoSlipMass {
-                    parameter: SlopeParameter::TensionCrackDepth,
-                    reason: format!(
-                        "the slip surface never lies deeper than the crack ({} below the \
-                         ground): the whole mass would be inside the crack",
-                        c.depth
-                    ),
-                });
-            };
-            xb = x;
-            crack = Some((x, crack_line.y_at(x), ground.y_at(x)));
+        let crack = match section.tension_crack {
+            Some(c) => Some(crack_at(section, shape, c.depth, (xa, xb), &base, scale)?),
+            None => None,
+        };
+        if let Some(c) = crack {
+            xb = c.0;
         }
         let cuts = base_cuts(section, shape, xa, xb, tolerance);
         let points = top_points(section, xa, xb, tolerance);
@@ -219,6 +188,48 @@ impl Cut {
             mirrored,
         })
     }
+}
+
+/// Where the slip surface rises through the tension crack's line (the ground `depth` lower) at
+/// its upper end: (x, y of the crack bottom, y of the ground).
+fn crack_at(
+    section: &Section,
+    shape: &SlipShape,
+    depth: f64,
+    (xa, xb): (f64, f64),
+    base: &dyn Fn(f64) -> f64,
+    scale: f64,
+) -> Result<(f64, f64, f64), SlopeError> {
+    let ground = &section.ground;
+    let tolerance = SAME_CUT * scale;
+    let crack_line = Polyline::new(ground.points().iter().map(|p| (p.0, p.1 - depth)).collect())
+        .map_err(|_| SlopeError::Conflict {
+            parameter: SlopeParameter::TensionCrackDepth,
+            reason: "the crack line is not a valid line".to_owned(),
+        })?;
+    let mut candidates = shape_crossings(shape, &crack_line, xa, xb);
+    if let Some(b) = &section.bedrock {
+        candidates.extend(b.crossings(&crack_line, xa, xb));
+    }
+    let last = candidates
+        .into_iter()
+        .filter(|&x| {
+            x > xa + tolerance
+                && x < xb - tolerance
+                && (base(x) - crack_line.y_at(x)).abs() <= 1e-7 * scale
+        })
+        .max_by(f64::total_cmp);
+    let Some(x) = last else {
+        return Err(SlopeError::NoSlipMass {
+            parameter: SlopeParameter::TensionCrackDepth,
+            reason: format!(
+                "the slip surface never lies deeper than the crack ({} below the \
+                 ground): the whole mass would be inside the crack",
+                depth
+            ),
+        });
+    };
+    Ok((x, crack_line.y_at(x), ground.y_at(x)))
 }
 
 /// Sorted x in (a, b) closer than `tolerance` merged, with a and b at the ends.

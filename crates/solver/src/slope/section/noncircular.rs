@@ -209,6 +209,49 @@ fn best_block(section: &Section, trial: &dyn Fn(&Points) -> f64) -> Option<Vec<(
     })
 }
 
+/// A trial's F at `slices`, if four times as many give it again (to 1 %): a surface can have a
+/// root at one slicing only, which an optimiser would happily exploit. Infinite otherwise.
+fn confirmed_factor(
+    section: &Section,
+    mirror: &Section,
+    shape: &SlipShape,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    settings: &SpencerSettings,
+) -> f64 {
+    let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
+    let at = |n: NonZeroUsize| -> Option<f64> {
+        let cut = place(section, Some(mirror), shape, n, seismic, None).ok()?;
+        match spencer_factor_outcome(&cut.model, settings) {
+            FactorOutcome::Solved(s) => Some(s.factor_of_safety),
+            FactorOutcome::Unsolved { .. } => None,
+        }
+    };
+    match (at(slices), at(doubled)) {
+        (Some(f), Some(g)) if (f - g).abs() <= 1e-2 * f => f,
+        _ => f64::INFINITY,
+    }
+}
+
+/// The surface `start` (left to right) as the search's parameters with `n` vertices: the
+/// interior vertices' fractions along x, and the ends' x with each vertex's depth below the
+/// ground.
+fn resampled(
+    section: &Section,
+    start: &[(f64, f64)],
+    n: usize,
+) -> Option<(Vec<(f64, f64)>, Vec<f64>)> {
+    let (a, b) = (start.first()?.0, start.last()?.0);
+    let start_line = Polyline::new(start.to_vec()).ok()?;
+    let fractions: Vec<(f64, f64)> = (1..n - 1).map(|i| (i as f64, (n - 1) as f64)).collect();
+    let mut v = vec![a, b];
+    for (k, m) in &fractions {
+        let x = a + (b - a) * k / m;
+        v.push((section.ground.y_at(x) - start_line.y_at(x)).max(1e-6 * (b - a)));
+    }
+    Some((fractions, v))
+}
+
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
 /// the best block surface along the section's layer boundaries when that is lower. Once `budget`
 /// is spent every trial fails, so that the optimisers stop with the best found so far.
@@ -229,26 +272,19 @@ pub fn search_noncircular(
     };
     let evaluations = std::cell::Cell::new(0usize);
     let late = || budget.is_spent();
-    // A trial's F at the search's slices, if four times as many give it again (to 1 %): a
-    // surface can have a root at one slicing only, which an optimiser would happily exploit.
-    let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
     let evaluate = |points: &[(f64, f64)]| -> f64 {
         let Ok(line) = Polyline::new(points.to_vec()) else {
             return f64::INFINITY;
         };
         evaluations.set(evaluations.get() + 1);
-        let shape = SlipShape::Polyline(line);
-        let at = |n: NonZeroUsize| -> Option<f64> {
-            let cut = place(section, Some(&mirror), &shape, n, seismic, None).ok()?;
-            match spencer_factor_outcome(&cut.model, settings) {
-                FactorOutcome::Solved(s) => Some(s.factor_of_safety),
-                FactorOutcome::Unsolved { .. } => None,
-            }
-        };
-        match (at(slices), at(doubled)) {
-            (Some(f), Some(g)) if (f - g).abs() <= 1e-2 * f => f,
-            _ => f64::INFINITY,
-        }
+        confirmed_factor(
+            section,
+            &mirror,
+            &SlipShape::Polyline(line),
+            slices,
+            seismic,
+            settings,
+        )
     };
     // Past the deadline every trial fails, so that the optimisers stop.
     let trial = |points: &[(f64, f64)]| {
@@ -259,15 +295,8 @@ pub fn search_noncircular(
         }
     };
     // The start: the circle's surface resampled at the vertices.
-    let (a, b) = (start.first()?.0, start.last()?.0);
-    let start_line = Polyline::new(start.to_vec()).ok()?;
     let n = vertices.max(3);
-    let fractions: Vec<(f64, f64)> = (1..n - 1).map(|i| (i as f64, (n - 1) as f64)).collect();
-    let mut v = vec![a, b];
-    for (k, m) in &fractions {
-        let x = a + (b - a) * k / m;
-        v.push((section.ground.y_at(x) - start_line.y_at(x)).max(1e-6 * (b - a)));
-    }
+    let (fractions, v) = resampled(section, start, n)?;
     let factor = |fractions: &[(f64, f64)], v: &[f64]| {
         surface_of(section, fractions, v).map_or(f64::INFINITY, |p| trial(&p))
     };

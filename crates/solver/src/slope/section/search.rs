@@ -227,6 +227,199 @@ impl Evaluator<'_> {
     }
 }
 
+impl Evaluator<'_> {
+    /// The least F over the radii at each centre of the grid `xs` × `ys` (rows by y).
+    fn grid(&self, radii: &Radii, xs: &[f64], ys: &[f64]) -> Vec<Vec<CentreResult>> {
+        ys.par_iter()
+            .map(|&y| {
+                xs.iter()
+                    .map(|&x| {
+                        let mut best: Option<(f64, f64)> = None;
+                        let mut unsolved = 0;
+                        let mut bishop: Option<f64> = None;
+                        for r in self.radii(radii, (x, y)) {
+                            if self.is_late() {
+                                break;
+                            }
+                            match self.factor((x, y), r) {
+                                Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
+                                Ok(_) | Err(None) => {}
+                                Err(Some(b)) => {
+                                    unsolved += 1;
+                                    if let Some(b) = b {
+                                        bishop = Some(bishop.map_or(b, |l| l.min(b)));
+                                    }
+                                }
+                            }
+                        }
+                        (best, unsolved, bishop)
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Nelder–Mead on (x, y, R) from each start (R, i, j) of the grid, inside the region and
+    /// its radii: each start's least F, its point and its evaluations.
+    fn refine(
+        &self,
+        region: &CircleRegion,
+        starts: &[(f64, usize, usize)],
+        (xs, ys): (&[f64], &[f64]),
+        settings: &CircleSearchSettings,
+    ) -> Vec<(f64, Vec<f64>, usize)> {
+        let dx = (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64;
+        let dy = (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64;
+        let inside = |v: &[f64]| {
+            v[0] >= region.x_min
+                && v[0] <= region.x_max
+                && v[1] >= region.y_min
+                && v[1] <= region.y_max
+        };
+        let radius_allowed = |v: &[f64]| match &region.radii {
+            Radii::Range { min, max, .. } => v[2] >= *min && v[2] <= *max,
+            Radii::Tangent(ys) => {
+                let below: Vec<f64> = ys.iter().copied().filter(|&y| y < v[1]).collect();
+                let (lo, hi) = below
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
+                        (a.min(y), b.max(y))
+                    });
+                !below.is_empty() && v[2] >= v[1] - hi && v[2] <= v[1] - lo
+            }
+            Radii::Automatic { .. } => v[2] > 0.0 && v[2] <= v[1] - self.deep,
+        };
+        starts
+            .par_iter()
+            .map(|&(r, i, j)| {
+                let objective = |v: &[f64]| {
+                    if self.is_late() || !inside(v) || !radius_allowed(v) {
+                        return f64::INFINITY;
+                    }
+                    self.factor((v[0], v[1]), v[2]).unwrap_or(f64::INFINITY)
+                };
+                let scale = dx.abs().max(dy.abs()).max(r);
+                let m = nelder_mead(
+                    objective,
+                    &[xs[i], ys[j], r],
+                    &[0.5 * dx, 0.5 * dy, 0.05 * r],
+                    1e-9 * scale,
+                    settings.max_refine_evaluations,
+                );
+                (m.value, m.point, m.evaluations)
+            })
+            .collect()
+    }
+}
+
+/// A grid's results summed up: F over the centres, the unsolved circles, the least Bishop F
+/// among them, and the centres that have an F, least first: (F, R, i, j).
+fn summarise(
+    results: &[Vec<CentreResult>],
+    xs: &[f64],
+    ys: &[f64],
+) -> (
+    FactorGrid,
+    usize,
+    Option<f64>,
+    Vec<(f64, f64, usize, usize)>,
+) {
+    let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
+    let unsolved_bishop_minimum = results
+        .iter()
+        .flatten()
+        .filter_map(|r| r.2)
+        .reduce(f64::min);
+    let grid = FactorGrid {
+        xs: xs.to_vec(),
+        ys: ys.to_vec(),
+        factors: results
+            .iter()
+            .map(|row| row.iter().map(|r| r.0.map(|b| b.0)).collect())
+            .collect(),
+    };
+    let mut points: Vec<(f64, f64, usize, usize)> = results
+        .iter()
+        .enumerate()
+        .flat_map(|(j, row)| {
+            row.iter()
+                .enumerate()
+                .filter_map(move |(i, r)| r.0.map(|(f, radius)| (f, radius, i, j)))
+        })
+        .collect();
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    (grid, unsolved, unsolved_bishop_minimum, points)
+}
+
+impl<'a> Evaluator<'a> {
+    /// The evaluator of circles of `section` within `budget`; automatic radii reach down to
+    /// the bedrock's lowest point, or the relief's height below its foot.
+    fn new(
+        section: &'a Section,
+        slices: NonZeroUsize,
+        seismic: Seismic,
+        spencer: SpencerSettings,
+        budget: &'a Budget,
+    ) -> Self {
+        let (_, _, y_low, y_top) = relief(section);
+        let deep = section
+            .bedrock
+            .as_ref()
+            .map_or(y_low - (y_top - y_low).max(1e-6), |b| {
+                b.points().iter().fold(f64::INFINITY, |m, p| m.min(p.1))
+            });
+        Evaluator {
+            section,
+            mirror: section.mirrored(),
+            slices,
+            seismic,
+            spencer,
+            budget,
+            deep,
+        }
+    }
+}
+
+/// Whether the best grid point (i, j) of an nx × ny grid lies on its edge, or the refined
+/// centre `v` on the region's bounds (to 1e-6 of a cell).
+fn is_on_edge(
+    region: &CircleRegion,
+    (bi, bj): (usize, usize),
+    (nx, ny): (usize, usize),
+    v: &[f64],
+) -> bool {
+    let (dx, dy) = (
+        (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64,
+        (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64,
+    );
+    let tolerance = 1e-6 * dx.abs().max(dy.abs());
+    bi == 0
+        || bj == 0
+        || bi + 1 == nx
+        || bj + 1 == ny
+        || v[0] - region.x_min <= tolerance
+        || region.x_max - v[0] <= tolerance
+        || v[1] - region.y_min <= tolerance
+        || region.y_max - v[1] <= tolerance
+}
+
+/// Up to `count` grid points (R, i, j) from `points` (sorted by F), no two of them neighbours.
+fn distinct_starts(points: &[(f64, f64, usize, usize)], count: usize) -> Vec<(f64, usize, usize)> {
+    let mut starts: Vec<(f64, usize, usize)> = Vec::new();
+    for &(_, r, i, j) in points {
+        if starts.len() >= count {
+            break;
+        }
+        if starts
+            .iter()
+            .all(|&(_, a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
+        {
+            starts.push((r, i, j));
+        }
+    }
+    starts
+}
+
 /// The least F over the radii at one centre: (F, R), the number of unsolved circles and the
 /// least Bishop F among them.
 type CentreResult = (Option<(f64, f64)>, usize, Option<f64>);
@@ -243,84 +436,19 @@ pub fn search_circles(
     settings: &CircleSearchSettings,
     budget: &Budget,
 ) -> CircleSearch {
-    let (_, _, y_low, y_top) = relief(section);
-    let deep = section
-        .bedrock
-        .as_ref()
-        .map_or(y_low - (y_top - y_low).max(1e-6), |b| {
-            b.points().iter().fold(f64::INFINITY, |m, p| m.min(p.1))
-        });
-    let evaluator = Evaluator {
-        section,
-        mirror: section.mirrored(),
-        slices,
-        seismic,
-        spencer: settings.spencer,
-        budget,
-        deep,
-    };
+    let evaluator = Evaluator::new(section, slices, seismic, settings.spencer, budget);
     let mut region = region;
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
         let (xs, ys) = (region.xs(), region.ys());
-        let results: Vec<Vec<CentreResult>> = ys
-            .par_iter()
-            .map(|&y| {
-                xs.iter()
-                    .map(|&x| {
-                        let mut best: Option<(f64, f64)> = None;
-                        let mut unsolved = 0;
-                        let mut bishop: Option<f64> = None;
-                        for r in evaluator.radii(&region.radii, (x, y)) {
-                            if evaluator.is_late() {
-                                break;
-                            }
-                            match evaluator.factor((x, y), r) {
-                                Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
-                                Ok(_) | Err(None) => {}
-                                Err(Some(b)) => {
-                                    unsolved += 1;
-                                    if let Some(b) = b {
-                                        bishop = Some(bishop.map_or(b, |l| l.min(b)));
-                                    }
-                                }
-                            }
-                        }
-                        (best, unsolved, bishop)
-                    })
-                    .collect()
-            })
-            .collect();
+        let results = evaluator.grid(&region.radii, &xs, &ys);
         evaluations += xs
             .iter()
             .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
             .map(|c| evaluator.radii(&region.radii, c).len())
             .sum::<usize>();
-        let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
-        let unsolved_bishop_minimum = results
-            .iter()
-            .flatten()
-            .filter_map(|r| r.2)
-            .reduce(f64::min);
-        let grid = FactorGrid {
-            xs: xs.clone(),
-            ys: ys.clone(),
-            factors: results
-                .iter()
-                .map(|row| row.iter().map(|r| r.0.map(|b| b.0)).collect())
-                .collect(),
-        };
-        let mut points: Vec<(f64, f64, usize, usize)> = results
-            .iter()
-            .enumerate()
-            .flat_map(|(j, row)| {
-                row.iter()
-                    .enumerate()
-                    .filter_map(move |(i, r)| r.0.map(|(f, radius)| (f, radius, i, j)))
-            })
-            .collect();
-        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (grid, unsolved, unsolved_bishop_minimum, points) = summarise(&results, &xs, &ys);
         let late = evaluator.is_late();
         let status_of = |found: SearchStatus| {
             if late || evaluator.is_late() {
@@ -347,77 +475,15 @@ pub fn search_circles(
         let unsolved_near_minimum = (bj.saturating_sub(1)..=(bj + 1).min(ys.len() - 1)).any(|j| {
             (bi.saturating_sub(1)..=(bi + 1).min(xs.len() - 1)).any(|i| results[j][i].1 > 0)
         });
-        // Refine from the best few grid points that are not neighbours of each other.
-        let mut starts: Vec<(f64, usize, usize)> = Vec::new();
-        for &(_, r, i, j) in &points {
-            if starts.len() >= settings.starts {
-                break;
-            }
-            if starts
-                .iter()
-                .all(|&(_, a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
-            {
-                starts.push((r, i, j));
-            }
-        }
-        let dx = (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64;
-        let dy = (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64;
-        let inside = |v: &[f64]| {
-            v[0] >= region.x_min
-                && v[0] <= region.x_max
-                && v[1] >= region.y_min
-                && v[1] <= region.y_max
-        };
-        let radius_allowed = |v: &[f64]| match &region.radii {
-            Radii::Range { min, max, .. } => v[2] >= *min && v[2] <= *max,
-            Radii::Tangent(ys) => {
-                let below: Vec<f64> = ys.iter().copied().filter(|&y| y < v[1]).collect();
-                let (lo, hi) = below
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| {
-                        (a.min(y), b.max(y))
-                    });
-                !below.is_empty() && v[2] >= v[1] - hi && v[2] <= v[1] - lo
-            }
-            Radii::Automatic { .. } => v[2] > 0.0 && v[2] <= v[1] - deep,
-        };
-        let refined: Vec<(f64, Vec<f64>, usize)> = starts
-            .par_iter()
-            .map(|&(r, i, j)| {
-                let objective = |v: &[f64]| {
-                    if evaluator.is_late() || !inside(v) || !radius_allowed(v) {
-                        return f64::INFINITY;
-                    }
-                    evaluator
-                        .factor((v[0], v[1]), v[2])
-                        .unwrap_or(f64::INFINITY)
-                };
-                let scale = dx.abs().max(dy.abs()).max(r);
-                let m = nelder_mead(
-                    objective,
-                    &[xs[i], ys[j], r],
-                    &[0.5 * dx, 0.5 * dy, 0.05 * r],
-                    1e-9 * scale,
-                    settings.max_refine_evaluations,
-                );
-                (m.value, m.point, m.evaluations)
-            })
-            .collect();
+        let starts = distinct_starts(&points, settings.starts);
+        let refined = evaluator.refine(&region, &starts, (&xs, &ys), settings);
         evaluations += refined.iter().map(|r| r.2).sum::<usize>();
         let (f, v) = refined
             .into_iter()
             .filter(|r| r.0.is_finite() && r.0 <= f0)
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .map_or((f0, vec![xs[bi], ys[bj], r0]), |r| (r.0, r.1));
-        let tolerance = 1e-6 * dx.abs().max(dy.abs());
-        let on_edge = bi == 0
-            || bj == 0
-            || bi + 1 == xs.len()
-            || bj + 1 == ys.len()
-            || v[0] - region.x_min <= tolerance
-            || region.x_max - v[0] <= tolerance
-            || v[1] - region.y_min <= tolerance
-            || region.y_max - v[1] <= tolerance;
+        let on_edge = is_on_edge(&region, (bi, bj), (xs.len(), ys.len()), &v);
         if on_edge && !hard && regrids < settings.max_regrids && !evaluator.is_late() {
             // Centre a region of the same size on the best point found.
             let (half_x, half_y) = (
