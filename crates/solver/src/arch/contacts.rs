@@ -212,6 +212,153 @@ fn boxes_meet(p: &Polygon, q: &Polygon, tolerance: f64) -> bool {
         && q.lo.1 <= p.hi.1 + tolerance
 }
 
+/// Pairs of polygons (i < j, at least one a block) whose boxes touch, by sweeping the boxes
+/// along x; bounded, so that no input makes the check run for minutes.
+fn candidate_pairs(
+    polygons: &[Polygon],
+    n: usize,
+    tolerance: f64,
+) -> Result<Vec<(usize, usize)>, ArchError> {
+    // Candidate pairs by sweeping the boxes along x.
+    let mut order: Vec<usize> = (0..polygons.len()).collect();
+    order.sort_by(|&i, &j| polygons[i].lo.0.total_cmp(&polygons[j].lo.0));
+    let mut pairs = Vec::new();
+    for (position, &i) in order.iter().enumerate() {
+        for &j in &order[position + 1..] {
+            if polygons[j].lo.0 > polygons[i].hi.0 + tolerance {
+                break;
+            }
+            if (i < n || j < n) && boxes_meet(&polygons[i], &polygons[j], tolerance) {
+                pairs.push((i.min(j), i.max(j)));
+                if pairs.len() > MAX_PAIRS {
+                    return Err(ArchError::geometry(
+                        ArchParameter::Blocks,
+                        format!(
+                            "more than {MAX_PAIRS} pairs of polygons whose boxes touch: \
+                             the polygons overlap, or there are too many"
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+    pairs.sort_unstable();
+    // Edge pairs to compare: bounded, so that no input makes the check run for minutes.
+    let work: usize = pairs
+        .iter()
+        .map(|&(i, j)| polygons[i].points.len() * polygons[j].points.len())
+        .sum();
+    if work > MAX_EDGE_PAIRS {
+        return Err(ArchError::geometry(
+            ArchParameter::Blocks,
+            format!(
+                "too many neighbouring edges to check for contacts ({work} pairs of edges in \
+                 touching boxes; at most {MAX_EDGE_PAIRS}): use fewer corners or blocks"
+            ),
+        ));
+    }
+    Ok(pairs)
+}
+
+/// The contacts between polygons i and j (j ≥ n: a support), as interfaces; an error when the
+/// two overlap.
+fn contacts_between(
+    polygons: &[Polygon],
+    (i, j): (usize, usize),
+    n: usize,
+    tolerance: f64,
+) -> Result<Vec<Interface>, ArchError> {
+    let mut found = Vec::new();
+    let (p, q) = (&polygons[i], &polygons[j]);
+    let overlap = p.edges().any(|(a, b)| {
+        q.edges().any(|(c, d)| {
+            properly_cross(a, b, c, d, tolerance) || same_way_overlap(a, b, c, d, tolerance)
+        })
+    }) || q.points.iter().any(|&v| p.strictly_contains(v, tolerance))
+        || p.points.iter().any(|&v| q.strictly_contains(v, tolerance));
+    if overlap {
+        return Err(ArchError::geometry(
+            p.piece.parameter(),
+            format!("{} and {} overlap", p.piece.name(), q.piece.name()),
+        ));
+    }
+    for (a, b) in p.edges() {
+        for (c, d) in q.edges() {
+            let Some((start, end)) = contact(a, b, c, d, tolerance) else {
+                continue;
+            };
+            let length = (end.0 - start.0).hypot(end.1 - start.1);
+            let tangent = ((end.0 - start.0) / length, (end.1 - start.1) / length);
+            // Out of p (counter-clockwise: the edge turned clockwise).
+            let outward = (tangent.1, -tangent.0);
+            let (normal, lower, upper) = if j < n {
+                (outward, Some(i), Some(j))
+            } else {
+                // A support: the normal points into the block.
+                ((-outward.0, -outward.1), None, Some(i))
+            };
+            found.push(Interface {
+                intrados: start,
+                extrados: end,
+                normal,
+                tangent,
+                angle_deg: tangent.1.atan2(tangent.0).to_degrees(),
+                lower,
+                upper,
+                kind: InterfaceKind::Joint,
+            });
+        }
+    }
+    Ok(found)
+}
+
+/// Every block touches something and is held, through contacts, by a support.
+fn check_held(interfaces: &[Interface], n: usize) -> Result<(), ArchError> {
+    // Every block touches something and is held, through contacts, by a support.
+    let mut neighbours = vec![Vec::new(); n];
+    let mut held = vec![false; n];
+    let mut queue: Vec<usize> = Vec::new();
+    for i in interfaces {
+        match (i.lower, i.upper) {
+            (Some(x), Some(y)) => {
+                neighbours[x].push(y);
+                neighbours[y].push(x);
+            }
+            (None, Some(b)) | (Some(b), None) => {
+                if !held[b] {
+                    held[b] = true;
+                    queue.push(b);
+                }
+            }
+            (None, None) => {}
+        }
+    }
+    while let Some(b) = queue.pop() {
+        for &other in &neighbours[b] {
+            if !held[other] {
+                held[other] = true;
+                queue.push(other);
+            }
+        }
+    }
+    if let Some(b) = held.iter().position(|h| !h) {
+        let touches = !neighbours[b].is_empty();
+        let reason = if touches {
+            format!(
+                "block {} is not connected to any support through its contacts",
+                b + 1
+            )
+        } else {
+            format!("block {} touches no other block and no support", b + 1)
+        };
+        return Err(ArchError::geometry(
+            ArchParameter::BlockPolygon { block: b },
+            reason,
+        ));
+    }
+    Ok(())
+}
+
 impl Assembly {
     /// An assembly of polygonal `blocks` resting on fixed `supports` (polygons too): polygons
     /// of three or more corners in either orientation (clockwise ones are turned round),
@@ -258,128 +405,11 @@ impl Assembly {
         }
         let n = blocks.len();
         let mut interfaces = Vec::new();
-        // Candidate pairs by sweeping the boxes along x.
-        let mut order: Vec<usize> = (0..polygons.len()).collect();
-        order.sort_by(|&i, &j| polygons[i].lo.0.total_cmp(&polygons[j].lo.0));
-        let mut pairs = Vec::new();
-        for (position, &i) in order.iter().enumerate() {
-            for &j in &order[position + 1..] {
-                if polygons[j].lo.0 > polygons[i].hi.0 + tolerance {
-                    break;
-                }
-                if (i < n || j < n) && boxes_meet(&polygons[i], &polygons[j], tolerance) {
-                    pairs.push((i.min(j), i.max(j)));
-                    if pairs.len() > MAX_PAIRS {
-                        return Err(ArchError::geometry(
-                            ArchParameter::Blocks,
-                            format!(
-                                "more than {MAX_PAIRS} pairs of polygons whose boxes touch: \
-                                 the polygons overlap, or there are too many"
-                            ),
-                        ));
-                    }
-                }
-            }
-        }
-        pairs.sort_unstable();
-        // Edge pairs to compare: bounded, so that no input makes the check run for minutes.
-        let work: usize = pairs
-            .iter()
-            .map(|&(i, j)| polygons[i].points.len() * polygons[j].points.len())
-            .sum();
-        if work > MAX_EDGE_PAIRS {
-            return Err(ArchError::geometry(
-                ArchParameter::Blocks,
-                format!(
-                    "too many neighbouring edges to check for contacts ({work} pairs of edges in \
-                     touching boxes; at most {MAX_EDGE_PAIRS}): use fewer corners or blocks"
-                ),
-            ));
-        }
+        let pairs = candidate_pairs(&polygons, n, tolerance)?;
         for &(i, j) in &pairs {
-            let (p, q) = (&polygons[i], &polygons[j]);
-            let overlap = p.edges().any(|(a, b)| {
-                q.edges().any(|(c, d)| {
-                    properly_cross(a, b, c, d, tolerance) || same_way_overlap(a, b, c, d, tolerance)
-                })
-            }) || q.points.iter().any(|&v| p.strictly_contains(v, tolerance))
-                || p.points.iter().any(|&v| q.strictly_contains(v, tolerance));
-            if overlap {
-                return Err(ArchError::geometry(
-                    p.piece.parameter(),
-                    format!("{} and {} overlap", p.piece.name(), q.piece.name()),
-                ));
-            }
-            for (a, b) in p.edges() {
-                for (c, d) in q.edges() {
-                    let Some((start, end)) = contact(a, b, c, d, tolerance) else {
-                        continue;
-                    };
-                    let length = (end.0 - start.0).hypot(end.1 - start.1);
-                    let tangent = ((end.0 - start.0) / length, (end.1 - start.1) / length);
-                    // Out of p (counter-clockwise: the edge turned clockwise).
-                    let outward = (tangent.1, -tangent.0);
-                    let (normal, lower, upper) = if j < n {
-                        (outward, Some(i), Some(j))
-                    } else {
-                        // A support: the normal points into the block.
-                        ((-outward.0, -outward.1), None, Some(i))
-                    };
-                    interfaces.push(Interface {
-                        intrados: start,
-                        extrados: end,
-                        normal,
-                        tangent,
-                        angle_deg: tangent.1.atan2(tangent.0).to_degrees(),
-                        lower,
-                        upper,
-                        kind: InterfaceKind::Joint,
-                    });
-                }
-            }
+            interfaces.extend(contacts_between(&polygons, (i, j), n, tolerance)?);
         }
-        // Every block touches something and is held, through contacts, by a support.
-        let mut neighbours = vec![Vec::new(); n];
-        let mut held = vec![false; n];
-        let mut queue: Vec<usize> = Vec::new();
-        for i in &interfaces {
-            match (i.lower, i.upper) {
-                (Some(x), Some(y)) => {
-                    neighbours[x].push(y);
-                    neighbours[y].push(x);
-                }
-                (None, Some(b)) | (Some(b), None) => {
-                    if !held[b] {
-                        held[b] = true;
-                        queue.push(b);
-                    }
-                }
-                (None, None) => {}
-            }
-        }
-        while let Some(b) = queue.pop() {
-            for &other in &neighbours[b] {
-                if !held[other] {
-                    held[other] = true;
-                    queue.push(other);
-                }
-            }
-        }
-        if let Some(b) = held.iter().position(|h| !h) {
-            let touches = !neighbours[b].is_empty();
-            let reason = if touches {
-                format!(
-                    "block {} is not connected to any support through its contacts",
-                    b + 1
-                )
-            } else {
-                format!("block {} touches no other block and no support", b + 1)
-            };
-            return Err(ArchError::geometry(
-                ArchParameter::BlockPolygon { block: b },
-                reason,
-            ));
-        }
+        check_held(&interfaces, n)?;
         let blocks = polygons[..n]
             .iter()
             .map(|p| {

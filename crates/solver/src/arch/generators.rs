@@ -118,13 +118,9 @@ fn abutment(intrados: Point, extrados: Point, away: Point, depth: f64) -> Vec<Po
     ]
 }
 
-/// A circular arch of `rings` rings (1 to 16) and `piers.spans` spans (1 to 20).
-pub fn bridge(
-    arch: &CircularArch,
-    rings: usize,
-    joints: RingJoints,
-    piers: Piers,
-) -> Result<Bridge, ArchError> {
+/// The ranges of a bridge: 1 to 16 rings, 1 to 20 spans, piers wide enough that the springings
+/// of two spans do not cross and no higher than 1000 times the extrados radius.
+fn check_bridge(arch: &CircularArch, rings: usize, piers: &Piers) -> Result<(), ArchError> {
     if !(1..=16).contains(&rings) {
         return Err(ArchError::range(
             ArchParameter::Rings,
@@ -139,10 +135,7 @@ pub fn bridge(
             "an integer 1 ≤ spans ≤ 20",
         ));
     }
-    let (r_in, r_out) = (
-        arch.radius() - 0.5 * arch.thickness(),
-        arch.radius() + 0.5 * arch.thickness(),
-    );
+    let r_out = arch.radius() + 0.5 * arch.thickness();
     let (right, left) = (
         arch.interface_angle_deg(0),
         arch.interface_angle_deg(arch.voussoirs()),
@@ -169,6 +162,26 @@ pub fn bridge(
             ));
         }
     }
+    Ok(())
+}
+
+/// A circular arch of `rings` rings (1 to 16) and `piers.spans` spans (1 to 20).
+pub fn bridge(
+    arch: &CircularArch,
+    rings: usize,
+    joints: RingJoints,
+    piers: Piers,
+) -> Result<Bridge, ArchError> {
+    check_bridge(arch, rings, &piers)?;
+    let (r_in, r_out) = (
+        arch.radius() - 0.5 * arch.thickness(),
+        arch.radius() + 0.5 * arch.thickness(),
+    );
+    let (right, left) = (
+        arch.interface_angle_deg(0),
+        arch.interface_angle_deg(arch.voussoirs()),
+    );
+    let (c, b) = (right.to_radians(), (180.0 - left).to_radians());
     let pitch = r_in * c.cos() + piers.width + r_in * b.cos();
     let mut polygons = Vec::new();
     let mut ring_of = Vec::new();

@@ -253,6 +253,69 @@ fn sinc(x: f64) -> f64 {
     }
 }
 
+/// The N + 1 interfaces of a chain of blocks: each block's start face, and the last block's
+/// end face; normals into the higher-numbered block.
+fn chain_interfaces(blocks: &[Block], scale: f64) -> Result<Vec<Interface>, ArchError> {
+    let n = blocks.len();
+    let mut interfaces = Vec::with_capacity(n + 1);
+    for k in 0..=n {
+        let (intrados, extrados) = if k < n {
+            (blocks[k].corners[0], blocks[k].corners[1])
+        } else {
+            (blocks[n - 1].corners[3], blocks[n - 1].corners[2])
+        };
+        let length = (extrados.0 - intrados.0).hypot(extrados.1 - intrados.1);
+        let has_length = length > 1e-12 * scale;
+        if !has_length {
+            return Err(ArchError::geometry(
+                ArchParameter::BlockCorners {
+                    block: k.min(n - 1),
+                },
+                format!("interface {} has zero length", k + 1),
+            ));
+        }
+        let tangent = (
+            (extrados.0 - intrados.0) / length,
+            (extrados.1 - intrados.1) / length,
+        );
+        let mut normal = (-tangent.1, tangent.0);
+        let middle = (
+            0.5 * (intrados.0 + extrados.0),
+            0.5 * (intrados.1 + extrados.1),
+        );
+        // Point the normal into the higher-numbered block (out of the lower one at the end).
+        let towards = if k < n {
+            (
+                blocks[k].centroid.0 - middle.0,
+                blocks[k].centroid.1 - middle.1,
+            )
+        } else {
+            (
+                middle.0 - blocks[n - 1].centroid.0,
+                middle.1 - blocks[n - 1].centroid.1,
+            )
+        };
+        if normal.0 * towards.0 + normal.1 * towards.1 < 0.0 {
+            normal = (-normal.0, -normal.1);
+        }
+        let mut angle_deg = tangent.1.atan2(tangent.0).to_degrees();
+        if angle_deg <= -90.0 {
+            angle_deg += 360.0;
+        }
+        interfaces.push(Interface {
+            intrados,
+            extrados,
+            normal,
+            tangent,
+            angle_deg,
+            lower: k.checked_sub(1),
+            upper: (k < n).then_some(k),
+            kind: InterfaceKind::Joint,
+        });
+    }
+    Ok(interfaces)
+}
+
 impl Assembly {
     /// A chain of quadrilateral blocks given by their corners (intrados-start, extrados-start,
     /// extrados-end, intrados-end); consecutive blocks must share a face.
@@ -318,63 +381,7 @@ impl Assembly {
                 centroid,
             });
         }
-        let n = blocks.len();
-        let mut interfaces = Vec::with_capacity(n + 1);
-        for k in 0..=n {
-            let (intrados, extrados) = if k < n {
-                (blocks[k].corners[0], blocks[k].corners[1])
-            } else {
-                (blocks[n - 1].corners[3], blocks[n - 1].corners[2])
-            };
-            let length = (extrados.0 - intrados.0).hypot(extrados.1 - intrados.1);
-            let has_length = length > 1e-12 * scale;
-            if !has_length {
-                return Err(ArchError::geometry(
-                    ArchParameter::BlockCorners {
-                        block: k.min(n - 1),
-                    },
-                    format!("interface {} has zero length", k + 1),
-                ));
-            }
-            let tangent = (
-                (extrados.0 - intrados.0) / length,
-                (extrados.1 - intrados.1) / length,
-            );
-            let mut normal = (-tangent.1, tangent.0);
-            let middle = (
-                0.5 * (intrados.0 + extrados.0),
-                0.5 * (intrados.1 + extrados.1),
-            );
-            // Point the normal into the higher-numbered block (out of the lower one at the end).
-            let towards = if k < n {
-                (
-                    blocks[k].centroid.0 - middle.0,
-                    blocks[k].centroid.1 - middle.1,
-                )
-            } else {
-                (
-                    middle.0 - blocks[n - 1].centroid.0,
-                    middle.1 - blocks[n - 1].centroid.1,
-                )
-            };
-            if normal.0 * towards.0 + normal.1 * towards.1 < 0.0 {
-                normal = (-normal.0, -normal.1);
-            }
-            let mut angle_deg = tangent.1.atan2(tangent.0).to_degrees();
-            if angle_deg <= -90.0 {
-                angle_deg += 360.0;
-            }
-            interfaces.push(Interface {
-                intrados,
-                extrados,
-                normal,
-                tangent,
-                angle_deg,
-                lower: k.checked_sub(1),
-                upper: (k < n).then_some(k),
-                kind: InterfaceKind::Joint,
-            });
-        }
+        let interfaces = chain_interfaces(&blocks, scale)?;
         Ok(Self { blocks, interfaces })
     }
 

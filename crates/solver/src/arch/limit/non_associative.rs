@@ -200,26 +200,95 @@ pub fn iterate<E>(
 ) -> Result<NonAssociative, E> {
     let start = std::time::Instant::now();
     let associative = solve(problem, settings)?;
+    let sliding = associative
+        .mechanism
+        .as_ref()
+        .is_some_and(|m| m.involves_friction());
+    if let Some(answer) = unchanged(problem, &associative, only_if_sliding, sliding) {
+        return Ok(answer);
+    }
+    // The programmes' own force scale W: the blocks' and the other dead loads' weight.
+    let weight = force_scale(
+        problem.assembly(),
+        problem.unit_weight(),
+        problem.dead_loads(),
+    );
+    let mut run = Run::new(&associative, settings.relaxation);
+    let settled = loop {
+        // The paper's relaxation has had its steps without settling: the mixing takes over
+        // from its last state that solved, once, with steps of its own.
+        if run.is_stopped() && !run.take_over() {
+            break false;
+        }
+        run.steps += 1;
+        let solved = step(
+            &problem.with_fixed_friction(&run.used, SLOPE),
+            settings,
+            &associative,
+        )?;
+        match run.record(problem, solved, weight) {
+            After::Settled => break true,
+            After::Continue => {}
+            After::Stop => break false,
+        }
+    };
+    let totals = (
+        run.iterations,
+        run.programmes,
+        start.elapsed().as_secs_f64(),
+    );
+    let corrected = corrected(sliding, &run.first_mechanism);
+    if !settled && never_left(&run.history) {
+        // The associative state is a fixed point (module docs): it answers.
+        let mut solution = associative.clone();
+        solution.mechanism = run.first_mechanism;
+        return Ok(NonAssociative {
+            solution,
+            associative,
+            history: run.history,
+            settled: true,
+            corrected,
+            totals,
+            mixed_from: run.mixed_from,
+        });
+    }
+    Ok(NonAssociative {
+        solution: run.last,
+        associative,
+        history: run.history,
+        settled,
+        corrected,
+        totals,
+        mixed_from: run.mixed_from,
+    })
+}
+
+/// The associative answer as it stands, when there is nothing to iterate: with
+/// `only_if_sliding`, a mechanism that does not slide; no friction; or no state to start from
+/// (where that answer is a collapse under less than the load — a dead load not carried —
+/// friction that does not dilate can only do worse: that answer is settled too).
+fn unchanged(
+    problem: &ArchProblem,
+    associative: &LimitSolution,
+    only_if_sliding: bool,
+    sliding: bool,
+) -> Option<NonAssociative> {
     let single = (
         associative.iterations,
         associative.programmes,
         associative.solve_time_secs,
     );
-    let mut history = vec![associative.load_factor];
-    let sliding = associative
-        .mechanism
-        .as_ref()
-        .is_some_and(|m| m.involves_friction());
+    let answer = |settled| NonAssociative {
+        solution: associative.clone(),
+        associative: associative.clone(),
+        history: vec![associative.load_factor],
+        settled,
+        corrected: None,
+        totals: single,
+        mixed_from: None,
+    };
     if only_if_sliding && !sliding && associative.status == LimitStatus::Solved {
-        return Ok(NonAssociative {
-            solution: associative.clone(),
-            associative,
-            history,
-            settled: true,
-            corrected: None,
-            totals: single,
-            mixed_from: None,
-        });
+        return Some(answer(true));
     }
     // No collapse up to the cap: friction that does not dilate may still collapse it; the
     // iteration starts from the state at the cap (not for the check, which follows a sliding
@@ -229,94 +298,118 @@ pub fn iterate<E>(
         || !(associative.status == LimitStatus::Solved || open)
         || associative.resultants.is_empty()
     {
-        // Nothing slides, or no state to start from: the associative answer stands as it is.
-        // Where it is a collapse under less than the load (a dead load not carried), friction
-        // that does not dilate can only do worse: that answer is settled too.
         let settled = !problem.has_friction()
             || matches!(
                 associative.status,
                 LimitStatus::Solved | LimitStatus::DeadLoadNotCarried
             );
-        return Ok(NonAssociative {
-            solution: associative.clone(),
-            associative,
-            history,
-            settled,
-            corrected: None,
-            totals: single,
-            mixed_from: None,
-        });
+        return Some(answer(settled));
     }
-    // The programmes' own force scale W: the blocks' and the other dead loads' weight.
-    let weight = force_scale(
-        problem.assembly(),
-        problem.unit_weight(),
-        problem.dead_loads(),
-    );
-    let tolerance = SETTLED * weight;
-    let mut used = normal_forces(&associative);
-    let (mut next, mut mixed_from) = match settings.relaxation {
-        Relaxation::Paper => (
-            Next::Paper {
-                previous: used.clone(),
-            },
-            None,
-        ),
-        Relaxation::Anderson => (Next::Mixing(Mixing::default()), Some(0)),
-    };
-    // The last step that solved: the Ñ it was built from and its normal forces.
-    let mut good: Option<(Vec<f64>, Vec<f64>)> = None;
-    let mut first_mechanism = None;
-    let mut last = associative.clone();
-    let (mut iterations, mut programmes) = (last.iterations, last.programmes);
-    // The smallest inconsistency so far in this phase, the steps since it last halved, and
-    // the phase's steps.
-    let (mut best, mut stalled, mut steps) = (f64::INFINITY, 0, 0);
-    loop {
-        // The paper's relaxation has had its steps without settling: the mixing takes over
-        // from its last state that solved, once, with steps of its own.
-        let stopped = steps >= MAX_STEPS || stalled >= STALLED_STEPS;
-        if stopped {
-            let Next::Paper { .. } = next else { break };
-            let Some((x, n)) = good.take() else { break };
-            if never_left(&history) {
-                break;
-            }
-            let mut mixing = Mixing::default();
-            used = mixing.next(x, n, MEMORY, RELAXATION);
-            next = Next::Mixing(mixing);
-            mixed_from = Some(history.len() - 1);
-            (best, stalled, steps) = (f64::INFINITY, 0, 0);
+    None
+}
+
+/// What a recorded step leaves the iteration to do.
+enum After {
+    /// The step's state is consistent: it answers.
+    Settled,
+    /// Another step.
+    Continue,
+    /// No step can follow (a mixed step failed with no solved state to fall back on).
+    Stop,
+}
+
+/// The iteration's state between steps.
+struct Run {
+    /// The Ñ the next step is built from.
+    used: Vec<f64>,
+    /// How the Ñ after it is formed.
+    next: Next,
+    /// The step after which the mixing took over.
+    mixed_from: Option<usize>,
+    /// The last step that solved: the Ñ it was built from and its normal forces.
+    good: Option<(Vec<f64>, Vec<f64>)>,
+    /// The first step's mechanism (the corrected one).
+    first_mechanism: Option<Mechanism>,
+    /// The last step's solution.
+    last: LimitSolution,
+    /// Interior-point iterations and programmes so far.
+    iterations: u32,
+    programmes: usize,
+    /// The smallest inconsistency so far in this phase, the steps since it last halved, and
+    /// the phase's steps.
+    best: f64,
+    stalled: usize,
+    steps: usize,
+    /// λ at each step, the associative first.
+    history: Vec<Option<f64>>,
+}
+
+impl Run {
+    fn new(associative: &LimitSolution, relaxation: Relaxation) -> Self {
+        let used = normal_forces(associative);
+        let (next, mixed_from) = match relaxation {
+            Relaxation::Paper => (
+                Next::Paper {
+                    previous: used.clone(),
+                },
+                None,
+            ),
+            Relaxation::Anderson => (Next::Mixing(Mixing::default()), Some(0)),
+        };
+        Self {
+            used,
+            next,
+            mixed_from,
+            good: None,
+            first_mechanism: None,
+            last: associative.clone(),
+            iterations: associative.iterations,
+            programmes: associative.programmes,
+            best: f64::INFINITY,
+            stalled: 0,
+            steps: 0,
+            history: vec![associative.load_factor],
         }
-        steps += 1;
-        let step = step(
-            &problem.with_fixed_friction(&used, SLOPE),
-            settings,
-            &associative,
-        )?;
-        iterations += step.iterations;
-        programmes += step.programmes;
-        history.push(step.load_factor);
-        if history.len() == 2 {
-            first_mechanism.clone_from(&step.mechanism);
+    }
+
+    /// Whether this phase has had its steps, or stalled.
+    fn is_stopped(&self) -> bool {
+        self.steps >= MAX_STEPS || self.stalled >= STALLED_STEPS
+    }
+
+    /// The mixing takes over from the paper's relaxation, from its last state that solved;
+    /// false when it cannot (the mixing stopped already, nothing solved, or no step left the
+    /// associative λ).
+    fn take_over(&mut self) -> bool {
+        let Next::Paper { .. } = self.next else {
+            return false;
+        };
+        let Some((x, n)) = self.good.take() else {
+            return false;
+        };
+        if never_left(&self.history) {
+            return false;
+        }
+        let mut mixing = Mixing::default();
+        self.used = mixing.next(x, n, MEMORY, RELAXATION);
+        self.next = Next::Mixing(mixing);
+        self.mixed_from = Some(self.history.len() - 1);
+        (self.best, self.stalled, self.steps) = (f64::INFINITY, 0, 0);
+        true
+    }
+
+    /// Records a step's solution and forms the next Ñ.
+    fn record(&mut self, problem: &ArchProblem, step: LimitSolution, weight: f64) -> After {
+        self.iterations += step.iterations;
+        self.programmes += step.programmes;
+        self.history.push(step.load_factor);
+        if self.history.len() == 2 {
+            self.first_mechanism.clone_from(&step.mechanism);
         }
         let open = step.status == LimitStatus::Unbounded;
         if !(step.status == LimitStatus::Solved || open) || step.resultants.is_empty() {
-            last = step;
-            match &mut next {
-                // The paper's relaxation ends here: the mixing may take over.
-                Next::Paper { .. } => stalled = STALLED_STEPS,
-                // A mixed Ñ whose programme the solver cannot solve (reduced accuracy on a
-                // degenerate programme): once, forget the mixing and relax plainly from the
-                // last step that solved.
-                Next::Mixing(mixing) => {
-                    let Some((x, n)) = good.take() else { break };
-                    mixing.forget();
-                    used = relaxed(&x, &n, RELAXATION);
-                    stalled += 1;
-                }
-            }
-            continue;
+            self.last = step;
+            return self.failed_step();
         }
         let normal = normal_forces(&step);
         // A state at the cap carries forces far beyond the weight: its consistency is
@@ -324,29 +417,22 @@ pub fn iterate<E>(
         let tolerance = if open {
             SETTLED * normal.iter().copied().fold(weight, f64::max)
         } else {
-            tolerance
+            SETTLED * weight
         };
-        let (shear, moved) = inconsistency(problem, &step, &used, tolerance);
-        last = step;
+        let (shear, moved) = inconsistency(problem, &step, &self.used, tolerance);
+        self.last = step;
         let worst = shear.max(moved);
         if worst <= tolerance {
-            return Ok(NonAssociative {
-                solution: last,
-                associative,
-                history,
-                settled: true,
-                corrected: corrected(sliding, &first_mechanism),
-                totals: (iterations, programmes, start.elapsed().as_secs_f64()),
-                mixed_from,
-            });
+            return After::Settled;
         }
-        if worst <= 0.5 * best {
-            (best, stalled) = (worst, 0);
+        if worst <= 0.5 * self.best {
+            (self.best, self.stalled) = (worst, 0);
         } else {
-            stalled += 1;
+            self.stalled += 1;
         }
-        good = Some((used.clone(), normal.clone()));
-        used = match &mut next {
+        self.good = Some((self.used.clone(), normal.clone()));
+        let used = std::mem::take(&mut self.used);
+        self.used = match &mut self.next {
             // The paper's: between the last two steps' normal forces.
             Next::Paper { previous } => {
                 let relaxed = previous
@@ -358,38 +444,32 @@ pub fn iterate<E>(
                 relaxed
             }
             Next::Mixing(mixing) => {
-                if stalled > 0 && stalled % RESTART == 0 {
+                if self.stalled > 0 && self.stalled.is_multiple_of(RESTART) {
                     mixing.forget();
                 }
                 mixing.next(used, normal, MEMORY, RELAXATION)
             }
         };
+        After::Continue
     }
-    let totals = (iterations, programmes, start.elapsed().as_secs_f64());
-    let corrected = corrected(sliding, &first_mechanism);
-    if never_left(&history) {
-        // The associative state is a fixed point (module docs): it answers.
-        let mut solution = associative.clone();
-        solution.mechanism = first_mechanism;
-        return Ok(NonAssociative {
-            solution,
-            associative,
-            history,
-            settled: true,
-            corrected,
-            totals,
-            mixed_from,
-        });
+
+    /// A step that did not solve: the paper's relaxation ends here (the mixing may take over);
+    /// a mixed Ñ whose programme the solver cannot solve (reduced accuracy on a degenerate
+    /// programme) is, once, forgotten for a plain relaxation from the last step that solved.
+    fn failed_step(&mut self) -> After {
+        match &mut self.next {
+            Next::Paper { .. } => self.stalled = STALLED_STEPS,
+            Next::Mixing(mixing) => {
+                let Some((x, n)) = self.good.take() else {
+                    return After::Stop;
+                };
+                mixing.forget();
+                self.used = relaxed(&x, &n, RELAXATION);
+                self.stalled += 1;
+            }
+        }
+        After::Continue
     }
-    Ok(NonAssociative {
-        solution: last,
-        associative,
-        history,
-        settled: false,
-        corrected,
-        totals,
-        mixed_from,
-    })
 }
 
 /// The corrected mechanism: the first step's, when the associative mechanism slid.

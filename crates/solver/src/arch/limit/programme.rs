@@ -265,21 +265,7 @@ pub(super) fn solve_chain_programme(
 ) -> Programme {
     const MAX_ROUNDS: usize = 40;
     const MAX_ADDED_PER_ROUND: usize = 256;
-    let dense: Vec<([f64; 4], f64)> = rows
-        .iter()
-        .map(|row| {
-            let (k, a) = row.local();
-            let affine = chain.affine(k);
-            let (d, dead) = (affine.map, affine.dead);
-            let coefficients = [
-                a[0] * d[0][0] + a[1] * d[1][0] + a[2] * d[2][0],
-                a[0] * d[0][1] + a[1] * d[1][1] + a[2] * d[2][1],
-                a[0] * d[0][2] + a[1] * d[1][2] + a[2] * d[2][2],
-                extra_coefficient(&a, k),
-            ];
-            (coefficients, row.b - dead_factor * dot(&a, &dead))
-        })
-        .collect();
+    let dense = on_redundants(chain, rows, dead_factor, extra_coefficient);
     let interfaces = chain.interfaces();
     let per_interface = rows.len() / interfaces.max(1);
     let stride = (interfaces / 32).max(1);
@@ -358,6 +344,30 @@ pub(super) fn solve_chain_programme(
         z: Vec::new(),
         iterations,
     }
+}
+
+/// Each row written on the chain's three redundants and the extra variable: its coefficients
+/// and its right-hand side less the dead load's part.
+fn on_redundants(
+    chain: &ChainStatics,
+    rows: &[Row],
+    dead_factor: f64,
+    extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
+) -> Vec<([f64; 4], f64)> {
+    rows.iter()
+        .map(|row| {
+            let (k, a) = row.local();
+            let affine = chain.affine(k);
+            let (d, dead) = (affine.map, affine.dead);
+            let coefficients = [
+                a[0] * d[0][0] + a[1] * d[1][0] + a[2] * d[2][0],
+                a[0] * d[0][1] + a[1] * d[1][1] + a[2] * d[2][1],
+                a[0] * d[0][2] + a[1] * d[1][2] + a[2] * d[2][2],
+                extra_coefficient(&a, k),
+            ];
+            (coefficients, row.b - dead_factor * dot(&a, &dead))
+        })
+        .collect()
 }
 
 pub(super) fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {

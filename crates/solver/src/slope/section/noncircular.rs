@@ -233,14 +233,14 @@ fn confirmed_factor(
     }
 }
 
+/// A polyline's parameters: the interior vertices' fractions along x, and the ends' x with
+/// each vertex's depth below the ground.
+type Parameters = (Vec<(f64, f64)>, Vec<f64>);
+
 /// The surface `start` (left to right) as the search's parameters with `n` vertices: the
 /// interior vertices' fractions along x, and the ends' x with each vertex's depth below the
 /// ground.
-fn resampled(
-    section: &Section,
-    start: &[(f64, f64)],
-    n: usize,
-) -> Option<(Vec<(f64, f64)>, Vec<f64>)> {
+fn resampled(section: &Section, start: &[(f64, f64)], n: usize) -> Option<Parameters> {
     let (a, b) = (start.first()?.0, start.last()?.0);
     let start_line = Polyline::new(start.to_vec()).ok()?;
     let fractions: Vec<(f64, f64)> = (1..n - 1).map(|i| (i as f64, (n - 1) as f64)).collect();

@@ -312,18 +312,21 @@ impl Evaluator<'_> {
     }
 }
 
+/// A grid's results summed up.
+struct GridSummary {
+    /// F over the centres.
+    grid: FactorGrid,
+    /// Circles that cut a mass without a solution.
+    unsolved: usize,
+    /// The least Bishop F among them.
+    unsolved_bishop_minimum: Option<f64>,
+    /// The centres that have an F, least first: (F, R, i, j).
+    points: Vec<(f64, f64, usize, usize)>,
+}
+
 /// A grid's results summed up: F over the centres, the unsolved circles, the least Bishop F
 /// among them, and the centres that have an F, least first: (F, R, i, j).
-fn summarise(
-    results: &[Vec<CentreResult>],
-    xs: &[f64],
-    ys: &[f64],
-) -> (
-    FactorGrid,
-    usize,
-    Option<f64>,
-    Vec<(f64, f64, usize, usize)>,
-) {
+fn summarise(results: &[Vec<CentreResult>], xs: &[f64], ys: &[f64]) -> GridSummary {
     let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
     let unsolved_bishop_minimum = results
         .iter()
@@ -348,7 +351,12 @@ fn summarise(
         })
         .collect();
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    (grid, unsolved, unsolved_bishop_minimum, points)
+    GridSummary {
+        grid,
+        unsolved,
+        unsolved_bishop_minimum,
+        points,
+    }
 }
 
 impl<'a> Evaluator<'a> {
@@ -448,7 +456,12 @@ pub fn search_circles(
             .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
             .map(|c| evaluator.radii(&region.radii, c).len())
             .sum::<usize>();
-        let (grid, unsolved, unsolved_bishop_minimum, points) = summarise(&results, &xs, &ys);
+        let GridSummary {
+            grid,
+            unsolved,
+            unsolved_bishop_minimum,
+            points,
+        } = summarise(&results, &xs, &ys);
         let late = evaluator.is_late();
         let status_of = |found: SearchStatus| {
             if late || evaluator.is_late() {
