@@ -4,6 +4,8 @@
 
 use utoipa::OpenApi;
 
+use crate::limits::Limit;
+
 /// The service's OpenAPI document.
 #[derive(OpenApi)]
 #[openapi(
@@ -18,6 +20,7 @@ use utoipa::OpenApi;
     ),
     servers((url = "/", description = "The service that serves this document")),
     modifiers(
+        &SchemaLimits,
         &BearerToken,
         &DescriptionsOnProperties,
         &RequestIdHeader,
@@ -48,6 +51,95 @@ use utoipa::OpenApi;
     )
 )]
 pub struct ApiDoc;
+
+/// The limits of [`crate::limits::schema::SCHEMA_LIMITS`] written on their properties: the one
+/// table the checks read too. A table entry that names no property of the document is a fault
+/// of the table ([`limit_targets_missing`] finds them; a test asserts there are none).
+struct SchemaLimits;
+
+impl utoipa::Modify for SchemaLimits {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        let Some(components) = openapi.components.as_mut() else {
+            return;
+        };
+        for (schema, property, limit) in crate::limits::schema::SCHEMA_LIMITS {
+            if let Some(target) = property_mut(&mut components.schemas, schema, property) {
+                apply_limit(target, *limit);
+            }
+        }
+    }
+}
+
+/// The property `property` of component `schema`, if the document has it.
+fn property_mut<'a>(
+    schemas: &'a mut std::collections::BTreeMap<
+        String,
+        utoipa::openapi::RefOr<utoipa::openapi::schema::Schema>,
+    >,
+    schema: &str,
+    property: &str,
+) -> Option<&'a mut utoipa::openapi::RefOr<utoipa::openapi::schema::Schema>> {
+    use utoipa::openapi::schema::Schema;
+    use utoipa::openapi::RefOr;
+    match schemas.get_mut(schema)? {
+        RefOr::T(Schema::Object(object)) => object.properties.get_mut(property),
+        _ => None,
+    }
+}
+
+/// Writes `limit` on a property: a number's or an integer's bounds, a list's item counts;
+/// through a nullable wrapper (`oneOf` with `null`) to the schema inside.
+fn apply_limit(target: &mut utoipa::openapi::RefOr<utoipa::openapi::schema::Schema>, limit: Limit) {
+    use utoipa::openapi::schema::Schema;
+    use utoipa::openapi::RefOr;
+    use utoipa::Number;
+    let number = |v: f64| {
+        if v.fract() == 0.0 && v.abs() < 1e15 {
+            // An integral bound is written as an integer, as JSON Schema readers expect.
+            Number::Int(v as isize)
+        } else {
+            Number::Float(v)
+        }
+    };
+    let RefOr::T(schema) = target else { return };
+    match (schema, limit) {
+        (Schema::Object(object), Limit::Number(range)) => {
+            let min = range.min.map(number);
+            (object.minimum, object.exclusive_minimum) = if range.min_open {
+                (None, min)
+            } else {
+                (min, None)
+            };
+            object.maximum = range.max.map(number);
+        }
+        (Schema::Object(object), Limit::Integer(count)) => {
+            object.minimum = Some(Number::UInt(count.min));
+            object.maximum = Some(Number::UInt(count.max));
+        }
+        (Schema::Array(array), Limit::Items(count)) => {
+            array.min_items = (count.min > 0).then_some(count.min);
+            array.max_items = Some(count.max);
+        }
+        (Schema::OneOf(one), limit) => one.items.iter_mut().for_each(|i| apply_limit(i, limit)),
+        (Schema::AllOf(all), limit) => all.items.iter_mut().for_each(|i| apply_limit(i, limit)),
+        _ => {}
+    }
+}
+
+/// The table's entries that name no property of the generated document.
+pub fn limit_targets_missing() -> Vec<String> {
+    let mut openapi = ApiDoc::openapi();
+    let Some(components) = openapi.components.as_mut() else {
+        return vec!["no components".to_owned()];
+    };
+    crate::limits::schema::SCHEMA_LIMITS
+        .iter()
+        .filter(|(schema, property, _)| {
+            property_mut(&mut components.schemas, schema, property).is_none()
+        })
+        .map(|(schema, property, _)| format!("{schema}.{property}"))
+        .collect()
+}
 
 /// The optional bearer token (`THRUSTLINE_TOKEN`): when the service is started with one, every
 /// route but `/healthz` needs `Authorization: Bearer <token>`; without one, none does.

@@ -2,6 +2,7 @@
 //! Each failure names the field by its dotted path in the body and states the allowed range.
 
 use crate::error::ApiError;
+use crate::limits::{Count, Range};
 
 /// A finite number in `[min, max]`; `min_open` excludes `min` itself.
 pub fn number(
@@ -42,6 +43,22 @@ pub fn readable(value: f64) -> String {
     } else {
         format!("{value}")
     }
+}
+
+/// A finite number in `range` (a range of [`crate::limits`], as the schema states it).
+pub fn within(field: &str, value: f64, range: Range) -> Result<f64, ApiError> {
+    number(
+        field,
+        value,
+        range.min.unwrap_or(f64::MIN),
+        range.min_open,
+        range.max.unwrap_or(f64::MAX),
+    )
+}
+
+/// An integer, or a list's length, in `range`.
+pub fn count_within(field: &str, value: usize, range: Count) -> Result<usize, ApiError> {
+    count(field, value, range.min, range.max)
 }
 
 /// Any finite number.

@@ -7,13 +7,9 @@ use thrustline_solver::arch::{Assembly, CircularArch};
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
-use crate::limits::{MAX_LENGTH, MAX_VOUSSOIRS};
-use crate::validation::{count, number};
+use crate::limits::{BLOCKS, COORDINATE, POLYGON_CORNERS, RINGS, SPANS, SUPPORTS};
+use crate::validation::{count_within, within};
 
-/// Corners a polygon may have.
-const MAX_CORNERS: usize = 256;
-/// Supports an assembly may have.
-const MAX_SUPPORTS: usize = 1000;
 /// Blocks a generated assembly may have (rings × spans × voussoirs, and piers).
 const MAX_GENERATED_BLOCKS: usize = 20_000;
 
@@ -36,7 +32,6 @@ pub enum RingJointsDto {
 pub struct PolygonDto {
     /// Corners [x, y], 3 to 256, in either direction (clockwise ones are turned round);
     /// convex or not, not self-intersecting.
-    #[schema(min_items = 3, max_items = 256)]
     pub polygon: Vec<[f64; 2]>,
 }
 
@@ -46,13 +41,13 @@ fn polygons(field: &str, given: &[PolygonDto]) -> Result<Vec<Vec<(f64, f64)>>, A
         .enumerate()
         .map(|(i, p)| {
             let field = format!("{field}[{i}].polygon");
-            count(&field, p.polygon.len(), 3, MAX_CORNERS)?;
+            count_within(&field, p.polygon.len(), POLYGON_CORNERS)?;
             p.polygon
                 .iter()
                 .map(|&[x, y]| {
                     Ok((
-                        number(&field, x, -MAX_LENGTH, false, MAX_LENGTH)?,
-                        number(&field, y, -MAX_LENGTH, false, MAX_LENGTH)?,
+                        within(&field, x, COORDINATE)?,
+                        within(&field, y, COORDINATE)?,
                     ))
                 })
                 .collect()
@@ -62,8 +57,8 @@ fn polygons(field: &str, given: &[PolygonDto]) -> Result<Vec<Vec<(f64, f64)>>, A
 
 /// `geometry.kind = assembly`: the polygons checked, contacts found by the solver.
 pub fn assembly(blocks: &[PolygonDto], supports: &[PolygonDto]) -> Result<Assembly, ApiError> {
-    count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
-    count("geometry.supports", supports.len(), 1, MAX_SUPPORTS)?;
+    count_within("geometry.blocks", blocks.len(), BLOCKS)?;
+    count_within("geometry.supports", supports.len(), SUPPORTS)?;
     let blocks = polygons("geometry.blocks", blocks)?;
     let supports = polygons("geometry.supports", supports)?;
     Ok(Assembly::from_polygons(&blocks, &supports)?)
@@ -93,8 +88,8 @@ impl Generated {
 
 /// A circular arch with rings or spans: the generated assembly.
 pub fn generated(arch: &CircularArch, g: Generated) -> Result<Bridge, ApiError> {
-    count("geometry.rings", g.rings, 1, 16)?;
-    count("geometry.spans", g.spans, 1, 20)?;
+    count_within("geometry.rings", g.rings, RINGS)?;
+    count_within("geometry.spans", g.spans, SPANS)?;
     let per_span = arch.voussoirs() * g.rings + g.rings / 2;
     if per_span * g.spans > MAX_GENERATED_BLOCKS {
         return Err(ApiError::invalid(

@@ -11,8 +11,11 @@ use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
-use crate::limits::{MAX_FORCE, MAX_LENGTH, MAX_LOADS, MAX_MAGNITUDE};
-use crate::validation::{count, number};
+use crate::limits::{
+    AXLES, COORDINATE, FILL_ANGLE_DEG, FORCE, LOADS, MAX_LENGTH, MOBILISATION, PATCH_LENGTH,
+    ROLLING_POSITIONS, UNIT_WEIGHT_OR_ZERO,
+};
+use crate::validation::{count_within, number, within};
 
 /// Fill over the arch up to a road.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
@@ -20,7 +23,7 @@ use crate::validation::{count, number};
 pub struct FillDto {
     /// Unit weight of the fill, 0 ≤ γ_f ≤ 1e12 (0: a weightless fill that only spreads road
     /// loads).
-    #[schema(minimum = 0.0, maximum = 1e12, examples(18.0))]
+    #[schema(examples(18.0))]
     pub unit_weight: f64,
     /// The road level (absolute y), above the crown's extrados. The fill's weight on each
     /// voussoir is the column between its extrados and the road.
@@ -28,7 +31,7 @@ pub struct FillDto {
     pub surface: f64,
     /// Dispersal angle of road loads from the vertical, 0 ≤ δ ≤ 60 degrees. Defaults to 30.
     #[serde(default)]
-    #[schema(minimum = 0.0, maximum = 60.0, default = 30.0, examples(30.0))]
+    #[schema(default = 30.0, examples(30.0))]
     pub dispersal_angle_deg: Option<f64>,
     /// Passive restraint: where the arch sways into the fill, horizontal pressure on the
     /// extrados of up to `mobilisation`·K_p·σ_v. Without it the fill gives no horizontal
@@ -43,10 +46,10 @@ pub struct FillDto {
 #[serde(deny_unknown_fields)]
 pub struct PassiveDto {
     /// Friction angle φ of the fill, 0 ≤ φ ≤ 60 degrees: K_p = (1 + sin φ)/(1 − sin φ).
-    #[schema(minimum = 0.0, maximum = 60.0, examples(30.0))]
+    #[schema(examples(30.0))]
     pub friction_angle_deg: f64,
     /// Fraction of the full passive pressure that may be mobilised, 0 ≤ m ≤ 1.
-    #[schema(minimum = 0.0, maximum = 1.0, examples(0.5))]
+    #[schema(examples(0.5))]
     pub mobilisation: f64,
 }
 
@@ -99,7 +102,7 @@ pub struct RoadLoadDto {
     /// Width of the patch, ≥ 0. Defaults to 0 (a line load on the road).
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0, examples(0.3))]
+    #[schema(examples(0.3))]
     pub length: f64,
 }
 
@@ -117,7 +120,6 @@ pub struct AxleDto {
     /// Width of the wheel's patch on the road, ≥ 0. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0)]
     pub length: f64,
 }
 
@@ -126,7 +128,6 @@ pub struct AxleDto {
 #[serde(deny_unknown_fields)]
 pub struct RollingDto {
     /// The axles (1 to 20).
-    #[schema(min_items = 1, max_items = 20)]
     pub axles: Vec<AxleDto>,
     /// First position of the reference point.
     pub x_start: f64,
@@ -134,7 +135,7 @@ pub struct RollingDto {
     pub x_end: f64,
     /// Stops, evenly from x_start to x_end, 1 ≤ positions ≤ 1001. Defaults to 101.
     #[serde(default)]
-    #[schema(minimum = 1, maximum = 1001, default = 101)]
+    #[schema(default = 101)]
     pub positions: Option<usize>,
 }
 
@@ -215,7 +216,7 @@ pub fn fill_loads(
             "need a fill to stand on (give fill, or put the loads on blocks with loads)",
         ));
     }
-    count("road_loads", road_loads.len(), 0, MAX_LOADS)?;
+    count_within("road_loads", road_loads.len(), LOADS)?;
     // Without fill, axles stand on the extrados: a weightless "fill" at the crown with no
     // dispersal puts each on the voussoir under it.
     let carrier = fill.unwrap_or(Fill {
@@ -231,9 +232,9 @@ pub fn fill_loads(
     for (i, load) in road_loads.iter().enumerate() {
         let field = |name: &str| format!("road_loads[{i}].{name}");
         let load = RoadLoad {
-            x: number(&field("x"), load.x, -MAX_LENGTH, false, MAX_LENGTH)?,
-            fy: number(&field("fy"), load.fy, -MAX_FORCE, false, MAX_FORCE)?,
-            length: number(&field("length"), load.length, 0.0, false, MAX_LENGTH)?,
+            x: within(&field("x"), load.x, COORDINATE)?,
+            fy: within(&field("fy"), load.fy, FORCE)?,
+            length: within(&field("length"), load.length, PATCH_LENGTH)?,
         };
         // Road loads made the profile.
         let Some(profile) = &profile else { break };
@@ -260,14 +261,12 @@ pub fn fill_loads(
     let passive = match (fill, dto_passive) {
         (Some(fill), Some(p)) => {
             let passive = Passive {
-                friction_angle_deg: number(
+                friction_angle_deg: within(
                     "fill.passive.friction_angle_deg",
                     p.friction_angle_deg,
-                    0.0,
-                    false,
-                    60.0,
+                    FILL_ANGLE_DEG,
                 )?,
-                mobilisation: number("fill.passive.mobilisation", p.mobilisation, 0.0, false, 1.0)?,
+                mobilisation: within("fill.passive.mobilisation", p.mobilisation, MOBILISATION)?,
             };
             Some(passive_forces(assembly, faces, &fill, &passive))
         }
@@ -286,14 +285,8 @@ pub fn fill_loads(
 
 /// The fill of a request, its road above the crown's extrados at `top`.
 fn fill_from(dto: &FillDto, top: f64) -> Result<Fill, ApiError> {
-    let unit_weight = number(
-        "fill.unit_weight",
-        dto.unit_weight,
-        0.0,
-        false,
-        MAX_MAGNITUDE,
-    )?;
-    let surface = number("fill.surface", dto.surface, -MAX_LENGTH, false, MAX_LENGTH)?;
+    let unit_weight = within("fill.unit_weight", dto.unit_weight, UNIT_WEIGHT_OR_ZERO)?;
+    let surface = within("fill.surface", dto.surface, COORDINATE)?;
     if surface <= top {
         return Err(ApiError::invalid(
             "fill.surface",
@@ -307,7 +300,7 @@ fn fill_from(dto: &FillDto, top: f64) -> Result<Fill, ApiError> {
     Ok(Fill {
         unit_weight,
         road: surface,
-        dispersal_angle_deg: number("fill.dispersal_angle_deg", angle, 0.0, false, 60.0)?,
+        dispersal_angle_deg: within("fill.dispersal_angle_deg", angle, FILL_ANGLE_DEG)?,
     })
 }
 
@@ -316,16 +309,14 @@ fn rolling_loads(
     carrier: &Fill,
     dto: &RollingDto,
 ) -> Result<Rolling, ApiError> {
-    count("rolling.axles", dto.axles.len(), 1, 20)?;
-    let x_start = number(
-        "rolling.x_start",
-        dto.x_start,
-        -MAX_LENGTH,
-        false,
-        MAX_LENGTH,
-    )?;
+    count_within("rolling.axles", dto.axles.len(), AXLES)?;
+    let x_start = within("rolling.x_start", dto.x_start, COORDINATE)?;
     let x_end = number("rolling.x_end", dto.x_end, x_start, false, MAX_LENGTH)?;
-    let n = count("rolling.positions", dto.positions.unwrap_or(101), 1, 1001)?;
+    let n = count_within(
+        "rolling.positions",
+        dto.positions.unwrap_or(101),
+        ROLLING_POSITIONS,
+    )?;
     let axles = dto
         .axles
         .iter()
@@ -333,9 +324,9 @@ fn rolling_loads(
         .map(|(i, a)| {
             let field = |name: &str| format!("rolling.axles[{i}].{name}");
             Ok((
-                number(&field("offset"), a.offset, -MAX_LENGTH, false, MAX_LENGTH)?,
-                number(&field("fy"), a.fy, -MAX_FORCE, false, MAX_FORCE)?,
-                number(&field("length"), a.length, 0.0, false, MAX_LENGTH)?,
+                within(&field("offset"), a.offset, COORDINATE)?,
+                within(&field("fy"), a.fy, FORCE)?,
+                within(&field("length"), a.length, PATCH_LENGTH)?,
             ))
         })
         .collect::<Result<Vec<_>, ApiError>>()?;

@@ -55,28 +55,28 @@ pub struct CircularGeometryDto {
     /// Always `circular`.
     pub kind: CircularKind,
     /// Middle radius R, 1e-9 ≤ R ≤ 1e9.
-    #[schema(minimum = 1e-9, maximum = 1e9, examples(10.0))]
+    #[schema(examples(10.0))]
     pub radius: f64,
     /// Voussoir thickness D, 0 < D < 2R. Required by the dead- and live-load routes. On the
     /// minimum-thickness route optional: given, the answer adds the geometric factor of safety
     /// D / D_min.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 2e9, examples(1.0748))]
+    #[schema(examples(1.0748))]
     pub thickness: Option<f64>,
     /// Number of voussoirs N, 1 ≤ N ≤ 10000.
-    #[schema(minimum = 1, maximum = 10000, examples(1800))]
+    #[schema(examples(1800))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub voussoirs: usize,
     /// Left base angle B in degrees, −90 < B < 90 (0: semicircle; > 0 segmental; < 0
     /// horseshoe). Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
+    #[schema(examples(0.0))]
     pub left_base_angle_deg: f64,
     /// Right base angle C in degrees, −90 < C < 90. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(exclusive_minimum = -90.0, maximum = 89.999999, examples(0.0))]
+    #[schema(examples(0.0))]
     pub right_base_angle_deg: f64,
     /// Voussoir shape. Defaults to `curved`.
     #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
@@ -88,7 +88,7 @@ pub struct CircularGeometryDto {
     /// Defaults to 1.
     #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
     #[schema(nullable)]
-    #[schema(minimum = 1, maximum = 16, default = 1)]
+    #[schema(default = 1)]
     pub rings: usize,
     /// How the joints of neighbouring rings lie. Defaults to `staggered`.
     #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
@@ -98,16 +98,14 @@ pub struct CircularGeometryDto {
     /// on the minimum-thickness route. Defaults to 1.
     #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
     #[schema(nullable)]
-    #[schema(minimum = 1, maximum = 20, default = 1)]
+    #[schema(default = 1)]
     pub spans: usize,
     /// With `spans` > 1: each pier's width between the intrados springings of its two spans
     /// (more than D·(cos B + cos C), so the springings do not overlap).
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
     pub pier_width: Option<f64>,
     /// With `spans` > 1: each pier's height below its lower springing, > 0.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
     pub pier_height: Option<f64>,
 }
 
@@ -168,7 +166,6 @@ pub struct BlocksGeometryDto {
     /// Always `blocks`.
     pub kind: BlocksKind,
     /// The blocks, 1 to 10000 of them, in order.
-    #[schema(min_items = 1, max_items = 10000)]
     pub blocks: Vec<BlockCornersDto>,
 }
 
@@ -180,10 +177,8 @@ pub struct AssemblyGeometryDto {
     /// Always `assembly`.
     pub kind: AssemblyKind,
     /// The blocks, 1 to 10000 of them.
-    #[schema(min_items = 1, max_items = 10000)]
     pub blocks: Vec<PolygonDto>,
     /// The fixed supports, 1 to 1000 of them.
-    #[schema(min_items = 1, max_items = 1000)]
     pub supports: Vec<PolygonDto>,
 }
 

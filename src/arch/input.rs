@@ -22,10 +22,10 @@ use super::request::{
 };
 use crate::error::ApiError;
 use crate::limits::{
-    MAX_BASE_ANGLE_DEG, MAX_FORCE, MAX_FRICTION_COEFFICIENT, MAX_LENGTH, MAX_LOADS, MAX_MAGNITUDE,
-    MAX_VOUSSOIRS, MIN_LENGTH, SOLVER_TOLERANCE,
+    BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, FRICTION, LENGTH, LOADS,
+    LOWER_LIMIT, POSITIVE_STRESS, SOLVER_TOLERANCE_RANGE, UNIT_WEIGHT, UPPER_LIMIT,
 };
-use crate::validation::{count, finite, number};
+use crate::validation::{count, count_within, finite, within};
 
 /// A validated dead- or live-load request, ready for the solver.
 #[derive(Debug, Clone)]
@@ -97,7 +97,7 @@ impl DeadLoadRequest {
 impl LiveLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
-        count("loads", self.loads.len(), 0, MAX_LOADS)?;
+        count_within("loads", self.loads.len(), LOADS)?;
         if self.loads.is_empty() && self.road_loads.is_empty() && self.rolling.is_none() {
             return Err(ApiError::invalid(
                 "loads",
@@ -184,7 +184,6 @@ fn input(
         ));
     }
     let problem = with_rings_and_crushing(problem, &fields)?;
-    let (min, max) = SOLVER_TOLERANCE;
     // Passive forces are variables of their own: the general assembly carries them.
     // So do assemblies that are not chains: the answer names what was used.
     let formulation = if filled.passive.is_some() || !problem.assembly().is_chain() {
@@ -195,7 +194,11 @@ fn input(
     let settings = LimitSettings {
         time_limit_secs,
         formulation,
-        tolerance: number("solver_tolerance", fields.solver_tolerance, min, false, max)?,
+        tolerance: within(
+            "solver_tolerance",
+            fields.solver_tolerance,
+            SOLVER_TOLERANCE_RANGE,
+        )?,
         relaxation: fields.friction_relaxation.solver(),
         ..LimitSettings::default()
     };
@@ -246,12 +249,11 @@ fn with_rings_and_crushing(
         }
         None => problem,
         Some(strength) => problem.with_crushing(Crushing {
-            strength: number("compressive_strength", strength, 0.0, true, MAX_MAGNITUDE)?,
-            planes: count(
+            strength: within("compressive_strength", strength, POSITIVE_STRESS)?,
+            planes: count_within(
                 "crushing_planes",
                 fields.crushing_planes.unwrap_or(4),
-                2,
-                256,
+                CRUSHING_PLANES,
             )?,
             cuts: Vec::new(),
         })?,
@@ -269,7 +271,7 @@ fn include(given: Option<&[ArchDetailDto]>) -> Vec<ArchDetailDto> {
 /// Validates the unit weight, `interface_limits` (missing fields take Heyman's values, `null`
 /// is unbounded) and `friction_coefficient` (null: no sliding).
 pub fn material(fields: MaterialFields) -> Result<Material, ApiError> {
-    let unit_weight = number("unit_weight", fields.unit_weight, 0.0, true, MAX_MAGNITUDE)?;
+    let unit_weight = within("unit_weight", fields.unit_weight, UNIT_WEIGHT)?;
     Ok(Material {
         unit_weight,
         limits: limits("interface_limits", fields.interface_limits)?,
@@ -295,8 +297,8 @@ fn limits(name: &str, given: &InterfaceLimitsDto) -> Result<InterfaceLimits, Api
         let field = format!("{name}.{field}");
         match given.unwrap_or(default) {
             None => Ok(None),
-            Some(v) if lower => number(&field, v, -MAX_FORCE, false, 0.0).map(Some),
-            Some(v) => number(&field, v, 0.0, false, MAX_FORCE).map(Some),
+            Some(v) if lower => within(&field, v, LOWER_LIMIT).map(Some),
+            Some(v) => within(&field, v, UPPER_LIMIT).map(Some),
         }
     };
     Ok(InterfaceLimits {
@@ -311,8 +313,7 @@ fn limits(name: &str, given: &InterfaceLimitsDto) -> Result<InterfaceLimits, Api
 
 /// A friction coefficient: null is no sliding.
 fn friction(field: &str, mu: Option<f64>) -> Result<Option<f64>, ApiError> {
-    mu.map(|mu| number(field, mu, 0.0, false, MAX_FRICTION_COEFFICIENT))
-        .transpose()
+    mu.map(|mu| within(field, mu, FRICTION)).transpose()
 }
 
 /// Validates a circular arch of the given thickness (against the radius it is
@@ -321,15 +322,9 @@ pub fn circular_arch(
     fields: &CircularGeometryDto,
     thickness: f64,
 ) -> Result<CircularArch, ApiError> {
-    let radius = number(
-        "geometry.radius",
-        fields.radius,
-        MIN_LENGTH,
-        false,
-        MAX_LENGTH,
-    )?;
-    let n = count("geometry.voussoirs", fields.voussoirs, 1, MAX_VOUSSOIRS)?;
-    let angle = |field: &str, value: f64| number(field, value, -90.0, true, MAX_BASE_ANGLE_DEG);
+    let radius = within("geometry.radius", fields.radius, LENGTH)?;
+    let n = count_within("geometry.voussoirs", fields.voussoirs, BLOCKS)?;
+    let angle = |field: &str, value: f64| within(field, value, BASE_ANGLE_DEG);
     let left = angle("geometry.left_base_angle_deg", fields.left_base_angle_deg)?;
     let right = angle("geometry.right_base_angle_deg", fields.right_base_angle_deg)?;
     let shape = match fields.voussoir {
@@ -370,12 +365,12 @@ fn assembly(geometry: &GeometryDto) -> Result<(Assembly, Option<Faces>), ApiErro
             }
         }
         GeometryDto::Blocks(BlocksGeometryDto { blocks, .. }) => {
-            count("geometry.blocks", blocks.len(), 1, MAX_VOUSSOIRS)?;
+            count_within("geometry.blocks", blocks.len(), BLOCKS)?;
             for (b, block) in blocks.iter().enumerate() {
                 for (c, [x, y]) in block.corners.iter().enumerate() {
                     let field = format!("geometry.blocks[{b}].corners[{c}]");
-                    number(&field, *x, -MAX_LENGTH, false, MAX_LENGTH)?;
-                    number(&field, *y, -MAX_LENGTH, false, MAX_LENGTH)?;
+                    within(&field, *x, COORDINATE)?;
+                    within(&field, *y, COORDINATE)?;
                 }
             }
             let corners: Vec<[(f64, f64); 4]> = blocks
@@ -403,8 +398,7 @@ fn live_loads(assembly: &Assembly, loads: &[LoadDto]) -> Result<Vec<LiveLoad>, A
             let coordinate = |name: &str, value: Option<f64>, default: f64| {
                 value.map_or(Ok(default), |v| finite(&field(name), v))
             };
-            let force =
-                |name: &str, value: f64| number(&field(name), value, -MAX_FORCE, false, MAX_FORCE);
+            let force = |name: &str, value: f64| within(&field(name), value, FORCE);
             Ok(LiveLoad {
                 block,
                 point: (

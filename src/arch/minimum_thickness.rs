@@ -17,9 +17,9 @@ use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
-use crate::limits::{MAX_LENGTH, MIN_LENGTH, THICKNESS_TOLERANCE};
+use crate::limits::{LENGTH, THICKNESS_TOLERANCE_RANGE};
 use crate::table::{csv, Answer, CsvTable};
-use crate::validation::number;
+use crate::validation::within;
 use crate::AppState;
 
 arch_request! {
@@ -39,7 +39,7 @@ arch_request! {
         /// to 1e-6.
         #[serde(default = "default_tolerance", deserialize_with = "crate::nullable::thickness_tolerance")]
         #[schema(nullable)]
-        #[schema(minimum = 1e-9, maximum = 0.01, default = 1e-6)]
+        #[schema(default = 1e-6)]
         pub tolerance: f64,
     }
 }
@@ -134,7 +134,7 @@ pub async fn minimum_thickness(
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
 ) -> Result<Answer<MinimumThicknessResponse>, ApiError> {
     let g = &request.geometry;
-    let radius = number("geometry.radius", g.radius, MIN_LENGTH, false, MAX_LENGTH)?;
+    let radius = within("geometry.radius", g.radius, LENGTH)?;
     for (field, many) in [
         ("geometry.rings", g.rings != 1),
         ("geometry.spans", g.spans != 1),
@@ -166,9 +166,8 @@ pub async fn minimum_thickness(
              take: leave it out",
         ));
     }
-    let (min, max) = THICKNESS_TOLERANCE;
     let settings = MinimumThicknessSettings {
-        tolerance: number("tolerance", request.tolerance, min, false, max)?,
+        tolerance: within("tolerance", request.tolerance, THICKNESS_TOLERANCE_RANGE)?,
         limit: LimitSettings {
             time_limit_secs: state.solve_time_limit_secs(),
             ..LimitSettings::default()

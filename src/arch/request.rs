@@ -102,27 +102,27 @@ impl ArchDetailDto {
 pub struct InterfaceLimitsDto {
     /// Lower limit of q, the normal force at the extrados end (≤ 0; 0 = no tension).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, maximum = 0.0, examples(0.0))]
+    #[schema(value_type = Option<f64>, examples(0.0))]
     pub q_min: Option<Option<f64>>,
     /// Upper limit of q (≥ 0; crushing).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    #[schema(value_type = Option<f64>)]
     pub q_max: Option<Option<f64>>,
     /// Lower limit of s, the normal force at the intrados end (≤ 0; 0 = no tension).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, maximum = 0.0, examples(0.0))]
+    #[schema(value_type = Option<f64>, examples(0.0))]
     pub s_min: Option<Option<f64>>,
     /// Upper limit of s (≥ 0; crushing).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    #[schema(value_type = Option<f64>)]
     pub s_max: Option<Option<f64>>,
     /// Lower limit of the shear t (≤ 0).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, maximum = 0.0)]
+    #[schema(value_type = Option<f64>)]
     pub t_min: Option<Option<f64>>,
     /// Upper limit of the shear t (≥ 0).
     #[serde(default, deserialize_with = "present")]
-    #[schema(value_type = Option<f64>, minimum = 0.0)]
+    #[schema(value_type = Option<f64>)]
     pub t_max: Option<Option<f64>>,
 }
 
@@ -136,7 +136,7 @@ fn present<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Option<Option<f
 #[serde(deny_unknown_fields)]
 pub struct LoadDto {
     /// Block number (1-based).
-    #[schema(minimum = 1, maximum = 10000, examples(5))]
+    #[schema(examples(5))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub block: usize,
     /// x of the point of application. Defaults to the block centroid.
@@ -208,7 +208,7 @@ macro_rules! arch_request {
             /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
             #[serde(default = "unit", deserialize_with = "crate::nullable::unit_weight")]
             #[schema(nullable)]
-            #[schema(exclusive_minimum = 0.0, maximum = 1e12, default = 1.0, examples(1.0))]
+            #[schema(default = 1.0, examples(1.0))]
             pub unit_weight: f64,
             /// Limits on the interface resultants. Defaults to Heyman's (no tension, no
             /// crushing).
@@ -218,12 +218,10 @@ macro_rules! arch_request {
             /// Coulomb friction coefficient μ ≥ 0 at every interface; null = no sliding.
             /// Defaults to null.
             #[serde(default)]
-            #[schema(minimum = 0.0, maximum = 1000000.0)]
             pub friction_coefficient: Option<f64>,
             /// Multi-ring arches: friction coefficient μ ≥ 0 between the rings; null = no
             /// sliding between them. Defaults to null.
             #[serde(default)]
-            #[schema(minimum = 0.0, maximum = 1000000.0)]
             pub ring_friction_coefficient: Option<f64>,
             /// Multi-ring arches: limits on the resultants between the rings (as
             /// `interface_limits`; `{"q_min": null, "s_min": null}` bonds the rings). Defaults
@@ -270,20 +268,19 @@ macro_rules! limit_request {
                 /// still right to 1e-7 (see the README's accuracy tables).
                 #[serde(default = "default_solver_tolerance", deserialize_with = "crate::nullable::solver_tolerance")]
                 #[schema(nullable)]
-                #[schema(minimum = 1e-12, maximum = 1e-4, default = 1e-10)]
+                #[schema(default = 1e-10)]
                 pub solver_tolerance: f64,
                 /// Compressive strength σ_c of the masonry (force per unit area, per unit
                 /// depth), 0 < σ_c ≤ 1e12: a joint of thickness t carries N ≤ σ_c·t and
                 /// |M| ≤ N·(t − N/σ_c)/2 about its middle (the rectangular stress block).
                 /// Solved to that exact curve by cutting planes. Defaults to none (no crushing).
                 #[serde(default)]
-                #[schema(exclusive_minimum = 0.0, maximum = 1e12, examples(5000.0))]
+                #[schema(examples(5000.0))]
                 pub compressive_strength: Option<f64>,
                 /// With `compressive_strength`: the tangent planes the first programme starts
                 /// from, 2 ≤ planes ≤ 256 (more are added at each joint's own N until the exact
                 /// curve is met, so the answer does not depend on them). Defaults to 4.
                 #[serde(default)]
-                #[schema(minimum = 2, maximum = 256)]
                 pub crushing_planes: Option<usize>,
                 /// With friction: `associative` (the linear programme's flow rule, the default)
                 /// or `non_associative` (sliding without dilatancy, by iterated programmes).
@@ -362,7 +359,6 @@ limit_request! {
         /// these, `road_loads` or `rolling`.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(max_items = 10000)]
         pub loads: Vec<LoadDto>,
         /// Fill over the arch up to a road: its weight joins the dead load, and it spreads
         /// road loads. On circular arches (any rings and spans: the outer ring's extrados and
@@ -372,7 +368,6 @@ limit_request! {
         /// Live loads on the road (with `fill`), dispersed through the fill to the extrados.
         #[serde(default, deserialize_with = "crate::nullable::or_default")]
         #[schema(nullable)]
-        #[schema(max_items = 10000)]
         pub road_loads: Vec<super::fill::RoadLoadDto>,
         /// A set of axles rolled across (on the road with `fill`, else on the extrados): the
         /// load factor at each stop in `rolling`, the answer at the critical stop.

@@ -19,10 +19,11 @@ use super::section::{
 };
 use crate::error::ApiError;
 use crate::limits::{
-    DEFAULT_WATER_UNIT_WEIGHT, MAX_EXTERNAL_LOADS, MAX_FORCE, MAX_GRID, MAX_GRID_SLICES,
-    MAX_LENGTH, MAX_SLICES, MIN_LENGTH, SLICE_TOLERANCE,
+    CENTRE_HEIGHT, DEFAULT_WATER_UNIT_WEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR,
+    LOWER_END_FACTOR_MAX, MAX_GRID_SLICES, MAX_SLICES, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
+    SEISMIC_KV, SLICES, SLICE_TOLERANCE_RANGE,
 };
-use crate::validation::{count, finite, number};
+use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, SectionSearch, SlopePlan, Target};
 
 /// The ground and soil: a section, or the simple slope with its soil.
@@ -45,15 +46,7 @@ impl SpencerRequest {
         let parts = self.parts()?;
         let slice_tolerance = self
             .slice_tolerance
-            .map(|t| {
-                number(
-                    "slice_tolerance",
-                    t,
-                    SLICE_TOLERANCE.0,
-                    false,
-                    SLICE_TOLERANCE.1,
-                )
-            })
+            .map(|t| within("slice_tolerance", t, SLICE_TOLERANCE_RANGE))
             .transpose()?;
         if slice_tolerance.is_some() && !parts.external_loads.is_empty() {
             return Err(ApiError::invalid(
@@ -142,7 +135,7 @@ impl SpencerRequest {
 
     /// Validates everything but the slip surface.
     fn parts(&self) -> Result<Parts, ApiError> {
-        let slices = count("slices", self.slices, 1, MAX_SLICES)?;
+        let slices = count_within("slices", self.slices, SLICES)?;
         let ground = match (&self.section, &self.slope, &self.soil) {
             (Some(section), None, None) => Ground::Section(Box::new(section_from(section)?)),
             (Some(_), _, _) => {
@@ -156,8 +149,7 @@ impl SpencerRequest {
                 ))
             }
             (None, Some(slope), Some(soil)) => {
-                let length =
-                    |field: &str, value: f64| number(field, value, MIN_LENGTH, false, MAX_LENGTH);
+                let length = |field: &str, value: f64| within(field, value, LENGTH);
                 let height = length("slope.height", slope.height)?;
                 let slope_length = length("slope.length", slope.length)?;
                 let soil = soil_from("soil", soil, soil.pore_pressure_ratio.unwrap_or(0.0))?;
@@ -174,15 +166,13 @@ impl SpencerRequest {
             }
         };
         let seismic = match &self.seismic {
-            Some(s) => Seismic::new(s.kh, s.kv)?,
+            Some(s) => Seismic::new(
+                within("seismic.kh", s.kh, SEISMIC_KH)?,
+                within("seismic.kv", s.kv, SEISMIC_KV)?,
+            )?,
             None => Seismic::default(),
         };
-        count(
-            "external_loads",
-            self.external_loads.len(),
-            0,
-            MAX_EXTERNAL_LOADS,
-        )?;
+        count_within("external_loads", self.external_loads.len(), LOADS)?;
         if matches!(ground, Ground::Section(_)) && !self.external_loads.is_empty() {
             return Err(ApiError::invalid(
                 "external_loads",
@@ -196,8 +186,7 @@ impl SpencerRequest {
             .enumerate()
             .map(|(i, load)| {
                 let field = |name: &str| format!("external_loads[{i}].{name}");
-                let force =
-                    |name: &str, v: f64| number(&field(name), v, -MAX_FORCE, false, MAX_FORCE);
+                let force = |name: &str, v: f64| within(&field(name), v, FORCE);
                 Ok(ExternalLoad {
                     slice: count(&field("slice"), load.slice, 1, slices)? - 1,
                     fx: force("fx", load.fx)?,
@@ -223,9 +212,13 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
         (Some(x), Some(y), None, None) => match parts.ground {
             Ground::Simple(embankment, soil) => {
                 let relative = SlipCircle {
-                    x,
-                    y,
-                    lower_end_factor: circle.lower_end_factor.unwrap_or(0.0),
+                    x: finite("circle.x", x)?,
+                    y: within("circle.y", y, CENTRE_HEIGHT)?,
+                    lower_end_factor: within(
+                        "circle.lower_end_factor",
+                        circle.lower_end_factor.unwrap_or(0.0),
+                        LOWER_END_FACTOR,
+                    )?,
                 };
                 Ok(Target::Surface(Analysed::Simple(SlopeProblem::new(
                     embankment,
@@ -242,6 +235,7 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
             )),
         },
         (None, None, Some(centre), Some(radius)) if circle.lower_end_factor.is_none() => {
+            let radius = within("circle.radius", radius, RADIUS)?;
             if !parts.external_loads.is_empty() {
                 return Err(ApiError::invalid(
                     "external_loads",
@@ -313,20 +307,18 @@ fn search_from(
     seismic: Seismic,
 ) -> Result<Target, ApiError> {
     refuse_section_only(search)?;
-    let lower_end_factor = number(
+    let lower_end_factor = within(
         "search.lower_end_factor",
         search.lower_end_factor,
-        0.0,
-        false,
-        100.0,
+        SEARCH_LOWER_END_FACTOR,
     )?;
     let lower_end_factor_max = search
         .lower_end_factor_max
-        .map(|m| number("search.lower_end_factor_max", m, 0.0, true, 100.0))
+        .map(|m| within("search.lower_end_factor_max", m, LOWER_END_FACTOR_MAX))
         .transpose()?;
     let automatic = SearchGrid::automatic(&embankment, lower_end_factor);
-    let nx = count("search.nx", search.nx, 2, MAX_GRID)?;
-    let ny = count("search.ny", search.ny, 2, MAX_GRID)?;
+    let nx = count_within("search.nx", search.nx, GRID_POINTS)?;
+    let ny = count_within("search.ny", search.ny, GRID_POINTS)?;
     let cost = nx * ny * slices.get();
     if cost > MAX_GRID_SLICES {
         return Err(ApiError::invalid(

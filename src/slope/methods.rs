@@ -7,6 +7,7 @@ use thrustline_solver::slope::spencer::methods::{InterSliceFunction, MethodFacto
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
+use crate::limits::INTERSLICE_POINTS;
 use crate::validation::number;
 
 /// A method of slices.
@@ -61,12 +62,14 @@ pub fn interslice_function(points: Option<&[[f64; 2]]>) -> Result<InterSliceFunc
     let Some(points) = points else {
         return Ok(InterSliceFunction::HalfSine);
     };
-    if points.len() < 2 || points.len() > 1000 {
+    if !(INTERSLICE_POINTS.min..=INTERSLICE_POINTS.max).contains(&points.len()) {
         return Err(ApiError::invalid(
             "interslice_function",
             format!(
-                "{} points: allowed is 2 to 1000 points [ξ, f]",
-                points.len()
+                "{} points: allowed is {} to {} points [ξ, f]",
+                points.len(),
+                INTERSLICE_POINTS.min,
+                INTERSLICE_POINTS.max
             ),
         ));
     }

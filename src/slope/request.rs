@@ -9,10 +9,10 @@ use utoipa::ToSchema;
 #[serde(deny_unknown_fields)]
 pub struct SlopeDto {
     /// Slope height H, 1e-9 ≤ H ≤ 1e9.
-    #[schema(minimum = 1e-9, maximum = 1e9, examples(30.48))]
+    #[schema(examples(30.48))]
     pub height: f64,
     /// Horizontal length L of the slope face, 1e-9 ≤ L ≤ 1e9; the slope is H:L.
-    #[schema(minimum = 1e-9, maximum = 1e9, examples(60.96))]
+    #[schema(examples(60.96))]
     pub length: f64,
 }
 
@@ -29,12 +29,12 @@ pub struct CircleDto {
     pub x: Option<f64>,
     /// Relative form: height Y of the centre above the lower end (> 0).
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, examples(63.76416))]
+    #[schema(examples(63.76416))]
     pub y: Option<f64>,
     /// Relative form: lower-end position factor F_e ≥ 0: the lower end lies F_e·H in front of
     /// the toe. Defaults to 0.
     #[serde(default)]
-    #[schema(minimum = 0.0, examples(0.0))]
+    #[schema(examples(0.0))]
     pub lower_end_factor: Option<f64>,
     /// Absolute form: the centre [x, y] in the section's coordinates.
     #[serde(default)]
@@ -43,7 +43,7 @@ pub struct CircleDto {
     /// Absolute form: the radius, 0 < R ≤ 1e9. The sliding mass lies above the arc between
     /// the two crossings of the ground that bound the deepest part of the arc.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e9, examples(80.0))]
+    #[schema(examples(80.0))]
     pub radius: Option<f64>,
 }
 
@@ -52,19 +52,19 @@ pub struct CircleDto {
 #[serde(deny_unknown_fields)]
 pub struct SoilDto {
     /// Unit weight γ, 0 < γ ≤ 1e12.
-    #[schema(exclusive_minimum = 0.0, maximum = 1e12, examples(10.0))]
+    #[schema(examples(10.0))]
     pub unit_weight: f64,
     /// Effective cohesion c', 0 ≤ c' ≤ 1e12 (> 0 when the friction angle is 0).
-    #[schema(minimum = 0.0, maximum = 1e12, examples(6.096))]
+    #[schema(examples(6.096))]
     pub cohesion: f64,
     /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9.
-    #[schema(minimum = 0.0, maximum = 89.9, examples(40.0))]
+    #[schema(examples(40.0))]
     pub friction_angle_deg: f64,
     /// Pore pressure ratio r_u = u/σ_v (σ_v = W/b, γh in one soil), 0 ≤ r_u ≤ 1. Defaults to
     /// 0 for `soil`; in a section's layer, when given it sets the pore pressure at bases in
     /// this soil in place of the piezometric line.
     #[serde(default)]
-    #[schema(minimum = 0.0, maximum = 1.0, examples(0.5))]
+    #[schema(examples(0.5))]
     pub pore_pressure_ratio: Option<f64>,
 }
 
@@ -75,12 +75,12 @@ pub struct SeismicDto {
     /// Horizontal coefficient: k_h·W acts towards the toe. −10 ≤ k_h ≤ 10.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = -10.0, maximum = 10.0, examples(0.1))]
+    #[schema(examples(0.1))]
     pub kh: f64,
     /// Vertical coefficient: k_v·W acts downwards. −0.99 ≤ k_v ≤ 10.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = -0.99, maximum = 10.0, examples(0.0))]
+    #[schema(examples(0.0))]
     pub kv: f64,
 }
 
@@ -89,7 +89,7 @@ pub struct SeismicDto {
 #[serde(deny_unknown_fields)]
 pub struct ExternalLoadDto {
     /// Slice number, 1 at the lower end of the slip surface.
-    #[schema(minimum = 1, maximum = 10000, examples(3))]
+    #[schema(examples(3))]
     #[serde(deserialize_with = "crate::nullable::integer")]
     pub slice: usize,
     /// Horizontal force, positive towards the crest (+x).
@@ -129,7 +129,7 @@ pub struct SpencerRequest {
     /// Any slip surface: a polyline [[x, y], ...] running left to right, its first and last
     /// points at or above the ground (the surface starts and ends where it crosses the ground).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 10000)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub surface: Option<Vec<[f64; 2]>>,
     /// The centre [x, y] about which moment-only methods (Bishop's) take moments for a `surface`;
     /// without it they are not reported for a surface (a circle uses its centre).
@@ -143,12 +143,11 @@ pub struct SpencerRequest {
     /// `bishop`, `janbu`, `ordinary` (answered in `methods`).
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(max_items = 4)]
     pub methods: Vec<super::methods::MethodName>,
     /// Morgenstern–Price's inter-slice function as points [ξ, f], ξ from 0 (toe end) to 1
     /// (crest end); defaults to the half-sine sin(π·ξ).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub interslice_function: Option<Vec<[f64; 2]>>,
     /// Where a slice base comes out in tension (negative effective normal force): `keep` the
     /// classic equations (the default: Spencer's and the thesis' published numbers; a root
@@ -172,7 +171,7 @@ pub struct SpencerRequest {
     /// changes by less than this fraction (at most 10000 slices); `slice_refinement` lists the
     /// steps. Defaults to none: exactly `slices` slices. 1e-4 suits ordinary slopes.
     #[serde(default)]
-    #[schema(minimum = 1e-9, maximum = 0.1, examples(1e-4))]
+    #[schema(examples(1e-4))]
     pub slice_tolerance: Option<f64>,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
     #[serde(
@@ -180,7 +179,7 @@ pub struct SpencerRequest {
         deserialize_with = "crate::nullable::slices"
     )]
     #[schema(nullable)]
-    #[schema(minimum = 1, maximum = 10000, default = 100, examples(100))]
+    #[schema(default = 100, examples(100))]
     pub slices: usize,
     /// The soil of the simple `slope`.
     #[serde(default)]
@@ -191,7 +190,6 @@ pub struct SpencerRequest {
     /// Optional known loads on slices.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(max_items = 10000)]
     pub external_loads: Vec<ExternalLoadDto>,
 }
 
@@ -220,15 +218,12 @@ pub struct SearchDto {
     pub y_max: Option<f64>,
     /// Section only: the smallest radius tried at each centre (with `radius_max`).
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
     pub radius_min: Option<f64>,
     /// Section only: the largest radius tried at each centre.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 1e9)]
     pub radius_max: Option<f64>,
     /// Section only: radii per centre, 1 ≤ nr ≤ 101. Defaults to 10.
     #[serde(default)]
-    #[schema(minimum = 1, maximum = 101)]
     pub nr: Option<usize>,
     /// Section only: `noncircular` continues from the critical circle with a polyline whose
     /// vertices move to lower F (`vertices` of them; kinematically admissible, within the time
@@ -238,19 +233,16 @@ pub struct SearchDto {
     /// Section only, with `shape: noncircular`: vertices of the polyline, 4 ≤ n ≤ 40. Defaults
     /// to 12.
     #[serde(default)]
-    #[schema(minimum = 4, maximum = 40)]
     pub vertices: Option<usize>,
     /// Section only, with `shape: noncircular`: the most the polyline search may spend after
     /// the critical circle is found, in milliseconds (0 < t ≤ 600000; the request's time limit
     /// still applies). When it ends the search, the answer is its best surface so far and a
     /// warning says so. Defaults to the time limit.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 600000.0)]
     pub time_budget_ms: Option<f64>,
     /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
     /// range; at most 101.
     #[serde(default)]
-    #[schema(max_items = 101)]
     pub tangent_elevations: Option<Vec<f64>>,
     /// Grid points along X, 2 ≤ nx ≤ 101. Defaults to 21.
     #[serde(
@@ -258,7 +250,7 @@ pub struct SearchDto {
         deserialize_with = "crate::nullable::grid_points"
     )]
     #[schema(nullable)]
-    #[schema(minimum = 2, maximum = 101, default = 21)]
+    #[schema(default = 21)]
     pub nx: usize,
     /// Grid points along Y, 2 ≤ ny ≤ 101. Defaults to 21.
     #[serde(
@@ -266,18 +258,16 @@ pub struct SearchDto {
         deserialize_with = "crate::nullable::grid_points"
     )]
     #[schema(nullable)]
-    #[schema(minimum = 2, maximum = 101, default = 21)]
+    #[schema(default = 21)]
     pub ny: usize,
     /// Simple slope only: lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100.
     /// Defaults to 0 (toe).
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0, maximum = 100.0)]
     pub lower_end_factor: f64,
     /// Simple slope only: when given, F_e is searched too, within [0, this], in the
     /// refinement.
     #[serde(default)]
-    #[schema(exclusive_minimum = 0.0, maximum = 100.0)]
     pub lower_end_factor_max: Option<f64>,
 }
 
@@ -294,40 +284,32 @@ pub type Coordinates = [f64; 2];
 #[serde(deny_unknown_fields)]
 pub struct SectionDto {
     /// The ground surface, 1 to 1000 points.
-    #[schema(value_type = Vec<Vec<f64>>, min_items = 1, max_items = 1000)]
+    #[schema(value_type = Vec<Vec<f64>>)]
     pub ground: Vec<Coordinates>,
     /// Soil layers from the top down (1 to 50): the soil at a point is that of the last layer
     /// whose top is at or above it. The first layer's top is the ground (`null`).
-    #[schema(min_items = 1, max_items = 50)]
     pub layers: Vec<LayerDto>,
     /// A hard stratum: slip surfaces do not pass below it (a circle that would, follows it).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub bedrock: Option<Vec<Coordinates>>,
     /// The piezometric line: u = γ_w·(y_line − y) below it; where it lies above the ground the
     /// water is ponded and presses on the ground.
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub piezometric_line: Option<Vec<Coordinates>>,
     /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
     /// (kN/m³); give 62.4 for pcf.
     #[serde(default)]
-    #[schema(
-        exclusive_minimum = 0.0,
-        maximum = 1e12,
-        default = 9.81,
-        examples(9.81)
-    )]
+    #[schema(default = 9.81, examples(9.81))]
     pub water_unit_weight: Option<f64>,
     /// Vertical pressures on the ground.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(max_items = 1000)]
     pub surcharges: Vec<SurchargeDto>,
     /// Forces on ground points.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(max_items = 1000)]
     pub line_loads: Vec<LineLoadDto>,
     /// A tension crack at the upper end of the slip surface.
     #[serde(default)]
@@ -340,7 +322,7 @@ pub struct SectionDto {
 pub struct LayerDto {
     /// The top of the layer; `null` for the first (the ground), required for the others.
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>, max_items = 1000)]
+    #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub top: Option<Vec<Coordinates>>,
     /// The layer's soil.
     pub soil: SoilDto,
@@ -355,11 +337,9 @@ pub struct SurchargeDto {
     /// Right end (> x_start).
     pub x_end: f64,
     /// Pressure at x_start, 0 ≤ p ≤ 1e12.
-    #[schema(minimum = 0.0, maximum = 1e12)]
     pub pressure: f64,
     /// Pressure at x_end (linear in between). Defaults to `pressure`.
     #[serde(default)]
-    #[schema(minimum = 0.0, maximum = 1e12)]
     pub pressure_end: Option<f64>,
 }
 
@@ -385,13 +365,11 @@ pub struct LineLoadDto {
 #[serde(deny_unknown_fields)]
 pub struct TensionCrackDto {
     /// Depth below the ground, > 0.
-    #[schema(exclusive_minimum = 0.0)]
     pub depth: f64,
     /// Water in the crack, measured up from its bottom, 0 ≤ z_w ≤ depth: ½·γ_w·z_w² pushes the
     /// mass towards the toe at z_w/3 above the bottom. Defaults to 0.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
-    #[schema(minimum = 0.0)]
     pub water_depth: f64,
 }
 

@@ -13,10 +13,11 @@ use thrustline_solver::slope::Soil;
 use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto, SoilDto};
 use crate::error::ApiError;
 use crate::limits::{
-    DEFAULT_WATER_UNIT_WEIGHT, MAX_GRID, MAX_GRID_SLICES, MAX_LAYERS, MAX_MAGNITUDE,
-    MAX_POLYLINE_POINTS, MAX_SECTION_LOADS,
+    COORDINATE, CRACK_DEPTH, DEFAULT_WATER_UNIT_WEIGHT, FRICTION_ANGLE_DEG, GRID_POINTS, LAYERS,
+    LINE_LOAD, MAX_GRID_SLICES, MAX_POLYLINE_POINTS, POLYLINE_POINTS, PORE_PRESSURE_RATIO, RADII,
+    RADIUS, SECTION_LOADS, STRESS, TIME_BUDGET_MS, UNIT_WEIGHT, VERTICES,
 };
-use crate::validation::{count, number};
+use crate::validation::{count_within, number, within};
 
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
@@ -73,11 +74,11 @@ pub fn search_region(
              and radius",
         ));
     }
-    let nx = count("search.nx", search.nx, 2, MAX_GRID)?;
-    let ny = count("search.ny", search.ny, 2, MAX_GRID)?;
-    let nr = count("search.nr", search.nr.unwrap_or(DEFAULT_RADII), 1, MAX_GRID)?;
+    let nx = count_within("search.nx", search.nx, GRID_POINTS)?;
+    let ny = count_within("search.ny", search.ny, GRID_POINTS)?;
+    let nr = count_within("search.nr", search.nr.unwrap_or(DEFAULT_RADII), RADII)?;
     let coordinate =
-        |field: &str, v: Option<f64>| v.map(|v| number(field, v, -1e9, false, 1e9)).transpose();
+        |field: &str, v: Option<f64>| v.map(|v| within(field, v, COORDINATE)).transpose();
     let radii = radii(search, nr)?;
     let per_centre = match &radii {
         Radii::Tangent(ys) => ys.len(),
@@ -142,10 +143,10 @@ fn noncircular(search: &SearchDto) -> Result<Option<Noncircular>, ApiError> {
         }
         SearchShapeDto::Circular => None,
         SearchShapeDto::Noncircular => Some(Noncircular {
-            vertices: count("search.vertices", search.vertices.unwrap_or(12), 4, 40)?,
+            vertices: count_within("search.vertices", search.vertices.unwrap_or(12), VERTICES)?,
             budget: search
                 .time_budget_ms
-                .map(|t| number("search.time_budget_ms", t, 0.0, true, 6e5))
+                .map(|t| within("search.time_budget_ms", t, TIME_BUDGET_MS))
                 .transpose()?
                 .map(|t| Duration::from_secs_f64(t / 1e3)),
         }),
@@ -154,8 +155,7 @@ fn noncircular(search: &SearchDto) -> Result<Option<Noncircular>, ApiError> {
 
 /// The radii at each centre: automatic, a range, or tangent to given elevations.
 fn radii(search: &SearchDto, nr: usize) -> Result<Radii, ApiError> {
-    let radius =
-        |field: &str, v: Option<f64>| v.map(|v| number(field, v, 0.0, true, 1e9)).transpose();
+    let radius = |field: &str, v: Option<f64>| v.map(|v| within(field, v, RADIUS)).transpose();
     Ok(
         match (
             radius("search.radius_min", search.radius_min)?,
@@ -175,15 +175,9 @@ fn radii(search: &SearchDto, nr: usize) -> Result<Radii, ApiError> {
                 ))
             }
             (None, None, Some(ys)) => {
-                count("search.tangent_elevations", ys.len(), 1, MAX_GRID)?;
+                count_within("search.tangent_elevations", ys.len(), RADII)?;
                 for (i, &y) in ys.iter().enumerate() {
-                    number(
-                        &format!("search.tangent_elevations[{i}]"),
-                        y,
-                        -1e9,
-                        false,
-                        1e9,
-                    )?;
+                    within(&format!("search.tangent_elevations[{i}]"), y, COORDINATE)?;
                 }
                 Radii::Tangent(ys.clone())
             }
@@ -211,7 +205,7 @@ fn radii(search: &SearchDto, nr: usize) -> Result<Radii, ApiError> {
 
 /// A polyline from its points, at `field`.
 pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiError> {
-    count(field, points.len(), 1, MAX_POLYLINE_POINTS).map_err(|_| {
+    count_within(field, points.len(), POLYLINE_POINTS).map_err(|_| {
         ApiError::invalid(
             field,
             format!(
@@ -235,16 +229,15 @@ pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiErro
 /// A soil at `prefix` (`soil` or `section.layers[i].soil`); r_u is the caller's.
 pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
     let field = |name: &str| format!("{prefix}.{name}");
-    number(
-        &field("unit_weight"),
-        dto.unit_weight,
-        0.0,
-        true,
-        MAX_MAGNITUDE,
+    within(&field("unit_weight"), dto.unit_weight, UNIT_WEIGHT)?;
+    within(&field("cohesion"), dto.cohesion, STRESS)?;
+    within(
+        &field("friction_angle_deg"),
+        dto.friction_angle_deg,
+        FRICTION_ANGLE_DEG,
     )?;
-    number(&field("cohesion"), dto.cohesion, 0.0, false, MAX_MAGNITUDE)?;
-    // The friction angle, r_u and a soil without strength are Soil::new's checks; its errors
-    // name `soil.*`, re-rooted here at the prefix.
+    // A soil without strength is Soil::new's check; its errors name `soil.*`, re-rooted here
+    // at the prefix.
     Soil::new(dto.unit_weight, dto.cohesion, dto.friction_angle_deg, ratio).map_err(|e| {
         match ApiError::from(e) {
             ApiError::Invalid { field, detail } => ApiError::Invalid {
@@ -259,7 +252,7 @@ pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
 /// The section as the solver takes it.
 pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
     let ground = polyline("section.ground", &dto.ground)?;
-    count("section.layers", dto.layers.len(), 1, MAX_LAYERS)?;
+    count_within("section.layers", dto.layers.len(), LAYERS)?;
     let layers = dto
         .layers
         .iter()
@@ -270,12 +263,10 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
                 .soil
                 .pore_pressure_ratio
                 .map(|r| {
-                    number(
+                    within(
                         &format!("{prefix}.soil.pore_pressure_ratio"),
                         r,
-                        0.0,
-                        false,
-                        1.0,
+                        PORE_PRESSURE_RATIO,
                     )
                 })
                 .transpose()?;
@@ -293,25 +284,13 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
     let line = |field: &str, points: &Option<Vec<Coordinates>>| {
         points.as_ref().map(|p| polyline(field, p)).transpose()
     };
-    let water_unit_weight = number(
+    let water_unit_weight = within(
         "section.water_unit_weight",
         dto.water_unit_weight.unwrap_or(DEFAULT_WATER_UNIT_WEIGHT),
-        0.0,
-        true,
-        MAX_MAGNITUDE,
+        UNIT_WEIGHT,
     )?;
-    count(
-        "section.surcharges",
-        dto.surcharges.len(),
-        0,
-        MAX_SECTION_LOADS,
-    )?;
-    count(
-        "section.line_loads",
-        dto.line_loads.len(),
-        0,
-        MAX_SECTION_LOADS,
-    )?;
+    count_within("section.surcharges", dto.surcharges.len(), SECTION_LOADS)?;
+    count_within("section.line_loads", dto.line_loads.len(), SECTION_LOADS)?;
     let surcharges = surcharges(dto)?;
     let line_loads = dto
         .line_loads
@@ -320,9 +299,9 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         .map(|(i, l)| {
             let field = |name: &str| format!("section.line_loads[{i}].{name}");
             Ok(LineLoad {
-                x: number(&field("x"), l.x, -1e9, false, 1e9)?,
-                fx: number(&field("fx"), l.fx, -MAX_MAGNITUDE, false, MAX_MAGNITUDE)?,
-                fy: number(&field("fy"), l.fy, -MAX_MAGNITUDE, false, MAX_MAGNITUDE)?,
+                x: within(&field("x"), l.x, COORDINATE)?,
+                fx: within(&field("fx"), l.fx, LINE_LOAD)?,
+                fy: within(&field("fy"), l.fy, LINE_LOAD)?,
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
@@ -330,7 +309,7 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         .tension_crack
         .as_ref()
         .map(|c| {
-            let depth = number("section.tension_crack.depth", c.depth, 0.0, true, 1e9)?;
+            let depth = within("section.tension_crack.depth", c.depth, CRACK_DEPTH)?;
             let water_depth = number(
                 "section.tension_crack.water_depth",
                 c.water_depth,
@@ -360,18 +339,18 @@ fn surcharges(dto: &SectionDto) -> Result<Vec<Surcharge>, ApiError> {
         .enumerate()
         .map(|(i, s)| {
             let field = |name: &str| format!("section.surcharges[{i}].{name}");
-            let x_start = number(&field("x_start"), s.x_start, -1e9, false, 1e9)?;
-            let x_end = number(&field("x_end"), s.x_end, -1e9, false, 1e9)?;
+            let x_start = within(&field("x_start"), s.x_start, COORDINATE)?;
+            let x_end = within(&field("x_end"), s.x_end, COORDINATE)?;
             if x_end <= x_start {
                 return Err(ApiError::invalid(
                     field("x_end"),
                     "must be greater than x_start",
                 ));
             }
-            let pressure = number(&field("pressure"), s.pressure, 0.0, false, MAX_MAGNITUDE)?;
+            let pressure = within(&field("pressure"), s.pressure, STRESS)?;
             let pressure_end = s
                 .pressure_end
-                .map(|p| number(&field("pressure_end"), p, 0.0, false, MAX_MAGNITUDE))
+                .map(|p| within(&field("pressure_end"), p, STRESS))
                 .transpose()?
                 .unwrap_or(pressure);
             Ok(Surcharge {

@@ -1,0 +1,300 @@
+//! One table of limits for the schema and the checks (`src/limits.rs`): every entry lands on a
+//! property of the document, no schema attribute states a limit of its own, and at the table's
+//! bounds the server answers as the schema says — a value just inside is not refused for its
+//! range, a value just outside is 422 naming the field.
+// Test scaffolding: a malformed fixture should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::Server;
+use serde_json::{json, Value};
+use thrustline::limits::schema::SCHEMA_LIMITS;
+use thrustline::limits::{Limit, Range};
+
+#[test]
+fn every_table_entry_names_a_property_of_the_document() {
+    let missing = thrustline::openapi::limit_targets_missing();
+    assert!(missing.is_empty(), "limits naming no property: {missing:?}");
+    // And the document states each of them.
+    let doc: Value = serde_json::from_str(&thrustline::openapi::openapi_json()).unwrap();
+    for (schema, property, limit) in SCHEMA_LIMITS {
+        let p = &doc["components"]["schemas"][schema]["properties"][property];
+        let text = p.to_string();
+        let stated = match limit {
+            Limit::Number(_) | Limit::Integer(_) => text.contains("imum"),
+            Limit::Items(_) => text.contains("maxItems"),
+        };
+        assert!(stated, "{schema}.{property} states no limit: {p}");
+    }
+}
+
+#[test]
+fn no_schema_attribute_states_a_limit_of_its_own() {
+    // Limits live in the table; an attribute's literal would be a second source. Points
+    // ([x, y]: exactly two items) are shapes, not limits.
+    let mut found = Vec::new();
+    let mut stack = vec![std::path::PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/src"
+    ))];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            for (i, line) in text.lines().enumerate() {
+                let attribute = line.trim_start().starts_with("#[schema(");
+                let limit = [
+                    "minimum =",
+                    "maximum =",
+                    "exclusive_minimum =",
+                    "max_items =",
+                ]
+                .iter()
+                .any(|k| line.contains(k));
+                let point = line.contains("min_items = 2, max_items = 2");
+                if attribute && limit && !point {
+                    found.push(format!("{}:{}", path.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(found.is_empty(), "limits outside the table: {found:?}");
+}
+
+/// A value just outside `range` at each finite end, with the side it is on.
+fn outside(range: Range) -> Vec<f64> {
+    let nudge = |v: f64, up: bool| {
+        let step = 1e-6 * v.abs().max(1.0);
+        if up {
+            v + step
+        } else {
+            v - step
+        }
+    };
+    let mut values = Vec::new();
+    if let Some(min) = range.min {
+        values.push(if range.min_open {
+            min
+        } else {
+            nudge(min, false)
+        });
+    }
+    if let Some(max) = range.max {
+        values.push(nudge(max, true));
+    }
+    values
+}
+
+/// Sets the value at a JSON pointer.
+fn set(body: &mut Value, pointer: &str, value: Value) {
+    *body.pointer_mut(pointer).unwrap() = value;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_server_refuses_what_the_schema_excludes_and_names_the_field() {
+    let server = Server::start().await;
+    let spencer = json!({"slope": {"height": 30.48, "length": 60.96},
+        "circle": {"x": 9.63168, "y": 63.76416}, "slices": 20,
+        "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
+                 "pore_pressure_ratio": 0.5},
+        "seismic": {"kh": 0.0, "kv": 0.0}, "include": []});
+    let section = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
+        "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}],
+        "water_unit_weight": 62.4,
+        "surcharges": [{"x_start": 10, "x_end": 20, "pressure": 5}],
+        "tension_crack": {"depth": 5, "water_depth": 1}},
+        "circle": {"centre": [120, 90], "radius": 80}, "slices": 20, "include": []});
+    let arch = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+        "voussoirs": 20, "left_base_angle_deg": 0.0}, "loads": [{"block": 6, "fy": -1}], "unit_weight": 1.0,
+        "friction_coefficient": 0.5, "include": []});
+    let bridge = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0,
+        "voussoirs": 40}, "fill": {"unit_weight": 1.8, "surface": 11.5,
+        "dispersal_angle_deg": 30, "passive": {"friction_angle_deg": 30, "mobilisation": 0.5}},
+        "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}], "include": []});
+    // (schema, property) → (route, body, pointer, field the 422 names).
+    let cases: &[(&str, &str, &str, &Value, &str, &str)] = &[
+        (
+            "SlopeDto",
+            "height",
+            "/slope/spencer",
+            &spencer,
+            "/slope/height",
+            "slope.height",
+        ),
+        (
+            "CircleDto",
+            "y",
+            "/slope/spencer",
+            &spencer,
+            "/circle/y",
+            "circle.y",
+        ),
+        (
+            "SoilDto",
+            "friction_angle_deg",
+            "/slope/spencer",
+            &spencer,
+            "/soil/friction_angle_deg",
+            "soil.friction_angle_deg",
+        ),
+        (
+            "SoilDto",
+            "pore_pressure_ratio",
+            "/slope/spencer",
+            &spencer,
+            "/soil/pore_pressure_ratio",
+            "soil.pore_pressure_ratio",
+        ),
+        (
+            "SoilDto",
+            "cohesion",
+            "/slope/spencer",
+            &spencer,
+            "/soil/cohesion",
+            "soil.cohesion",
+        ),
+        (
+            "SeismicDto",
+            "kh",
+            "/slope/spencer",
+            &spencer,
+            "/seismic/kh",
+            "seismic.kh",
+        ),
+        (
+            "SeismicDto",
+            "kv",
+            "/slope/spencer",
+            &spencer,
+            "/seismic/kv",
+            "seismic.kv",
+        ),
+        (
+            "CircleDto",
+            "radius",
+            "/slope/spencer",
+            &section,
+            "/circle/radius",
+            "circle.radius",
+        ),
+        (
+            "SectionDto",
+            "water_unit_weight",
+            "/slope/spencer",
+            &section,
+            "/section/water_unit_weight",
+            "section.water_unit_weight",
+        ),
+        (
+            "SurchargeDto",
+            "pressure",
+            "/slope/spencer",
+            &section,
+            "/section/surcharges/0/pressure",
+            "section.surcharges[0].pressure",
+        ),
+        (
+            "TensionCrackDto",
+            "depth",
+            "/slope/spencer",
+            &section,
+            "/section/tension_crack/depth",
+            "section.tension_crack.depth",
+        ),
+        (
+            "CircularGeometryDto",
+            "radius",
+            "/arch/live-load",
+            &arch,
+            "/geometry/radius",
+            "geometry.radius",
+        ),
+        (
+            "CircularGeometryDto",
+            "voussoirs",
+            "/arch/live-load",
+            &arch,
+            "/geometry/voussoirs",
+            "geometry.voussoirs",
+        ),
+        (
+            "CircularGeometryDto",
+            "left_base_angle_deg",
+            "/arch/live-load",
+            &arch,
+            "/geometry/left_base_angle_deg",
+            "geometry.left_base_angle_deg",
+        ),
+        (
+            "LiveLoadRequest",
+            "unit_weight",
+            "/arch/live-load",
+            &arch,
+            "/unit_weight",
+            "unit_weight",
+        ),
+        (
+            "LiveLoadRequest",
+            "friction_coefficient",
+            "/arch/live-load",
+            &arch,
+            "/friction_coefficient",
+            "friction_coefficient",
+        ),
+        (
+            "FillDto",
+            "dispersal_angle_deg",
+            "/arch/live-load",
+            &bridge,
+            "/fill/dispersal_angle_deg",
+            "fill.dispersal_angle_deg",
+        ),
+        (
+            "PassiveDto",
+            "mobilisation",
+            "/arch/live-load",
+            &bridge,
+            "/fill/passive/mobilisation",
+            "fill.passive.mobilisation",
+        ),
+        (
+            "RoadLoadDto",
+            "length",
+            "/arch/live-load",
+            &bridge,
+            "/road_loads/0/length",
+            "road_loads[0].length",
+        ),
+    ];
+    let mut checked = 0;
+    for (schema, property, route, body, pointer, field) in cases {
+        let limit = SCHEMA_LIMITS
+            .iter()
+            .find(|(s, p, _)| s == schema && p == property)
+            .map(|e| e.2)
+            .unwrap_or_else(|| panic!("{schema}.{property} is not in the table"));
+        let values: Vec<Value> = match limit {
+            Limit::Number(range) => outside(range).into_iter().map(|v| json!(v)).collect(),
+            Limit::Integer(c) | Limit::Items(c) => {
+                vec![json!(c.min.saturating_sub(1)), json!(c.max + 1)]
+            }
+        };
+        for value in values {
+            let mut sent = (*body).clone();
+            set(&mut sent, pointer, value.clone());
+            let (status, _, answer) = server.post(route, &sent).await;
+            assert_eq!(status, 422, "{schema}.{property} = {value}: {answer}");
+            assert_eq!(
+                answer["field"], *field,
+                "{schema}.{property} = {value}: {answer}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 30, "only {checked} boundary values checked");
+}
