@@ -6,10 +6,11 @@
 //! tracing span. `spawn_blocking` cannot be cancelled, so every solve carries its own iteration
 //! and time limits; the deadline here only stops the client from waiting past it.
 
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use thrustline_solver::budget::Budget;
 use tokio::sync::Semaphore;
 
 use crate::error::ApiError;
@@ -141,7 +142,29 @@ impl SolvePool {
         }
     }
 
-    /// The README's outcome rule for a solver stopped at its time limit: alone on the pool it
+    /// Runs `solve` as [`SolvePool::run`] does, with a [`Budget`] of `time_limit` from the moment
+    /// it starts running, cancelled when this future is dropped: a client that goes away (its
+    /// request future dropped by the server) or the pool's own deadline stops every loop that
+    /// asks the budget.
+    pub async fn run_budgeted<T, F>(
+        &self,
+        time_limit: Duration,
+        solve: F,
+    ) -> Result<Ran<T>, ApiError>
+    where
+        T: Send + 'static,
+        F: FnOnce(&Budget) -> T + Send + 'static,
+    {
+        let cancelled = Arc::new(AtomicBool::new(false));
+        let _cancel_on_drop = CancelOnDrop(cancelled.clone());
+        self.run(move || {
+            let budget = Budget::with_time_limit(time_limit).cancelled_by(cancelled);
+            solve(&budget)
+        })
+        .await
+    }
+
+    /// The outcome rule for a solver stopped at its time limit (docs/api.md): alone on the pool it
     /// is the request's size (the 422 naming the field that sets the work); beside other solves
     /// it may be the load (the same request can finish on an idle service), so it is the
     /// service's condition: 503 with `Retry-After`, the field still named.
@@ -160,6 +183,15 @@ impl SolvePool {
             },
             other => other,
         }
+    }
+}
+
+/// Raises its flag when dropped: the request's work is no longer wanted.
+struct CancelOnDrop(Arc<AtomicBool>);
+
+impl Drop for CancelOnDrop {
+    fn drop(&mut self) {
+        self.0.store(true, Ordering::Relaxed);
     }
 }
 
@@ -238,6 +270,33 @@ mod tests {
         assert!(short.shared);
         assert!(long.await.unwrap().unwrap().shared);
         assert!(!pool.run(|| ()).await.unwrap().shared, "alone again");
+    }
+
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn a_request_dropped_mid_solve_cancels_its_budget() {
+        // A solve that loops until its budget is spent (60 s of time limit); the request's
+        // future is dropped after 100 ms, as the server drops it when the client goes away.
+        // The loop must see the cancellation at once, not at its time limit.
+        let pool = SolvePool::new(1, 2, Duration::from_secs(120), Arc::default());
+        let (sender, receiver) = std::sync::mpsc::channel();
+        let dropped_at = Instant::now();
+        let run = pool.run_budgeted(Duration::from_secs(60), move |budget| {
+            while !budget.is_spent() {
+                std::thread::sleep(Duration::from_millis(1));
+            }
+            sender.send((budget.check(), Instant::now())).ok();
+        });
+        assert!(tokio::time::timeout(Duration::from_millis(100), run)
+            .await
+            .is_err());
+        let (stop, at) = tokio::task::spawn_blocking(move || {
+            receiver.recv_timeout(Duration::from_secs(10)).unwrap()
+        })
+        .await
+        .unwrap();
+        assert_eq!(stop, Err(thrustline_solver::budget::Stop::Cancelled));
+        // 2 s: the loop's own step is 1 ms; anything near the 60 s limit is a failure.
+        assert!(at.duration_since(dropped_at) < Duration::from_secs(2));
     }
 
     #[test]

@@ -177,7 +177,15 @@ pub async fn minimum_thickness(
     };
     let ran = state
         .pool
-        .run(move || {
+        .run_budgeted(state.solve_time_limit, move |budget| {
+            // Every dead-load programme of the search asks the request's budget.
+            let settings = MinimumThicknessSettings {
+                limit: LimitSettings {
+                    budget: budget.clone(),
+                    ..settings.limit.clone()
+                },
+                ..settings
+            };
             let result = solve_minimum_thickness(
                 &arch,
                 material.unit_weight,

@@ -20,7 +20,6 @@ pub mod tables;
 
 use axum::extract::State;
 use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
-use thrustline_solver::budget::Budget;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::stop::Work;
@@ -219,7 +218,7 @@ fn plan(which: Problem, input: &ArchInput) -> ArchPlan {
     ArchPlan {
         programme,
         friction,
-        settings: input.settings,
+        settings: input.settings.clone(),
     }
 }
 
@@ -227,11 +226,12 @@ fn plan(which: Problem, input: &ArchInput) -> ArchPlan {
 /// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
 async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<SolvedArch, ApiError> {
     let plan = plan(which, &input);
-    let budget = Budget::with_time_limit(state.solve_time_limit);
     let problem = input.problem.clone();
     let ran = state
         .pool
-        .run(move || analyse(&problem, &plan, &budget))
+        .run_budgeted(state.solve_time_limit, move |budget| {
+            analyse(&problem, &plan, budget)
+        })
         .await?;
     let outcome = ran.value?;
     tracing::info!(

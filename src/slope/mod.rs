@@ -19,7 +19,6 @@ pub mod tables;
 pub mod warnings;
 
 use axum::extract::State;
-use thrustline_solver::budget::Budget;
 use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
 use thrustline_solver::slope::Sliced;
 
@@ -130,8 +129,10 @@ pub async fn spencer_svg(
 /// solves ran beside it, [`AppState::refuse`]).
 async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
-    let budget = Budget::with_time_limit(state.solve_time_limit);
-    let ran = state.pool.run(move || analyse(&plan, &budget)).await?;
+    let ran = state
+        .pool
+        .run_budgeted(state.solve_time_limit, move |budget| analyse(&plan, budget))
+        .await?;
     let answer = match ran.value? {
         SlopeOutcome::Answered(answer) => *answer,
         SlopeOutcome::Stopped { stage, stop } => {

@@ -94,6 +94,18 @@ impl Budget {
     }
 }
 
+impl PartialEq for Budget {
+    /// The same deadline and the same flag (or none).
+    fn eq(&self, other: &Self) -> bool {
+        let same_flag = match (&self.cancelled, &other.cancelled) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            (None, None) => true,
+            _ => false,
+        };
+        self.deadline == other.deadline && same_flag
+    }
+}
+
 /// How an analysis ended. The answer's own status (a circle without a root, an arch that does
 /// not carry its weight) is part of a finished answer, not a stop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -292,3 +292,34 @@ fn a_spent_budget_stops_an_arch_at_the_time_limit() {
     assert_eq!(outcome.stop, Stop::TimeLimit);
     assert!(outcome.rolling.unwrap().critical.is_none());
 }
+
+#[test]
+fn a_spent_budget_stops_a_single_programme() {
+    // One dead-load programme on Livesley's general formulation: the budget reaches into the
+    // interior-point method (its time limit and its callback), not only between programmes.
+    let problem = milankovitch_problem(milankovitch::THICKNESS_FALLS, 200);
+    let mut dead = plan(Programme::DeadLoad, Friction::Associative);
+    dead.settings.formulation = thrustline_solver::arch::Formulation::Assembly;
+    let spent = Budget::with_time_limit(Duration::ZERO);
+    let outcome = analyse_arch(&problem, &dead, &spent).unwrap();
+    assert_eq!(outcome.stop, Stop::TimeLimit);
+    assert_eq!(outcome.solution.load_factor, None);
+}
+
+#[test]
+fn a_cancelled_budget_stops_a_running_programme() {
+    // The flag raised from another thread while a long programme runs (N = 1800 on the general
+    // formulation): the analysis answers `Cancelled`, not the programme's own answer.
+    let problem = milankovitch_problem(milankovitch::THICKNESS_FALLS, milankovitch::VOUSSOIRS);
+    let mut dead = plan(Programme::DeadLoad, Friction::Associative);
+    dead.settings.formulation = thrustline_solver::arch::Formulation::Assembly;
+    let flag = Arc::new(AtomicBool::new(false));
+    let budget = Budget::with_time_limit(Duration::from_secs(600)).cancelled_by(flag.clone());
+    let raise = std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(5));
+        flag.store(true, Ordering::Relaxed);
+    });
+    let outcome = analyse_arch(&problem, &dead, &budget).unwrap();
+    raise.join().unwrap();
+    assert_eq!(outcome.stop, Stop::Cancelled);
+}

@@ -106,10 +106,11 @@ pub fn analyse(
     plan: &ArchPlan,
     budget: &Budget,
 ) -> Result<ArchOutcome, ArchError> {
-    let mut settings = plan.settings;
-    if let Some(remaining) = budget.remaining() {
-        settings.time_limit_secs = settings.time_limit_secs.min(remaining.as_secs_f64());
-    }
+    // Every programme, cutting-plane round, friction step and rolling stop asks the budget.
+    let settings = LimitSettings {
+        budget: budget.clone(),
+        ..plan.settings.clone()
+    };
     let is_non_associative = plan.friction == Friction::NonAssociative;
     let (problem, mut solution, rolling, friction) = match &plan.programme {
         Programme::Rolling(stops) => {

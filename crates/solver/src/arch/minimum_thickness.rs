@@ -21,7 +21,7 @@ use crate::numerics::brent;
 use crate::outcome::SolverFailure;
 
 /// Settings of the search.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct MinimumThicknessSettings {
     /// Accuracy of the thickness relative to the radius. Defaults to 1e-6.
     pub tolerance: f64,
@@ -106,7 +106,7 @@ struct MarginOfThickness<'a> {
 
 impl MarginOfThickness<'_> {
     fn at(&mut self, thickness: f64) -> Result<Evaluation, Stop> {
-        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+        if self.deadline.is_some_and(|d| Instant::now() >= d) || self.settings.budget.is_spent() {
             return Err(Stop::Solver(SolverFailure::MaxTime));
         }
         let arch = self.arch.with_thickness(thickness).map_err(Stop::Input)?;

@@ -113,6 +113,7 @@ pub fn sweep_live_loads(
         .map(|i| {
             if out_of_time.load(Ordering::Relaxed)
                 || start.elapsed().as_secs_f64() > settings.time_limit_secs
+                || settings.budget.is_spent()
             {
                 out_of_time.store(true, Ordering::Relaxed);
                 return Ok((i, None));
@@ -153,7 +154,7 @@ fn sweep_warm(
         if loads[i].is_empty() {
             continue;
         }
-        if start.elapsed().as_secs_f64() > settings.time_limit_secs {
+        if start.elapsed().as_secs_f64() > settings.time_limit_secs || settings.budget.is_spent() {
             out_of_time = true;
             break;
         }

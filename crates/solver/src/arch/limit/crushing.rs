@@ -133,7 +133,7 @@ fn retrying(
     if reduced && problem.crushing().is_some() && settings.tolerance < 1e-6 {
         let looser = LimitSettings {
             tolerance: (settings.tolerance * 100.0).min(1e-6),
-            ..*settings
+            ..settings.clone()
         };
         return solve(&looser);
     }

@@ -6,6 +6,7 @@ use crate::arch::error::{ArchError, ArchParameter};
 use crate::arch::fill::PassiveForce;
 use crate::arch::geometry::{Assembly, InterfaceKind};
 use crate::arch::mechanism::{Bound, Mechanism, Resultant};
+use crate::budget::Budget;
 use crate::outcome::SolverFailure;
 
 /// Limits on the stress resultants of every interface (absolute forces; `None` = unbounded).
@@ -342,7 +343,7 @@ impl ArchProblem {
 }
 
 /// Settings of the interior-point solves.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct LimitSettings {
     /// Clarabel's gap and feasibility tolerances (relative). Defaults to 1e-10.
     pub tolerance: f64,
@@ -358,6 +359,10 @@ pub struct LimitSettings {
     /// How the non-associative iteration forms each step's normal forces. Defaults to
     /// [`Relaxation::Paper`].
     pub relaxation: Relaxation,
+    /// The whole analysis' budget: every programme stops at its deadline or when it is
+    /// cancelled (at the next interior-point iteration), whatever `time_limit_secs` allows.
+    /// Defaults to unlimited.
+    pub budget: Budget,
 }
 
 /// How the non-associative iteration (see [`super::non_associative`]) forms the normal forces
@@ -392,6 +397,7 @@ impl Default for LimitSettings {
             time_limit_secs: 30.0,
             formulation: Formulation::Chain,
             relaxation: Relaxation::Paper,
+            budget: Budget::unlimited(),
         }
     }
 }

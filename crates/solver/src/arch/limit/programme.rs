@@ -212,7 +212,14 @@ fn run_clarabel_once(
     let clarabel_settings = DefaultSettingsBuilder::default()
         .verbose(false)
         .max_iter(settings.max_iterations)
-        .time_limit(settings.time_limit_secs)
+        .time_limit(
+            settings
+                .budget
+                .remaining()
+                .map_or(settings.time_limit_secs, |r| {
+                    settings.time_limit_secs.min(r.as_secs_f64())
+                }),
+        )
         .tol_gap_abs(tol)
         .tol_gap_rel(tol)
         .tol_feas(tol)
@@ -231,14 +238,21 @@ fn run_clarabel_once(
             }
         }
     };
-    if let Some(abort) = abort {
-        let abort = Arc::clone(abort);
-        solver.set_termination_callback(move |_| abort.load(Ordering::Relaxed));
-    }
+    // Stopped at the next iteration when the twin programme no longer needs it, or when the
+    // analysis' budget is spent (then as at a time limit).
+    let abort = abort.map(Arc::clone);
+    let budget = settings.budget.clone();
+    solver.set_termination_callback(move |_| {
+        abort.as_ref().is_some_and(|a| a.load(Ordering::Relaxed)) || budget.is_spent()
+    });
     solver.solve();
     let solution = solver.solution;
+    let status = match solution.status {
+        SolverStatus::CallbackTerminated if settings.budget.is_spent() => SolverStatus::MaxTime,
+        status => status,
+    };
     Programme {
-        status: solution.status,
+        status,
         x: solution.x,
         z: solution.z,
         iterations: solution.iterations,
