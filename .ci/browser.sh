@@ -51,7 +51,7 @@ expect "load_factor: 22.99688965"
 expect "factor_of_safety: 1.06957"
 expect "morgenstern_price: "
 expect "solver: solved, assembly, 37 stops"
-# Milankovitch's minimum D/R = 0.1075 (N = 200 voussoirs) and the README's critical circle.
+# Milankovitch's minimum D/R = 0.1075 (N = 200 voussoirs) and the critical circle of docs/slopes.md.
 expect "thickness_to_radius: 0.1074"
 expect "search: 871 circles, 0 unsolved"
 expect "factor_of_safety: 1.01457"

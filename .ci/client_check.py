@@ -56,7 +56,7 @@ if isinstance(answer, DeadLoadResponse):
                 (1801, ResultantDto.S, HingeSideDto.EXTRADOS)]
     check("five hinges as the thesis prints them", hinges == expected, hinges)
 
-# Live load near the quarter span: λ = 22.99688965 (README, checked against HiGHS).
+# Live load near the quarter span: λ = 22.99688965 (docs/arches.md, checked against HiGHS).
 answer = live_load.sync(client=client, body=LiveLoadRequest(
     geometry=semicircle(1.5, 100), loads=[LoadDto(block=26, fy=-1.0)]))
 check("live load is typed", isinstance(answer, LiveLoadResponse), answer)

@@ -3,93 +3,50 @@
 //! joint open as it slides (normality on μ(q + s) ∓ t ≥ 0), which real joints do not; the
 //! load factor may then over-estimate (Livesley 1978, §2.7–2.9).
 //!
-//! The iteration, the paper's programmes: start from the normal forces N⁰ of the associative
-//! solution; at step k solve the programme with each friction row replaced by the modified
-//! surface |t| ≤ c + α·μ·N, whose intercept c = (1 − α)·μ·Ñ makes it pass through Coulomb's
-//! line at the normal force Ñ the previous steps left (so the shear is limited almost
-//! independently of the normal force: its flow is sliding with the dilatancy α·μ of 1 % of
-//! Coulomb's, nearly the corrected mechanism of Livesley §2.7), with the paper's α = 0.01
-//! (Ñ = N⁰ for the first step).
+//! The paper's iteration: start from the normal forces N⁰ of the associative solution; at step
+//! k solve the programme with each friction row replaced by the modified surface
+//! |t| ≤ c + α·μ·N, whose intercept c = (1 − α)·μ·Ñ makes it pass through Coulomb's line at the
+//! normal force Ñ the previous steps left (the shear is limited almost independently of the
+//! normal force: its flow is sliding with a dilatancy of α·μ, nearly the corrected mechanism
+//! of Livesley §2.7), with the paper's α = [`SLOPE`] (Ñ = N⁰ for the first step). Ñ for the
+//! next step is the paper's relaxation between the last two steps' normal forces,
+//! Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), β = [`RELAXATION`].
 //!
-//! Ñ for the next step is the paper's relaxation between the last two steps' normal forces,
-//! Ñ = N^(k−2) + β·(N^(k−1) − N^(k−2)), β = 0.6 (model §5.5: its starting point and
-//! relaxation). It converges geometrically, and on some walls not at all: on 108 walls, panels
-//! and arches (`bench/na_walls.py`: two leaves under a cap, 0.5–3 high and 0.3 or 0.5 wide,
-//! μ 0.3–0.9, pushed at the cap's top or mid-height; three leaves; running-bond panels of 3–6
-//! courses of 3–4 bricks pushed on every brick or the top course; arches of 20–40 voussoirs)
-//! it took a median of 27 programmes and did not settle on 18 — every μ = 0.9 wall oscillated
-//! about its fixed point for all 50 steps. Where it stops without settling (its 50 steps, 10
-//! without halving the inconsistency, or a step that does not solve) the Anderson mixing
-//! ([`super::mixing`]) of the last [`MEMORY`] steps' (Ñ, N), with the same β, takes over from
-//! its last state that solved, for up to as many steps again: once a step's active set stops
-//! changing the map Ñ ↦ N is affine and the mixing lands on its fixed point instead of
-//! circling it. On the 108 it settled 17 of the 18 (the μ = 0.9 walls in 3 steps; one panel of
-//! 6 × 4 bricks at μ = 0.8 still not), and where the paper's relaxation settles it is not used.
-//! Run from the first step instead ([`Relaxation::Anderson`], on request), the mixing settled
-//! all but 2 with a median of 10 programmes (1306 in all against 3092), the same λ to 2.2e-7
-//! wherever both settled; by default it is the rescue, so that every answer the paper's
-//! procedure gives is the paper's. The mixing forgets its memory every [`RESTART`] steps that
-//! do not halve the inconsistency (a fit across active sets misleads); a step of it that does
-//! not solve (a mixed Ñ can make the programme degenerate: reduced accuracy) is retried once by
-//! plain relaxation from the last step that solved.
-//!
-//! Without the slope (α = 0, capacities fixed outright) the programmes are degenerate in the
-//! normal forces of the joints at capacity, and the iteration lands on other fixed points: on
-//! nine walls of two leaves under a cap (μ = 0.3, 0.5, 0.7; leaves 1, 2, 3 high) it settled
-//! 8 of 9 against 9 of 9, λ up to 7 % lower on four (0.2256 against 0.2400, for one). With
-//! the slope the fixed point did not depend on the relaxation (β = 1, 0.6 mixed or smoothed:
-//! the same λ to 1e-7 on all nine).
-//!
-//! A fixed point is a collapse state under friction that does not dilate, not necessarily the
-//! lowest one: non-associative collapse loads are not unique (the normal forces of a joint
-//! that slides are statically indeterminate). Two leaves 2 high under a cap, μ = 0.5: the
-//! iteration settles at 0.2400, yet with no force between the leaves the right leaf and the
-//! cap overturn about its toe at 0.2, a state the iteration does not reach.
+//! Where that stops without settling (its [`MAX_STEPS`], [`STALLED_STEPS`] without halving the
+//! inconsistency, or a step that does not solve), the Anderson mixing ([`super::mixing`]) of
+//! the last [`MEMORY`] steps' (Ñ, N), with the same β, takes over from its last state that
+//! solved, for up to as many steps again: once a step's active set stops changing, the map
+//! Ñ ↦ N is affine and the mixing lands on its fixed point instead of circling it. It forgets
+//! its memory every [`RESTART`] steps that do not halve the inconsistency (a fit across active
+//! sets misleads); a mixed step that does not solve is retried once by plain relaxation from
+//! the last step that solved. [`Relaxation::Anderson`] runs the mixing from the first step;
+//! by default it is the rescue, so that every answer the paper's procedure gives is the paper's.
 //!
 //! Settled when the solution's own normal forces carry its shear (|t| ≤ μ·N at every joint, to
 //! 1e-7 of the total weight) and, at every joint at its capacity, equal the Ñ it was built from
-//! (to 1e-7 W; the surface is then Coulomb's there): that state is admissible for the
-//! associative programme too, so its λ is no more than the associative one. Each phase (the
-//! paper's relaxation, then the mixing) stops after [`MAX_STEPS`], or after [`STALLED_STEPS`]
-//! steps that did not halve its smallest inconsistency so far (it wanders or jitters); not
-//! settled after both: say so, with one exception. Where the paper's relaxation stopped and
-//! no step's λ left the associative one (a programme so degenerate that the interior-point
-//! method does not pin its normal forces down: a wall panel sliding at λ = μ on any of its bed
-//! joints), the associative state is itself a fixed point — it carries its shear by its own
-//! normal forces exactly, and it is optimal for the first step's programme, which was built
-//! from those normal forces, since that programme's λ is the same (to [`SAME_FACTOR`]): it
-//! answers, with that step's mechanism.
+//! (to 1e-7 W; the surface is Coulomb's there): that state is admissible for the associative
+//! programme too, so its λ is no more than the associative one. Not settled after both phases:
+//! the answer says so, with one exception: where no step's λ left the associative one (a
+//! programme so degenerate that the interior-point method does not pin its normal forces down,
+//! as a wall panel sliding on its bed joints at λ = μ), the associative state is itself a fixed
+//! point — it carries its shear by its own normal forces and is optimal for the first step's
+//! programme, whose λ is the same (to [`SAME_FACTOR`]) — and it answers with that step's
+//! mechanism.
+//!
+//! A fixed point is a collapse state under friction that does not dilate, not necessarily the
+//! lowest one: non-associative collapse loads are not unique (the normal forces of a joint that
+//! slides are statically indeterminate).
 //!
 //! A live-load step is the live-load programme alone: the dead load was checked once, by the
-//! associative solve, and a step's capacities are those of a collapse state, not of the
-//! structure under its dead load alone (checked against them, the dead load of a two-ring arch
-//! failed at the second step). A state that settles below zero live load says the dead load is
-//! not carried without dilatancy.
+//! associative solve, and a step's capacities are those of a collapse state. A state that
+//! settles below zero live load says the dead load is not carried without dilatancy. Where the
+//! associative programme finds no collapse up to its cap on λ, the iteration starts from the
+//! state at the cap and its steps are solved to the cap too; a step at the cap whose normal
+//! forces carry its shear (to 1e-7 of its largest normal force) settles it: no collapse without
+//! dilatancy either.
 //!
-//! Two-ring arches with ring friction do not settle (ring μ 0.6 and 0.8, 2 × 100 voussoirs):
-//! their programmes' optimal faces are unbounded — ring normal forces of 6e5 against a weight
-//! of 47 in the interior-point state, the first blocks of the two rings squeezed together at
-//! each springing against the support's shear — and through the slope α a step gains shear
-//! from that self-stress. Along the arch the intercept c acts as cohesion: the ring contacts
-//! next to the hinges open (N → 0) yet keep their shear c, the next step moves the opening to
-//! their neighbours, and λ enters a cycle (period 18, λ 10.41–11.70, on 2 × 20 voussoirs with
-//! ring μ 3 and 300 steps allowed). Starting from the least-normal-force associative optimum,
-//! taking each step's optimum closest to Ñ, α = 0, or a cost on the normal forces in every
-//! programme were tried (2026-11-24), and the Anderson mixing of Ñ, or relieving each step's
-//! squeeze (its least-normal-force state: steps with no admissible state follow): none
-//! settled. The answer says `not settled`. Under the dead load alone (2 × 40, ring μ 0.6) the
-//! steps' dead-load factor falls by about 0.85 a step towards 0 (each ring alone is too thin to
-//! stand, and the ring contacts lose the normal force their shear needs) until a step no longer
-//! solves; at ring μ 0.8 and 1.5 it settles at 1.
-//!
-//! Where the associative programme finds no collapse up to its cap on λ (a load that goes into
-//! a springing inside the friction cone), the iteration starts from the state at the cap and
-//! its steps are solved to the cap too; a step at the cap whose normal forces carry its shear
-//! (to 1e-7 of its largest normal force, the forces there being far beyond the weight) settles
-//! it: no collapse without dilatancy either. A step below the cap continues as any other.
-//!
-//! A single step cannot lower λ below the associative answer when started from its normal
-//! forces (the associative optimum stays feasible), so the iteration's first λ is ≥ it.
+//! What the iteration settles, and where it does not (walls, panels, arches; two-ring arches
+//! with ring friction), is measured in docs/accuracy.md ("Friction without dilatancy").
 
 use super::mixing::{relaxed, Mixing};
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus, Relaxation};
