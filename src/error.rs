@@ -222,7 +222,8 @@ impl From<JsonRejection> for ApiError {
 }
 
 /// The field path serde reports in a data error ("…target type: slope.foo: unknown field…").
-/// A missing field is named by its full path ("…target type: slope: missing field `height`…").
+/// A missing field, or a key given twice, is named by its full path ("…target type: slope:
+/// missing field `height`…").
 /// Paths a geometry object reports inside itself follow its own ("geometry: blocks[1].corners:
 /// …"): they are joined.
 fn data_error_field(detail: &str) -> Option<String> {
@@ -231,6 +232,7 @@ fn data_error_field(detail: &str) -> Option<String> {
     let path = (!segments.is_empty()).then(|| segments.join("."));
     let missing = message
         .strip_prefix("missing field `")
+        .or_else(|| message.strip_prefix(crate::json::DUPLICATE_KEY))
         .and_then(|name| name.split_once('`'))
         .map(|(name, _)| name);
     match (path, missing) {
@@ -321,8 +323,9 @@ where
     type Rejection = ApiError;
 
     async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
-        let axum::Json(value) =
-            axum::Json::<serde_json::Value>::from_request(request, state).await?;
+        // Read with every object's keys checked: a key given twice is 422 naming it.
+        let axum::Json(crate::json::UniqueKeys(value)) =
+            axum::Json::<crate::json::UniqueKeys>::from_request(request, state).await?;
         if !value.is_object() {
             return Err(ApiError::BadRequest {
                 status: StatusCode::UNPROCESSABLE_ENTITY,

@@ -22,6 +22,7 @@ pub mod error;
 pub mod fields;
 pub mod headers;
 pub mod health;
+pub mod json;
 pub mod limits;
 pub mod metrics;
 pub mod nullable;

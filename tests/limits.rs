@@ -298,3 +298,98 @@ async fn the_server_refuses_what_the_schema_excludes_and_names_the_field() {
     }
     assert!(checked >= 30, "only {checked} boundary values checked");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn tiny_and_huge_polyline_steps_are_422_naming_the_point_never_500() {
+    // Regression (a 500 from a panic in the solver): an x-step of 5e-324 in any polyline of a
+    // section or in a surface, on the JSON route and the drawing's.
+    let server = Server::start().await;
+    let base = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+                   {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}],
+        "bedrock": [[-20, -12], [40, -12]],
+        "piezometric_line": [[-20, 1], [10, 3], [40, 6]]},
+        "circle": {"centre": [12, 28], "radius": 26}, "slices": 20, "include": []});
+    let lines = [
+        ("/section/ground", "section.ground"),
+        ("/section/layers/1/top", "section.layers[1].top"),
+        ("/section/bedrock", "section.bedrock"),
+        ("/section/piezometric_line", "section.piezometric_line"),
+    ];
+    let mut checked = 0;
+    for step in [5e-324, 1e-300, 1e-15] {
+        for (pointer, field) in lines {
+            for route in ["/slope/spencer", "/slope/spencer/svg"] {
+                let mut body = base.clone();
+                let first = body.pointer(pointer).unwrap()[0].clone();
+                let (x, y) = (first[0].as_f64().unwrap(), first[1].as_f64().unwrap());
+                let points = body.pointer_mut(pointer).unwrap().as_array_mut().unwrap();
+                points.insert(1, json!([x + step, y + 1.0]));
+                let (status, _, answer) = server.post(route, &body).await;
+                assert_eq!(status, 422, "{field} step {step} on {route}: {answer}");
+                assert_eq!(answer["field"], format!("{field}[1]"), "{answer}");
+                checked += 1;
+            }
+        }
+        // A polyline surface with the same fault.
+        let mut body = base.clone();
+        body.as_object_mut().unwrap().remove("circle");
+        body["surface"] = json!([[5, 12], [5.0 + step, 8], [30, 4], [40, 12]]);
+        let (status, _, answer) = server.post("/slope/spencer", &body).await;
+        assert_eq!(status, 422, "surface step {step}: {answer}");
+        assert_eq!(answer["field"], "surface[1]", "{answer}");
+        checked += 1;
+    }
+    // Huge coordinates and steps: 422 beyond 1e9, an answer (200) within.
+    for x in [1e9, 1.0000001e9, 1e300] {
+        let mut body = base.clone();
+        body["section"]["ground"][3] = json!([x, 10]);
+        let (status, _, answer) = server.post("/slope/spencer", &body).await;
+        assert!(
+            status == 200 || status == 422,
+            "ground to {x}: {status} {answer}"
+        );
+        assert_eq!(status == 422, x > 1e9, "ground to {x}: {answer}");
+        checked += 1;
+    }
+    assert_eq!(checked, 3 * (4 * 2 + 1) + 3);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_key_given_twice_is_422_naming_it_not_the_last_value_winning() {
+    // Regression: `"slices": 100, "slices": 5` was solved with 5 slices.
+    let server = Server::start().await;
+    let cases = [
+        (
+            "/slope/spencer",
+            r#"{"slope": {"height": 30.48, "length": 60.96}, "circle": {"x": 9.63168, "y": 63.76416},
+                "slices": 100, "slices": 5,
+                "soil": {"unit_weight": 10, "cohesion": 6.096, "friction_angle_deg": 40}}"#,
+            "slices",
+        ),
+        (
+            "/arch/dead-load",
+            r#"{"geometry": {"kind": "circular", "radius": 10, "thickness": 1.0747,
+                "voussoirs": 1800, "voussoirs": 10}}"#,
+            "geometry.voussoirs",
+        ),
+        (
+            "/arch/live-load",
+            r#"{"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 20},
+                "loads": [{"block": 6, "fy": -1, "fy": -100}]}"#,
+            "loads[0].fy",
+        ),
+    ];
+    for (route, body, field) in cases {
+        let (status, _, answer) = server.post_raw(route, "application/json", body).await;
+        assert_eq!(status, 422, "{route}: {answer}");
+        assert_eq!(answer["field"], field, "{route}: {answer}");
+        assert!(
+            answer["detail"]
+                .as_str()
+                .unwrap()
+                .contains("given more than once"),
+            "{answer}"
+        );
+    }
+}

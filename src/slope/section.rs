@@ -214,11 +214,13 @@ pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiErro
             ),
         )
     })?;
-    Polyline::new(points.iter().map(|p| (p[0], p[1])).collect()).map_err(|e| {
+    Polyline::from_input(points.iter().map(|p| (p[0], p[1])).collect()).map_err(|e| {
         use thrustline_solver::slope::section::PolylineError;
         let at = match e {
             PolylineError::Empty => field.to_owned(),
-            PolylineError::NotFinite { index } | PolylineError::NotIncreasing { index } => {
+            PolylineError::NotFinite { index }
+            | PolylineError::NotIncreasing { index }
+            | PolylineError::TooClose { index } => {
                 format!("{field}[{index}]")
             }
         };

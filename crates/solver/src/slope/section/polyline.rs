@@ -24,6 +24,12 @@ pub enum PolylineError {
         /// 0-based index of the point.
         index: usize,
     },
+    /// Point `index` lies too close to the one before it for its slope to be computed
+    /// (closer than [`MIN_STEP`] of the line's extent).
+    TooClose {
+        /// 0-based index of the point.
+        index: usize,
+    },
 }
 
 impl std::fmt::Display for PolylineError {
@@ -33,6 +39,12 @@ impl std::fmt::Display for PolylineError {
             Self::NotFinite { index } => {
                 write!(f, "point {index} must be finite, |x|, |y| ≤ 1e9")
             }
+            Self::TooClose { index } => write!(
+                f,
+                "point {index} lies closer than 1e-9 of the line's extent to point {} in x: \
+                 merge the two points or move them apart",
+                index.saturating_sub(1)
+            ),
             Self::NotIncreasing { index } => write!(
                 f,
                 "point {index} must lie to the right of point {}: x strictly increasing",
@@ -44,6 +56,10 @@ impl std::fmt::Display for PolylineError {
 
 /// Largest coordinate accepted, as elsewhere in the service.
 const MAX_COORDINATE: f64 = 1e9;
+
+/// Least x-step between consecutive points, relative to the line's extent (at least 1): a step
+/// of 5e-324 makes a slope of 1e300 or an infinite one, and every height along it meaningless.
+pub const MIN_STEP: f64 = 1e-9;
 
 impl Polyline {
     /// The polyline through `points`, which must run left to right.
@@ -63,6 +79,25 @@ impl Polyline {
             }
         }
         Ok(Self::through(points))
+    }
+
+    /// The polyline through `points` given as input: as [`Polyline::new`], and no x-step below
+    /// [`MIN_STEP`] of the line's extent (a step of 5e-324 makes every height along it
+    /// meaningless). Lines the solver builds itself (cut surfaces, whose slice sides may lie
+    /// closer) are made with [`Polyline::new`].
+    pub fn from_input(points: Vec<(f64, f64)>) -> Result<Self, PolylineError> {
+        let extent = points
+            .iter()
+            .fold(1.0f64, |m, p| m.max(p.0.abs()).max(p.1.abs()));
+        let close = (1..points.len()).find(|&i| {
+            let step = points[i].0 - points[i - 1].0;
+            step > 0.0 && step < MIN_STEP * extent
+        });
+        let line = Self::new(points)?;
+        match close {
+            Some(index) => Err(PolylineError::TooClose { index }),
+            None => Ok(line),
+        }
     }
 
     /// The polyline through points known to run left to right.
@@ -88,14 +123,15 @@ impl Polyline {
     pub fn y_at(&self, x: f64) -> f64 {
         let p = &self.points;
         let last = p.len() - 1;
-        if x <= p[0].0 {
+        if x <= p[0].0 || last == 0 {
             return p[0].1;
         }
         if x >= p[last].0 {
             return p[last].1;
         }
-        // The segment [p[i-1], p[i]] with p[i-1].x < x ≤ p[i].x.
-        let i = p.partition_point(|q| q.0 < x);
+        // The segment [p[i-1], p[i]] with p[i-1].x < x ≤ p[i].x (an x that is NaN finds none:
+        // the first segment, whose height is then NaN too, never an index out of bounds).
+        let i = p.partition_point(|q| q.0 < x).max(1);
         let (x0, y0) = p[i - 1];
         y0 + self.slopes[i - 1] * (x - x0)
     }
@@ -242,5 +278,29 @@ mod tests {
         let xs: Vec<f64> = crossings.iter().map(|c| c.0).collect();
         assert!(xs.iter().any(|x| x.abs() < 1e-12));
         assert!(xs.iter().any(|x| (x - 5.0).abs() < 1e-12));
+    }
+
+    #[test]
+    fn a_step_too_small_for_a_slope_is_refused_as_input_and_never_panics() {
+        // Regression (a 500): an x-step of 5e-324 made an infinite slope, a NaN height, and an
+        // index out of bounds in y_at.
+        for step in [5e-324, 1e-300, 1e-12] {
+            let points = vec![(0.0, 0.0), (step, 1.0), (20.0, 10.0)];
+            assert_eq!(
+                Polyline::from_input(points.clone()),
+                Err(PolylineError::TooClose { index: 1 }),
+                "step {step}"
+            );
+            // Built by the solver itself it stands, and any height along it is answered.
+            let line = Polyline::new(points).unwrap();
+            for x in [-1.0, 0.0, step, 1.0, f64::NAN, 25.0] {
+                let _ = line.y_at(x);
+            }
+        }
+        // A step of 1e-7 in a line 20 long is above 1e-9 of its extent (2e-8): accepted.
+        assert!(Polyline::from_input(vec![(0.0, 0.0), (1e-7, 0.0), (20.0, 10.0)]).is_ok());
+        // One point: every height is its height, a NaN x included.
+        let point = Polyline::new(vec![(3.0, 4.0)]).unwrap();
+        assert_eq!(point.y_at(f64::NAN), 4.0);
     }
 }
