@@ -16,7 +16,7 @@ Environment (read by `serve`):
   THRUSTLINE_MAX_RUNNING          solves running at once (default: the CPU count)
   THRUSTLINE_MAX_QUEUED           solves waiting for a worker before 503 (default 64)
   THRUSTLINE_BODY_LIMIT           largest request body in bytes (default 4194304)
-  THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a solve in seconds, up to 86400 (default 30)
+  THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a whole solve in seconds, up to 86400 (default 30)
   THRUSTLINE_DRAIN_SECS           after SIGTERM, time open connections get, 0..3600 (default 10)
   THRUSTLINE_HEADER_TIMEOUT_SECS  time to send a request head (and idle keep-alive), default 10
   THRUSTLINE_BODY_TIMEOUT_SECS    time to send a request body, 0.1..3600 (default 30)
@@ -31,6 +31,11 @@ fn main() -> ExitCode {
     match args.first().map(String::as_str) {
         Some("openapi") => {
             print!("{}", thrustline::openapi::openapi_json());
+            ExitCode::SUCCESS
+        }
+        // `serve --help` is a question, not a mistake.
+        Some("serve") if args[1..].iter().any(|a| a == "-h" || a == "--help") => {
+            println!("{USAGE}");
             ExitCode::SUCCESS
         }
         Some("serve") => match parse_serve(&args[1..]) {

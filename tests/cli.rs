@@ -25,6 +25,21 @@ fn version_is_the_package_version() {
 }
 
 #[test]
+fn serve_help_answers_the_help_and_succeeds() {
+    // Regression: `serve --help` exited 2 as an unknown argument.
+    let output = Command::new(env!("CARGO_BIN_EXE_thrustline"))
+        .args(["serve", "--help"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let help = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        help.contains("thrustline serve [--addr HOST:PORT]"),
+        "{help}"
+    );
+}
+
+#[test]
 fn help_lists_every_environment_setting_the_service_reads() {
     let (ok, help) = run("--help");
     assert!(ok);
