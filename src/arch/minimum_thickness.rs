@@ -12,15 +12,17 @@ use thrustline_solver::arch::{
 use utoipa::ToSchema;
 
 use super::geometry::CircularGeometryDto;
-use super::input::{circular_arch, material, ring_material};
+use super::input::{circular_arch, material, ring_material, Material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{LENGTH, THICKNESS_TOLERANCE_RANGE};
+use crate::stop::Work;
 use crate::table::{csv, Answer, CsvTable};
 use crate::validation::within;
 use crate::AppState;
+use thrustline_solver::budget::Stop;
 
 arch_request! {
     /// The minimum-thickness question for a circular arch.
@@ -133,6 +135,31 @@ pub async fn minimum_thickness(
     CsvTable(table): CsvTable<MinimumThicknessTableQuery>,
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
 ) -> Result<Answer<MinimumThicknessResponse>, ApiError> {
+    let planned = plan(&request)?;
+    let given = planned.given;
+    let (arch, result) = solve(&state, planned).await?;
+    let answer = response(&arch, &result, given);
+    if let Some(table) = table {
+        return match table {
+            MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
+            MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
+        }
+        .map(Answer::Csv);
+    }
+    Ok(Answer::Json(answer))
+}
+
+/// A validated minimum-thickness request: the arch whose shape is searched, its material, the
+/// search's settings and the thickness given (for the geometric factor of safety).
+struct Planned {
+    arch: CircularArch,
+    material: Material,
+    settings: MinimumThicknessSettings,
+    given: Option<f64>,
+}
+
+/// Validates the request once: one ring and one span, the material, the tolerance.
+fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
     let g = &request.geometry;
     let radius = within("geometry.radius", g.radius, LENGTH)?;
     for (field, many) in [
@@ -168,17 +195,31 @@ pub async fn minimum_thickness(
     }
     let settings = MinimumThicknessSettings {
         tolerance: within("tolerance", request.tolerance, THICKNESS_TOLERANCE_RANGE)?,
-        limit: LimitSettings {
-            time_limit_secs: state.solve_time_limit_secs(),
-            ..LimitSettings::default()
-        },
-        time_limit: Some(state.solve_time_limit),
         ..MinimumThicknessSettings::default()
     };
+    Ok(Planned {
+        arch,
+        material,
+        settings,
+        given,
+    })
+}
+
+/// The search on the pool within the request's budget (every dead-load programme asks it); a
+/// search stopped by it is the outcome rule's 422 naming `tolerance` (503 beside other solves).
+async fn solve(
+    state: &AppState,
+    planned: Planned,
+) -> Result<(CircularArch, MinimumThickness), ApiError> {
+    let Planned {
+        arch,
+        material,
+        settings,
+        ..
+    } = planned;
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, move |budget| {
-            // Every dead-load programme of the search asks the request's budget.
             let settings = MinimumThicknessSettings {
                 limit: LimitSettings {
                     budget: budget.clone(),
@@ -196,32 +237,22 @@ pub async fn minimum_thickness(
             (arch, result)
         })
         .await?;
-    let (elapsed, shared) = (ran.elapsed, ran.shared);
     let (arch, result) = ran.value;
     let result = result?;
     tracing::info!(
         evaluations = result.evaluations,
-        solve_ms = elapsed.as_secs_f64() * 1e3,
+        solve_ms = ran.elapsed.as_secs_f64() * 1e3,
         "minimum thickness solved"
     );
     if result.outcome == MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime) {
-        let error = ApiError::OverTimeLimit {
-            field: "tolerance".to_owned(),
-            seconds: state.solve_time_limit_secs(),
+        let work = Work {
+            field: "tolerance",
             advice: "use a larger tolerance or fewer voussoirs",
-            busy: None,
+            no_candidate: "",
         };
-        return Err(state.pool.judge(error, shared));
+        return Err(state.refuse(Stop::TimeLimit, work, ran.shared));
     }
-    let answer = response(&arch, &result, given);
-    if let Some(table) = table {
-        return match table {
-            MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
-            MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
-        }
-        .map(Answer::Csv);
-    }
-    Ok(Answer::Json(answer))
+    Ok((arch, result))
 }
 
 /// The answer, built whole for each outcome.
