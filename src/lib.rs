@@ -9,7 +9,7 @@
 //!   clients send) → `input` (the one validation, into the solver's typed inputs) → the solve on
 //!   the [`pool`] → `response` (built whole) and `drawing`;
 //! - [`limits`] (every size and magnitude limit), [`fields`] (solver parameter → JSON field),
-//!   [`error`] (problem+json; the outcome rule of the README: a solver stopped at the time limit
+//!   [`error`] (problem+json; the outcome rule of docs/api.md: a solver stopped at the time limit
 //!   is 422 naming the field that sets the work when it ran alone, 503 when other solves ran
 //!   beside it; capacity and the pool deadline are 503);
 //! - [`app`] builds the router (used by `main` and by the tests with `oneshot`);

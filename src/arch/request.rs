@@ -265,7 +265,7 @@ macro_rules! limit_request {
                 pub formulation: FormulationDto,
                 /// Interior-point tolerance (relative gap and feasibility), 1e-12 ≤ tol ≤ 1e-4.
                 /// Defaults to 1e-10, which gives λ to about 1e-11 relative; 1e-6 is faster and
-                /// still right to 1e-7 (see the README's accuracy tables).
+                /// still right to 1e-7 (see the accuracy tables of docs/accuracy.md).
                 #[serde(default = "default_solver_tolerance", deserialize_with = "crate::nullable::solver_tolerance")]
                 #[schema(nullable)]
                 #[schema(default = 1e-10)]

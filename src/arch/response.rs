@@ -155,7 +155,7 @@ pub struct ArchOutcomeDto {
     /// The line of thrust of the admissible state at the load factor (empty when there is none).
     /// On the general formulation (assemblies, rings, passive restraint), where the
     /// interior-point state carries a self-stress (a contact above 10 times all the loads), the
-    /// state of least normal force among those the answer admits (README, Assemblies).
+    /// state of least normal force among those the answer admits (docs/arches.md, Assemblies).
     pub thrust_line: Vec<InterfaceThrustPointDto>,
     /// The smallest distance from the line of thrust to the nearer face of its joint, as a
     /// fraction of the joint's length (½ − |e/t|, minimised over the joints): 0 where it

@@ -1,4 +1,4 @@
-//! Speed against accuracy, measured: the tables of the README's "Accuracy against time"
+//! Speed against accuracy, measured: the tables of docs/accuracy.md
 //! section. Run with `cargo bench -p thrustline-solver --bench tables` (release build); each
 //! time is the median of repeated runs on one thread.
 #![allow(clippy::unwrap_used)]

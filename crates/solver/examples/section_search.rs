@@ -1,4 +1,4 @@
-//! The README's 3-layer section search (50 × 50 centres × 10 radii, 50 slices) timed on the
+//! The 3-layer section search of docs/performance.md (50 × 50 centres × 10 radii, 50 slices) timed on the
 //! solver alone, for profiling: `cargo run --release -p thrustline-solver --example
 //! section_search [repeats]`.
 #![allow(clippy::unwrap_used)]

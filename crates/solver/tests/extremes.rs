@@ -1,5 +1,5 @@
 //! Numerical stability at the extremes of every input (issue 6): each either gives the right
-//! answer or an honest status. The README's "Extremes" list names these tests.
+//! answer or an honest status. The "Extremes" list of docs/accuracy.md names these tests.
 // Fixtures: a failed construction should fail the test loudly.
 #![allow(clippy::unwrap_used)]
 

@@ -1,6 +1,7 @@
 //! F independent of the number of slices: the slices are doubled from the requested count until
-//! F changes by less than a relative tolerance (the accuracy control of the service; the README's
-//! F-against-N table shows the error falling as 1/N², so each doubling cuts it about fourfold).
+//! F changes by less than a relative tolerance (the accuracy control of the service; the
+//! F-against-N table of docs/accuracy.md shows the error falling as 1/N², so each doubling cuts
+//! it about fourfold).
 
 use std::num::NonZeroUsize;
 

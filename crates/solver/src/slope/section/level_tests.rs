@@ -65,7 +65,7 @@ fn levels_read_from_the_table_are_the_lines_heights() {
     assert!(levels.values()[2].is_nan());
 }
 
-/// The 3-layer section with a water table (the README's search), and the F of one circle on
+/// The 3-layer section with a water table (the search of docs/performance.md), and the F of one circle on
 /// it, its levels read from `section` as given.
 fn layered_factor(section: Section, slices: usize) -> f64 {
     let problem = SectionProblem::new(
