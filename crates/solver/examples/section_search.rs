@@ -1,6 +1,6 @@
-//! The 3-layer section search of docs/performance.md (50 × 50 centres × 10 radii, 50 slices) timed on the
-//! solver alone, for profiling: `cargo run --release -p thrustline-solver --example
-//! section_search [repeats]`.
+//! The 3-layer section search of docs/performance.md (50 × 50 centres × 10 radii, 50 slices)
+//! timed on the solver alone, for profiling: `cargo run --release -p thrustline-solver
+//! --example section_search [repeats]`.
 #![allow(clippy::unwrap_used)]
 
 use std::num::NonZeroUsize;
