@@ -11,7 +11,7 @@
 
 use super::contacts::CONTACT_TOLERANCE;
 use super::error::{ArchError, ArchParameter};
-use super::geometry::{Assembly, CircularArch, InterfaceKind};
+use super::geometry::{Assembly, CircularArch, Interface, InterfaceKind};
 
 type Point = (f64, f64);
 
@@ -116,6 +116,41 @@ fn abutment(intrados: Point, extrados: Point, away: Point, depth: f64) -> Vec<Po
         (extrados.0 + depth * away.0, extrados.1 + depth * away.1),
         (intrados.0 + depth * away.0, intrados.1 + depth * away.1),
     ]
+}
+
+/// A joint along a radius of its span (between voussoirs, at a springing) runs from its
+/// intrados end (nearer the span's centre) to its extrados end, and its angle is its polar
+/// angle about that centre, as on a chain (model §1.3): contacts are found in either direction,
+/// and a hinge's face and angle are read from this orientation. Other contacts (between rings,
+/// under piers) keep theirs.
+fn orient_radially(interface: &mut Interface, centres: &[Point], radius: f64) {
+    let middle = (
+        0.5 * (interface.intrados.0 + interface.extrados.0),
+        0.5 * (interface.intrados.1 + interface.extrados.1),
+    );
+    let away = |c: &Point| ((middle.0 - c.0).hypot(middle.1 - c.1) - radius).abs();
+    let Some(centre) = centres.iter().min_by(|a, b| away(a).total_cmp(&away(b))) else {
+        return;
+    };
+    let (dx, dy) = (middle.0 - centre.0, middle.1 - centre.1);
+    let distance = dx.hypot(dy);
+    if distance == 0.0 {
+        return;
+    }
+    let along = (interface.tangent.0 * dx + interface.tangent.1 * dy) / distance;
+    // Radial to 1e-9 (a joint of the generator lies on its radius up to rounding).
+    if along.abs() < 1.0 - 1e-9 {
+        return;
+    }
+    if along < 0.0 {
+        std::mem::swap(&mut interface.intrados, &mut interface.extrados);
+        interface.tangent = (-interface.tangent.0, -interface.tangent.1);
+    }
+    let mut angle_deg = interface.tangent.1.atan2(interface.tangent.0).to_degrees();
+    if angle_deg <= -90.0 {
+        angle_deg += 360.0;
+    }
+    interface.angle_deg = angle_deg;
 }
 
 /// The ranges of a bridge: 1 to 16 rings, 1 to 20 spans, piers wide enough that the springings
@@ -240,6 +275,9 @@ pub fn bridge(
         ]);
     }
     let mut assembly = Assembly::from_polygons(&polygons, &supports)?;
+    let centres: Vec<Point> = (0..piers.spans)
+        .map(|span| (span as f64 * pitch, 0.0))
+        .collect();
     for interface in &mut assembly.interfaces {
         if let (Some(x), Some(y)) = (interface.lower, interface.upper) {
             if let (Some(p), Some(q)) = (ring_of[x], ring_of[y]) {
@@ -248,6 +286,7 @@ pub fn bridge(
                 }
             }
         }
+        orient_radially(interface, &centres, arch.radius());
     }
     Ok(Bridge {
         assembly,
