@@ -172,7 +172,7 @@ async fn a_thin_seam_is_found() {
         .as_array()
         .unwrap()
         .iter()
-        .filter(|s| s["layer"] == 2)
+        .filter(|s| s["layer"] == 3) // section.layers[2], numbered from 1
         .count();
     assert!(seam > 25, "{seam} of 50 slices in the seam");
 }

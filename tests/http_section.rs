@@ -443,3 +443,42 @@ async fn a_noncircular_search_follows_a_weak_layer() {
         .await;
     assert_problem(status, &content_type, &answer, 422, "search.vertices");
 }
+
+#[tokio::test]
+async fn slice_layers_count_from_one_like_every_other_index() {
+    // Regression: `slices[].layer` counted from 0 where slices, blocks and interfaces count
+    // from 1. Two layers, the lower from y = -3 down: slices whose base middle lies below -3
+    // are in layer 2, the others in layer 1; the simple slope's are all in layer 1.
+    let server = Server::start().await;
+    let body = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+                   {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}]},
+        "circle": {"centre": [12, 28], "radius": 34}, "slices": 40, "include": ["slices"]});
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let slices = answer["slices"].as_array().unwrap();
+    let mut seen = [false; 2];
+    for slice in slices {
+        let (left, right) = (
+            slice["x_left"].as_f64().unwrap(),
+            slice["x_right"].as_f64().unwrap(),
+        );
+        let middle = 0.5 * (left + right);
+        // The base middle's depth: the circle below the middle of the slice.
+        let base = 28.0 - (34.0f64.powi(2) - (middle - 12.0).powi(2)).sqrt();
+        let layer = slice["layer"].as_u64().unwrap();
+        let expected = if base < -3.0 { 2 } else { 1 };
+        assert_eq!(layer, expected, "{slice}");
+        seen[(layer - 1) as usize] = true;
+    }
+    assert!(seen[0] && seen[1], "both layers cut: {seen:?}");
+    let simple = json!({"slope": {"height": 30.48, "length": 60.96},
+        "circle": {"x": 9.63168, "y": 63.76416}, "slices": 10, "include": ["slices"],
+        "soil": {"unit_weight": 10, "cohesion": 6.096, "friction_angle_deg": 40}});
+    let (_, _, answer) = server.post("/slope/spencer", &simple).await;
+    assert!(answer["slices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|s| s["layer"] == 1));
+}

@@ -57,7 +57,8 @@ pub struct SliceDto {
     pub x_left: f64,
     /// x of the slice's right side.
     pub x_right: f64,
-    /// The soil at the base: index of the section's layer (0-based; 0 for the simple slope).
+    /// The soil at the base: the section's layer, numbered from 1 from the top down as the
+    /// drawing's key names them (`section.layers[layer − 1]`; 1 for the simple slope).
     pub layer: usize,
     /// Inclination α of the base chord in degrees, positive where it rises towards the crest.
     pub base_inclination_deg: f64,
@@ -384,7 +385,7 @@ fn slice_dtos(
                 slice: i + 1,
                 x_left: a.min(b),
                 x_right: a.max(b),
-                layer: s.layer,
+                layer: s.layer + 1,
                 base_inclination_deg: s.base_inclination_rad().to_degrees(),
                 base_length: s.base_length,
                 height: s.height_middle,
