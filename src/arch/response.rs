@@ -115,7 +115,8 @@ pub struct SolverDto {
     pub iterations: u32,
     /// Linear programmes solved.
     pub programmes: usize,
-    /// Wall time of the solve in milliseconds.
+    /// Wall time of the whole solve in milliseconds: every programme, cutting-plane round,
+    /// friction step and rolling stop.
     pub time_ms: f64,
     /// The formulation used: chain or assembly.
     pub formulation: FormulationDto,

@@ -85,7 +85,8 @@ pub enum ArchStatus {
 pub struct ArchOutcome {
     /// The problem answered: the plan's, or a rolling load's critical stop's.
     pub problem: ArchProblem,
-    /// Its solution (for [`Friction::NonAssociative`], the iteration's).
+    /// Its solution (for [`Friction::NonAssociative`], the iteration's); its `solve_time_secs`
+    /// is the wall time of the whole analysis.
     pub solution: LimitSolution,
     /// How the answer stands.
     pub status: ArchStatus,
@@ -106,6 +107,7 @@ pub fn analyse(
     plan: &ArchPlan,
     budget: &Budget,
 ) -> Result<ArchOutcome, ArchError> {
+    let start = Instant::now();
     // Every programme, cutting-plane round, friction step and rolling stop asks the budget.
     let settings = LimitSettings {
         budget: budget.clone(),
@@ -157,6 +159,8 @@ pub fn analyse(
         _ => Stop::Finished,
     };
     let thrust_line = thrust_line(problem.assembly(), &solution.resultants);
+    // The answer's time is the whole analysis': every programme, round, step and stop.
+    solution.solve_time_secs = start.elapsed().as_secs_f64();
     Ok(ArchOutcome {
         problem,
         solution,
