@@ -12,6 +12,7 @@ use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
 
+use super::error::SlopeError;
 use super::geometry::{Embankment, SlipCircle};
 use crate::budget::Budget;
 use crate::numerics::{nelder_mead, Minimum};
@@ -97,6 +98,20 @@ pub struct SearchProblem {
     pub lower_end_factor: f64,
     /// When set, F_e is searched as well in the refinement, within [0, this].
     pub lower_end_factor_max: Option<f64>,
+}
+
+impl SearchProblem {
+    /// The problem of one circle of the search (no external loads: the slices move).
+    pub fn at(&self, circle: SlipCircle) -> Result<SlopeProblem, SlopeError> {
+        SlopeProblem::new(
+            self.embankment,
+            circle,
+            self.slices,
+            self.soil,
+            self.seismic,
+            Vec::new(),
+        )
+    }
 }
 
 /// Settings of the search.
@@ -196,15 +211,7 @@ fn outcome(
     circle: SlipCircle,
     settings: &SpencerSettings,
 ) -> Result<f64, Option<Option<f64>>> {
-    let slope = SlopeProblem::new(
-        problem.embankment,
-        circle,
-        problem.slices,
-        problem.soil,
-        problem.seismic,
-        Vec::new(),
-    )
-    .map_err(|_| None::<Option<f64>>)?;
+    let slope = problem.at(circle).map_err(|_| None::<Option<f64>>)?;
     match spencer_factor_outcome(&slope.model(), settings) {
         FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
         FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),

@@ -12,7 +12,7 @@ use crate::slope::search::{
 use crate::slope::section::noncircular::search_noncircular;
 use crate::slope::section::search::{search_circles, CircleSearchSettings};
 use crate::slope::section::{Polyline, SectionProblem, SlipShape};
-use crate::slope::spencer::{SlopeProblem, SpencerSettings};
+use crate::slope::spencer::SpencerSettings;
 use crate::slope::{SlopeError, SlopeParameter};
 
 /// With automatic search bounds, circles beyond this many times the embankment's larger
@@ -63,14 +63,7 @@ pub(super) fn simple(
         -problem.lower_end_factor * problem.embankment.height() + 0.0,
         0.0,
     );
-    let answered = SlopeProblem::new(
-        problem.embankment,
-        circle,
-        problem.slices,
-        problem.soil,
-        problem.seismic,
-        Vec::new(),
-    )?;
+    let answered = problem.at(circle)?;
     let report = SearchReport::of_simple(&found, hard_bounds, grid_lower_end);
     Ok(Ok((Analysed::Simple(answered), report)))
 }
