@@ -23,7 +23,7 @@ use super::request::{
 use crate::error::ApiError;
 use crate::limits::{
     BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, FRICTION, LENGTH, LOADS,
-    LOWER_LIMIT, POSITIVE_STRESS, SOLVER_TOLERANCE_RANGE, UNIT_WEIGHT, UPPER_LIMIT,
+    LOWER_LIMIT, POSITIVE_STRESS, SOLVER_TOLERANCE, UNIT_WEIGHT, UPPER_LIMIT,
 };
 use crate::validation::{count, count_within, finite, within};
 
@@ -197,7 +197,7 @@ fn input(
         tolerance: within(
             "solver_tolerance",
             fields.solver_tolerance,
-            SOLVER_TOLERANCE_RANGE,
+            SOLVER_TOLERANCE,
         )?,
         relaxation: fields.friction_relaxation.solver(),
         ..LimitSettings::default()

@@ -17,7 +17,7 @@ use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
-use crate::limits::{LENGTH, THICKNESS_TOLERANCE_RANGE};
+use crate::limits::{LENGTH, THICKNESS_TOLERANCE};
 use crate::stop::Work;
 use crate::table::{csv, Answer, CsvTable};
 use crate::validation::within;
@@ -194,7 +194,7 @@ fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
         ));
     }
     let settings = MinimumThicknessSettings {
-        tolerance: within("tolerance", request.tolerance, THICKNESS_TOLERANCE_RANGE)?,
+        tolerance: within("tolerance", request.tolerance, THICKNESS_TOLERANCE)?,
         ..MinimumThicknessSettings::default()
     };
     Ok(Planned {

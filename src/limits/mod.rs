@@ -21,20 +21,12 @@ pub const MAX_LOADS: usize = 10_000;
 pub const MAX_BASE_ANGLE_DEG: f64 = 89.999_999;
 /// Largest Coulomb friction coefficient.
 pub const MAX_FRICTION_COEFFICIENT: f64 = 1e6;
-/// Range of the interior-point tolerance of the arch programmes.
-pub const SOLVER_TOLERANCE: (f64, f64) = (1e-12, 1e-4);
-/// Range of the minimum-thickness tolerance (relative to the radius).
-pub const THICKNESS_TOLERANCE: (f64, f64) = (1e-9, 1e-2);
 /// Largest number of slices a request may ask for.
 pub const MAX_SLICES: usize = 10_000;
-/// Largest number of external loads in one request.
-pub const MAX_EXTERNAL_LOADS: usize = 10_000;
 /// Largest number of grid points along one axis of a search.
 pub const MAX_GRID: usize = 101;
 /// Largest nx·ny·slices of a search (its cost).
 pub const MAX_GRID_SLICES: usize = 10_000_000;
-/// Range of the relative slice tolerance of the slice refinement.
-pub const SLICE_TOLERANCE: (f64, f64) = (1e-9, 0.1);
 
 /// Most points in one polyline of a section (ground, layer top, bedrock, water line, surface).
 pub const MAX_POLYLINE_POINTS: usize = 1000;
@@ -165,12 +157,11 @@ pub const BASE_ANGLE_DEG: Range = Range::above(-90.0, MAX_BASE_ANGLE_DEG);
 /// A Coulomb friction coefficient.
 pub const FRICTION: Range = Range::closed(0.0, MAX_FRICTION_COEFFICIENT);
 /// The interior-point tolerance of the arch programmes.
-pub const SOLVER_TOLERANCE_RANGE: Range = Range::closed(SOLVER_TOLERANCE.0, SOLVER_TOLERANCE.1);
+pub const SOLVER_TOLERANCE: Range = Range::closed(1e-12, 1e-4);
 /// The minimum-thickness tolerance, relative to the radius.
-pub const THICKNESS_TOLERANCE_RANGE: Range =
-    Range::closed(THICKNESS_TOLERANCE.0, THICKNESS_TOLERANCE.1);
+pub const THICKNESS_TOLERANCE: Range = Range::closed(1e-9, 1e-2);
 /// The relative slice tolerance of the slice refinement.
-pub const SLICE_TOLERANCE_RANGE: Range = Range::closed(SLICE_TOLERANCE.0, SLICE_TOLERANCE.1);
+pub const SLICE_TOLERANCE: Range = Range::closed(1e-9, 0.1);
 /// A lower limit of an interface resultant (a tensile strength: ≤ 0).
 pub const LOWER_LIMIT: Range = Range::closed(-MAX_FORCE, 0.0);
 /// An upper limit of an interface resultant (≥ 0).

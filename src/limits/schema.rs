@@ -9,9 +9,8 @@ use super::{
     LOWER_END_FACTOR_MAX, LOWER_LIMIT, METHODS, MOBILISATION, PATCH_LENGTH, POLYGON_CORNERS,
     POLYLINE_POINTS, PORE_PRESSURE_RATIO, POSITIVE_LENGTH, POSITIVE_STRESS, RADII, RADIUS, RINGS,
     ROLLING_POSITIONS, SEARCH_LOWER_END_FACTOR, SECTION_LOADS, SEISMIC_KH, SEISMIC_KV, SLICES,
-    SLICE_TOLERANCE_RANGE, SOLVER_TOLERANCE_RANGE, SPANS, STRESS, SUPPORTS, THICKNESS,
-    THICKNESS_TOLERANCE_RANGE, TIME_BUDGET_MS, UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT,
-    VERTICES,
+    SLICE_TOLERANCE, SOLVER_TOLERANCE, SPANS, STRESS, SUPPORTS, THICKNESS, THICKNESS_TOLERANCE,
+    TIME_BUDGET_MS, UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT, VERTICES,
 };
 
 /// Every limit the OpenAPI schema states, by component and property: the document is written
@@ -84,7 +83,7 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     (
         "MinimumThicknessRequest",
         "tolerance",
-        Limit::Number(THICKNESS_TOLERANCE_RANGE),
+        Limit::Number(THICKNESS_TOLERANCE),
     ),
     (
         "MinimumThicknessRequest",
@@ -127,12 +126,12 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     (
         "DeadLoadRequest",
         "solver_tolerance",
-        Limit::Number(SOLVER_TOLERANCE_RANGE),
+        Limit::Number(SOLVER_TOLERANCE),
     ),
     (
         "LiveLoadRequest",
         "solver_tolerance",
-        Limit::Number(SOLVER_TOLERANCE_RANGE),
+        Limit::Number(SOLVER_TOLERANCE),
     ),
     (
         "DeadLoadRequest",
@@ -194,7 +193,7 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     (
         "SpencerRequest",
         "slice_tolerance",
-        Limit::Number(SLICE_TOLERANCE_RANGE),
+        Limit::Number(SLICE_TOLERANCE),
     ),
     ("SpencerRequest", "slices", Limit::Integer(SLICES)),
     ("SpencerRequest", "external_loads", Limit::Items(LOADS)),

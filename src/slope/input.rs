@@ -21,7 +21,7 @@ use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, DEFAULT_WATER_UNIT_WEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR,
     LOWER_END_FACTOR_MAX, MAX_GRID_SLICES, MAX_SLICES, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
-    SEISMIC_KV, SLICES, SLICE_TOLERANCE_RANGE,
+    SEISMIC_KV, SLICES, SLICE_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, SectionSearch, SlopePlan, Target};
@@ -46,7 +46,7 @@ impl SpencerRequest {
         let parts = self.parts()?;
         let slice_tolerance = self
             .slice_tolerance
-            .map(|t| within("slice_tolerance", t, SLICE_TOLERANCE_RANGE))
+            .map(|t| within("slice_tolerance", t, SLICE_TOLERANCE))
             .transpose()?;
         if slice_tolerance.is_some() && !parts.external_loads.is_empty() {
             return Err(ApiError::invalid(

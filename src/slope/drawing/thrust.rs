@@ -2,6 +2,7 @@
 //! and the lines of thrust (total, and effective where pore water moves it).
 
 use thrustline_solver::slope::analysis::PlacedCircle;
+use thrustline_solver::slope::ThrustPoint;
 
 use super::super::report::SolvedSlope;
 use super::Scene;
@@ -44,15 +45,18 @@ pub fn surface(
     }
     // The line of thrust on the slice boundaries, broken where a point leaves its slice (an
     // inter-slice force near zero puts it anywhere): those points are marked with a ring.
-    let thrust: Vec<(f64, f64)> = solution
-        .thrust_line
-        .iter()
-        .map(|t| match t.y {
-            Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
-            _ => (f64::NAN, f64::NAN),
-        })
-        .collect();
-    canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.6\"");
+    let drawn = |line: &[ThrustPoint]| -> Vec<(f64, f64)> {
+        line.iter()
+            .map(|t| match t.y {
+                Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+                _ => (f64::NAN, f64::NAN),
+            })
+            .collect()
+    };
+    canvas.polyline(
+        &drawn(&solution.thrust_line),
+        "stroke=\"#c62828\" stroke-width=\"1.6\"",
+    );
     let outside = solution
         .thrust_line
         .iter()
@@ -84,16 +88,8 @@ pub fn surface(
         });
     if has_water {
         // Broken where it leaves its slice, like the total one.
-        let effective: Vec<(f64, f64)> = solution
-            .effective_thrust_line
-            .iter()
-            .map(|t| match t.y {
-                Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
-                _ => (f64::NAN, f64::NAN),
-            })
-            .collect();
         canvas.polyline(
-            &effective,
+            &drawn(&solution.effective_thrust_line),
             "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
         );
         legend.push((

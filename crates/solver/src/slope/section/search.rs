@@ -87,6 +87,14 @@ fn relief(section: &Section) -> (f64, f64, f64, f64) {
 }
 
 impl CircleRegion {
+    /// The spacing of the grid's centres along x and y.
+    fn cell(&self) -> (f64, f64) {
+        (
+            (self.x_max - self.x_min) / (self.nx.max(2) - 1) as f64,
+            (self.y_max - self.y_min) / (self.ny.max(2) - 1) as f64,
+        )
+    }
+
     /// Centres over the sloping part of the ground widened by half its size each way, from
     /// half-way up the relief to two sizes above its top; radii chosen per centre.
     pub fn automatic(section: &Section, nx: usize, ny: usize, nr: usize) -> Self {
@@ -268,8 +276,7 @@ impl Evaluator<'_> {
         (xs, ys): (&[f64], &[f64]),
         settings: &CircleSearchSettings,
     ) -> Vec<(f64, Vec<f64>, usize)> {
-        let dx = (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64;
-        let dy = (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64;
+        let (dx, dy) = region.cell();
         let inside = |v: &[f64]| {
             v[0] >= region.x_min
                 && v[0] <= region.x_max
@@ -396,10 +403,7 @@ fn is_on_edge(
     (nx, ny): (usize, usize),
     v: &[f64],
 ) -> bool {
-    let (dx, dy) = (
-        (region.x_max - region.x_min) / (region.nx.max(2) - 1) as f64,
-        (region.y_max - region.y_min) / (region.ny.max(2) - 1) as f64,
-    );
+    let (dx, dy) = region.cell();
     let tolerance = 1e-6 * dx.abs().max(dy.abs());
     bi == 0
         || bj == 0
