@@ -341,3 +341,56 @@ fn the_answer_states_the_time_of_the_whole_analysis() {
         "{stated} s of {around} s"
     );
 }
+
+#[test]
+fn a_budget_spent_between_friction_steps_ends_the_iteration_unsettled() {
+    // The two leaves under a cap take 28 steps to settle; the budget's flag raised during the
+    // second step ends the iteration at the next one: not settled, no factor, and the status
+    // says the time limit (never the associative state answered as a fixed point).
+    let wall = thrustline_solver::arch::Assembly::from_polygons(
+        &[
+            vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
+            vec![(0.5, 0.0), (1.0, 0.0), (1.0, 2.0), (0.5, 2.0)],
+            vec![(0.0, 2.0), (1.0, 2.0), (1.0, 2.5), (0.0, 2.5)],
+        ],
+        &[vec![(-2.0, -1.0), (3.0, -1.0), (3.0, 0.0), (-2.0, 0.0)]],
+    )
+    .unwrap();
+    let load = LiveLoad {
+        block: 2,
+        point: (0.0, 2.5),
+        fx: 1.0,
+        fy: 0.0,
+        moment: 0.0,
+    };
+    let problem =
+        ArchProblem::new(wall, 1.0, InterfaceLimits::heyman(), Some(0.5), vec![load]).unwrap();
+    let flag = Arc::new(AtomicBool::new(false));
+    let settings = LimitSettings {
+        formulation: thrustline_solver::arch::Formulation::Assembly,
+        budget: Budget::unlimited().cancelled_by(flag.clone()),
+        ..LimitSettings::default()
+    };
+    let steps = std::cell::Cell::new(0);
+    let outcome = thrustline_solver::arch::non_associative::iterate(
+        &problem,
+        &settings,
+        false,
+        solve_live_load,
+        |p, s, _| {
+            steps.set(steps.get() + 1);
+            if steps.get() == 2 {
+                flag.store(true, Ordering::Relaxed);
+            }
+            solve_live_load(p, s)
+        },
+    )
+    .unwrap();
+    assert!(!outcome.settled);
+    assert_eq!(steps.get(), 2, "no step after the budget was spent");
+    assert_eq!(outcome.solution.load_factor, None);
+    assert_eq!(
+        outcome.solution.status,
+        LimitStatus::SolverFailed(thrustline_solver::arch::SolverFailure::MaxTime)
+    );
+}

@@ -152,11 +152,18 @@ pub fn analyse(
         // The state at the cap of λ (the non-associative iteration's start): not an answer.
         solution.resultants.clear();
     }
-    let stop = match solution.status {
-        LimitStatus::SolverFailed(SolverFailure::MaxTime) => {
-            budget.check().err().unwrap_or(Stop::TimeLimit)
-        }
-        _ => Stop::Finished,
+    // Stopped at the time limit: the answer's own programme, or the friction iteration (whose
+    // check the answer would otherwise report as not settled).
+    let out_of_time =
+        |status: LimitStatus| status == LimitStatus::SolverFailed(SolverFailure::MaxTime);
+    let stop = if out_of_time(solution.status)
+        || friction
+            .as_ref()
+            .is_some_and(|f| out_of_time(f.solution.status))
+    {
+        budget.check().err().unwrap_or(Stop::TimeLimit)
+    } else {
+        Stop::Finished
     };
     let thrust_line = thrust_line(problem.assembly(), &solution.resultants);
     // The answer's time is the whole analysis': every programme, round, step and stop.

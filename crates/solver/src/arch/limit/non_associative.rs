@@ -52,6 +52,7 @@ use super::mixing::{relaxed, Mixing};
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus, Relaxation};
 use crate::arch::equilibrium::force_scale;
 use crate::arch::mechanism::Mechanism;
+use crate::outcome::SolverFailure;
 
 /// Steps at most.
 pub const MAX_STEPS: usize = 50;
@@ -171,7 +172,15 @@ pub fn iterate<E>(
         problem.dead_loads(),
     );
     let mut run = Run::new(&associative, settings.relaxation);
+    let mut out_of_budget = false;
     let settled = loop {
+        if settings.budget.is_spent() {
+            // The request's budget ended it: no answer the iteration can vouch for.
+            run.last.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
+            run.last.load_factor = None;
+            out_of_budget = true;
+            break false;
+        }
         // The paper's relaxation has had its steps without settling: the mixing takes over
         // from its last state that solved, once, with steps of its own.
         if run.is_stopped() && !run.take_over() {
@@ -195,7 +204,7 @@ pub fn iterate<E>(
         start.elapsed().as_secs_f64(),
     );
     let corrected = corrected(sliding, &run.first_mechanism);
-    if !settled && never_left(&run.history) {
+    if !settled && !out_of_budget && never_left(&run.history) {
         // The associative state is a fixed point (module docs): it answers.
         let mut solution = associative.clone();
         solution.mechanism = run.first_mechanism;
