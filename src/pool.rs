@@ -3,8 +3,10 @@
 //! A solve takes an admission permit (solves running plus waiting, bounded: beyond it the
 //! request is answered 503 with `Retry-After` instead of queueing without end), then a worker
 //! permit (solves running at once), and runs in tokio's blocking pool inside the request's
-//! tracing span. `spawn_blocking` cannot be cancelled, so every solve carries its own iteration
-//! and time limits; the deadline here only stops the client from waiting past it.
+//! tracing span. `spawn_blocking` cannot be cancelled from outside, so a solve stops itself: it
+//! runs with a budget ([`SolvePool::run_budgeted`]) whose deadline is the solve time limit and
+//! whose flag is raised when the request's future is dropped (a client gone, the drain over);
+//! the pool's own deadline only stops the client from waiting past it.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;

@@ -88,6 +88,12 @@ impl Budget {
         }
     }
 
+    /// Why a stage that ran out of time stopped: [`Stop::Cancelled`] when the flag was raised,
+    /// else [`Stop::TimeLimit`] (the budget's deadline, or a limit of the stage's own).
+    pub fn out_of_time(&self) -> Stop {
+        self.check().err().unwrap_or(Stop::TimeLimit)
+    }
+
     /// Whether the budget is spent.
     pub fn is_spent(&self) -> bool {
         self.check().is_err()

@@ -161,7 +161,7 @@ pub fn analyse(
             .as_ref()
             .is_some_and(|f| out_of_time(f.solution.status))
     {
-        budget.check().err().unwrap_or(Stop::TimeLimit)
+        budget.out_of_time()
     } else {
         Stop::Finished
     };

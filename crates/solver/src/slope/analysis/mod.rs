@@ -147,8 +147,7 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
                 RefinementStatus::Settled => true,
                 RefinementStatus::SliceLimit => false,
                 RefinementStatus::SolverFailed(_) => {
-                    let stop = budget.check().err().unwrap_or(Stop::TimeLimit);
-                    return Ok(stopped(SlopeStage::Refinement, stop));
+                    return Ok(stopped(SlopeStage::Refinement, budget.out_of_time()));
                 }
             };
             let refinement = Refinement {

@@ -25,14 +25,11 @@ pub(super) type Found = Result<(Analysed, SearchReport), Stop>;
 /// The stop of a search that found nothing: the budget's reason when it is spent, else no
 /// candidate.
 fn no_circle(status: SearchStatus, budget: &Budget) -> Stop {
-    match (status, budget.check()) {
-        (_, Err(stop)) => stop,
-        (SearchStatus::SolverFailed(crate::outcome::SolverFailure::MaxTime), Ok(())) => {
-            Stop::TimeLimit
-        }
-        (SearchStatus::Found | SearchStatus::NoValidCircle | SearchStatus::SolverFailed(_), _) => {
-            Stop::NoCandidate
-        }
+    let out_of_time = status == SearchStatus::SolverFailed(crate::outcome::SolverFailure::MaxTime);
+    if out_of_time || budget.is_spent() {
+        budget.out_of_time()
+    } else {
+        Stop::NoCandidate
     }
 }
 
