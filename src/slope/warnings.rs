@@ -121,8 +121,8 @@ fn search_warnings(
         warnings.push(format!(
             "{} circles of the search have no physical Spencer solution, and Bishop's F on \
                  them goes down to {bishop:.4}, below the F found ({f:.4}): the critical F may \
-                 be lower than reported (with φ' near 0, m_α ≤ 0 on steep bases rules Spencer's \
-                 solution out there)",
+                 be lower than reported (on those circles F_f(θ) and F_m(θ) do not cross, on the \
+                 classic domain nor past the poles of m_α)",
             search.unsolved
         ));
     } else if search.unsolved_near_minimum {

@@ -30,6 +30,14 @@ pub(super) fn describe(
     // current slice; the lower end carries none.
     let (mut z_left, mut y_left) = (0.0, model.lower_end().1);
     let n = slices.len();
+    // Past the poles ([`super::newton`]) m_α may be negative on some slices, or on most (the
+    // same root with θ + 180°): the slices flagged are those whose m_α, taken with the sign
+    // of the majority, is small or negative.
+    let sign = if equations.m_alpha_mostly_negative(f, theta) {
+        -1.0
+    } else {
+        1.0
+    };
     for (i, (slice, t)) in slices.iter().zip(&equations.terms).enumerate() {
         let SliceResultant { q, m_alpha, .. } = Equations::q(t, f, (sin_t, cos_t));
         let weight = slice.weight;
@@ -41,7 +49,7 @@ pub(super) fn describe(
             (slice.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
         // Z_{i+1} = Z_i − Q_i: Q is the net push of the two neighbours along (cos θ, sin θ).
         let z_right = z_left - q;
-        if m_alpha < SMALL_DENOMINATOR {
+        if sign * m_alpha < SMALL_DENOMINATOR {
             small_m_alpha_slices.push(i);
         }
         if effective_normal_force < 0.0 {
@@ -58,40 +66,17 @@ pub(super) fn describe(
             m_alpha,
         });
         if i + 1 < n {
-            // Moments about the base middle (1973): left force +Z_i·(cos θ, sin θ) at
-            // (x_left, y_left), right force −Z_{i+1}·(cos θ, sin θ) at (x_right, y_right), plus
-            // the known moment, sum to zero.
-            let (xb, yb) = slice.base_middle;
-            let left = (slice.x_left - xb) * z_left * sin_t - (y_left - yb) * z_left * cos_t;
-            let y_right = (z_right.abs() * cos_t.abs() > f64::MIN_POSITIVE)
-                .then(|| {
-                    yb + ((slice.x_right - xb) * z_right * sin_t - left - t.moment)
-                        / (z_right * cos_t)
-                })
-                .filter(|y| y.is_finite());
-            let top = slice.top_right_y;
-            thrust_line.push(ThrustPoint {
-                boundary: i + 1,
-                x: slice.x_right,
-                y: y_right,
-                force: z_right,
-                is_inside_slice: y_right.is_some_and(|y| y >= slice.base_right_y && y <= top),
-            });
-            // Effective: the horizontal component less the side water U at y_U, same vertical
-            // component; its point from the moments of the horizontal components.
-            let (water, y_water) = slice.side_water;
-            let horizontal = z_right * cos_t - water;
-            let y_effective = y_right
-                .map(|y| (z_right * cos_t * y - water * y_water) / horizontal)
-                .filter(|y| y.is_finite() && horizontal.abs() > f64::MIN_POSITIVE);
-            effective_thrust_line.push(ThrustPoint {
-                boundary: i + 1,
-                x: slice.x_right,
-                y: y_effective,
-                force: horizontal.hypot(z_right * sin_t),
-                is_inside_slice: y_effective.is_some_and(|y| y >= slice.base_right_y && y <= top),
-            });
-            (z_left, y_left) = (z_right, y_right.unwrap_or(yb));
+            let (total, effective) = boundary_thrust(
+                slice,
+                t.moment,
+                (z_left, y_left),
+                z_right,
+                (sin_t, cos_t),
+                i,
+            );
+            (z_left, y_left) = (z_right, total.y.unwrap_or(slice.base_middle.1));
+            thrust_line.push(total);
+            effective_thrust_line.push(effective);
         }
     }
     SpencerSolution {
@@ -110,4 +95,47 @@ pub(super) fn describe(
         tension_dropped_slices: Vec::new(),
         residual: Some(residuals.force.abs().max(residuals.moment.abs())).filter(|r| r.is_finite()),
     }
+}
+
+/// The line of thrust on the right boundary of slice `i` (total and effective), from moments
+/// about its base middle (1973): the left force +Z_i·(cos θ, sin θ) at (x_left, y_left), the
+/// right force −Z_{i+1}·(cos θ, sin θ) at (x_right, y_right) and the known moment sum to zero.
+fn boundary_thrust(
+    slice: &crate::slope::slices::BaseSlice,
+    known_moment: f64,
+    (z_left, y_left): (f64, f64),
+    z_right: f64,
+    (sin_t, cos_t): (f64, f64),
+    i: usize,
+) -> (ThrustPoint, ThrustPoint) {
+    let (xb, yb) = slice.base_middle;
+    let left = (slice.x_left - xb) * z_left * sin_t - (y_left - yb) * z_left * cos_t;
+    let y_right = (z_right.abs() * cos_t.abs() > f64::MIN_POSITIVE)
+        .then(|| {
+            yb + ((slice.x_right - xb) * z_right * sin_t - left - known_moment) / (z_right * cos_t)
+        })
+        .filter(|y| y.is_finite());
+    let top = slice.top_right_y;
+    let total = ThrustPoint {
+        boundary: i + 1,
+        x: slice.x_right,
+        y: y_right,
+        force: z_right,
+        is_inside_slice: y_right.is_some_and(|y| y >= slice.base_right_y && y <= top),
+    };
+    // Effective: the horizontal component less the side water U at y_U, same vertical
+    // component; its point from the moments of the horizontal components.
+    let (water, y_water) = slice.side_water;
+    let horizontal = z_right * cos_t - water;
+    let y_effective = y_right
+        .map(|y| (z_right * cos_t * y - water * y_water) / horizontal)
+        .filter(|y| y.is_finite() && horizontal.abs() > f64::MIN_POSITIVE);
+    let effective = ThrustPoint {
+        boundary: i + 1,
+        x: slice.x_right,
+        y: y_effective,
+        force: horizontal.hypot(z_right * sin_t),
+        is_inside_slice: y_effective.is_some_and(|y| y >= slice.base_right_y && y <= top),
+    };
+    (total, effective)
 }

@@ -161,6 +161,19 @@ impl Equations {
         (value / scale, slope / scale, min_m_alpha)
     }
 
+    /// Whether more than half of the m_α are ≤ 0 at (F, θ): past the poles, the same root
+    /// with θ + 180° has every Q and m_α of opposite sign, and the minority are the slices
+    /// past their pole.
+    pub fn m_alpha_mostly_negative(&self, f: f64, theta: f64) -> bool {
+        let trig = theta.sin_cos();
+        let non_positive = self
+            .terms
+            .iter()
+            .filter(|t| Self::q(t, f, trig).m_alpha <= 0.0)
+            .count();
+        2 * non_positive > self.terms.len()
+    }
+
     /// The interval of F on which every m_α(F, θ) is positive, clipped to [`F_RANGE`].
     pub(super) fn admissible_f(&self, theta: f64) -> Option<(f64, f64)> {
         let (mut lo, mut hi) = F_RANGE;

@@ -28,6 +28,8 @@
 //! denominator m_α = cos(α−θ) + sin(α−θ)·tan φ'/F stays positive; if it fails, a bracketing
 //! fallback: for each θ on a grid, F_f(θ) and F_m(θ) from the two equations separately, then
 //! Brent's method on F_f − F_m (Spencer's own figure: the answer is where the curves cross).
+//! Where no root has every m_α positive, Newton's method past the poles of m_α (see
+//! `newton::beyond_poles` for which of those roots is sound and which is answered).
 
 mod describe;
 mod equations;

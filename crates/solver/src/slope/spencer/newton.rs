@@ -23,6 +23,15 @@ pub(super) struct EquationsSolution {
     pub used_fallback: bool,
 }
 
+/// Which roots Newton's method may step to.
+#[derive(Clone, Copy, PartialEq)]
+enum Branch {
+    /// Every m_α positive, |θ| ≤ 89° (the classic domain).
+    Admissible,
+    /// Any (F > 0, θ): the poles where an m_α vanishes may be crossed.
+    Any,
+}
+
 /// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
 pub(super) fn solve_equations(
     equations: &Equations,
@@ -33,10 +42,21 @@ pub(super) fn solve_equations(
     let start = (bishop.unwrap_or(1.0), 0.0);
     let mut iterations = 0;
     let mut used_fallback = false;
-    let mut root = newton(equations, start, settings, &mut iterations);
+    let mut root = newton(
+        equations,
+        start,
+        settings,
+        Branch::Admissible,
+        &mut iterations,
+    );
     if root.is_none() && settings.fallback {
         used_fallback = true;
         root = fallback(equations, settings, &mut iterations);
+        // With φ' = 0 the moment equation alone fixes F (SpencerStatus::MomentOnly): a root
+        // past the poles would add only a θ.
+        if root.is_none() && !equations.is_frictionless() {
+            root = beyond_poles(equations, start.0, settings, &mut iterations);
+        }
     }
     EquationsSolution {
         root,
@@ -46,21 +66,124 @@ pub(super) fn solve_equations(
     }
 }
 
-/// Damped Newton on (F, θ); `None` unless it converges with every m_α positive.
+/// Newton iterations and step halvings per start of [`beyond_poles`].
+const BEYOND_ITERATIONS: usize = 8;
+const BEYOND_HALVINGS: usize = 6;
+
+/// Starts of [`beyond_poles`]: θ from 0 outwards in steps of 15°.
+const BEYOND_STARTS_DEG: [f64; 11] = [
+    0.0, 15.0, -15.0, 30.0, -30.0, 45.0, -45.0, 60.0, -60.0, 75.0, -75.0,
+];
+
+/// A root past the poles, where the classic domain (every m_α > 0) has none.
+///
+/// The two equations are those of every slice's equilibrium, which hold whatever the sign of
+/// m_α; m_α = 0 only makes one slice's Q formula singular (its two equations are then
+/// dependent). With φ' near 0, F hardly depends on θ and the force equation finds its root at
+/// an inclination where a steep base has cos(α − θ) < 0: no root has every m_α positive,
+/// though many, past one pole or several, give the same F (Duncan & Wright's clay slope at
+/// φ' = 0.5°: F = 1.1418–1.1420 on 27 of them). Programs that take the normal force from
+/// vertical equilibrium (m_α = cos α + sin α·tan φ'/F) do not see these poles and report such
+/// roots as converged.
+///
+/// A root is sound when it is physical as any root must be and every slice past its pole is
+/// pressed onto its base ([`sound_root`]). Among sound roots, the one past the fewest
+/// poles, then the one nearest to horizontal inter-slice forces, is the answer: θ is reported
+/// in (−90°, 90°], the poles counted as the slices whose m_α has the minority sign (θ and
+/// θ + 180° are the same line of action, with every Q and m_α of opposite sign).
+fn beyond_poles(
+    equations: &Equations,
+    f_start: f64,
+    settings: &SpencerSettings,
+    iterations: &mut usize,
+) -> Option<(f64, f64)> {
+    let mut best: Option<(usize, f64, (f64, f64))> = None;
+    for degrees in BEYOND_STARTS_DEG {
+        let start = (f_start, degrees.to_radians());
+        let Some((f, theta)) = newton(equations, start, settings, Branch::Any, iterations) else {
+            continue;
+        };
+        let theta = normalised(theta);
+        let Some(poles) = sound_root(equations, f, theta) else {
+            continue;
+        };
+        let better = best.is_none_or(|(p, t, _)| (poles, theta.abs()) < (p, t));
+        if better {
+            best = Some((poles, theta.abs(), (f, theta)));
+        }
+    }
+    best.map(|(_, _, root)| root)
+}
+
+/// θ moved by multiples of 180° into (−90°, 90°].
+fn normalised(theta: f64) -> f64 {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    let t = theta - PI * (theta / PI).round();
+    if t <= -FRAC_PI_2 {
+        t + PI
+    } else {
+        t
+    }
+}
+
+/// The poles a root lies past (slices whose m_α has the minority sign), when it is sound:
+/// physical ([`super::is_physical`]), and every slice past its pole pressed onto its base
+/// (N' ≥ 0 to rounding: near a pole N' is unbounded, and a slice held up by tension there is
+/// the pole's artefact, not a mechanism).
+fn sound_root(equations: &Equations, f: f64, theta: f64) -> Option<usize> {
+    if !super::is_physical(equations, f, theta) {
+        return None;
+    }
+    let trig = theta.sin_cos();
+    let (sin_t, cos_t) = trig;
+    let negative_majority = equations.m_alpha_mostly_negative(f, theta);
+    let rounding = 1e-9 * equations.force_scale;
+    let mut poles = 0;
+    for t in &equations.terms {
+        let r = Equations::q(t, f, trig);
+        if (r.m_alpha <= 0.0) == negative_majority {
+            continue;
+        }
+        poles += 1;
+        let effective = t.a_n - t.pore_force + r.q * (t.sin_alpha * cos_t - t.cos_alpha * sin_t);
+        if effective < -rounding {
+            return None;
+        }
+    }
+    Some(poles)
+}
+
+/// Damped Newton on (F, θ); `None` unless it converges (on the admissible branch: with every
+/// m_α positive).
 fn newton(
     equations: &Equations,
     (mut f, mut theta): (f64, f64),
     settings: &SpencerSettings,
+    branch: Branch,
     iterations: &mut usize,
 ) -> Option<(f64, f64)> {
     const MAX_THETA_STEP: f64 = 0.2; // rad
     const MAX_THETA: f64 = 89.0 * std::f64::consts::PI / 180.0;
     let merit = |r: &Residuals| r.force.hypot(r.moment);
+    let admissible = |r: &Residuals| branch == Branch::Any || r.min_m_alpha > 0.0;
+    let max_theta = match branch {
+        Branch::Admissible => MAX_THETA,
+        Branch::Any => f64::INFINITY,
+    };
+    // Past the poles Newton's method either settles quickly or wanders between them: a start
+    // that does not settle is given up early, the next one tried.
+    let (max_iterations, max_halvings) = match branch {
+        Branch::Admissible => (settings.max_iterations, 40),
+        Branch::Any => (
+            settings.max_iterations.min(BEYOND_ITERATIONS),
+            BEYOND_HALVINGS,
+        ),
+    };
     let mut r = equations.evaluate(f, theta);
-    if r.min_m_alpha <= 0.0 || !merit(&r).is_finite() {
+    if !admissible(&r) || !merit(&r).is_finite() {
         return None;
     }
-    for _ in 0..settings.max_iterations {
+    for _ in 0..max_iterations {
         *iterations += 1;
         let det = r.d_force.0 * r.d_moment.1 - r.d_force.1 * r.d_moment.0;
         if det == 0.0 || !det.is_finite() {
@@ -76,8 +199,8 @@ fn newton(
         dtheta *= scale;
         let current = merit(&r);
         let mut accepted = None;
-        for _ in 0..40 {
-            let (f_new, theta_new) = (f + df, (theta + dtheta).clamp(-MAX_THETA, MAX_THETA));
+        for _ in 0..max_halvings {
+            let (f_new, theta_new) = (f + df, (theta + dtheta).clamp(-max_theta, max_theta));
             // A step below rounding lands on the current point: every shorter one would be
             // evaluated there too, and rejected as it (the merit does not fall below itself).
             if f_new == f && theta_new == theta {
@@ -85,7 +208,7 @@ fn newton(
             }
             let r_new = equations.evaluate(f_new, theta_new);
             let m = merit(&r_new);
-            if r_new.min_m_alpha > 0.0 && m.is_finite() && (m < current || m == 0.0) {
+            if admissible(&r_new) && m.is_finite() && (m < current || m == 0.0) {
                 accepted = Some((f_new, theta_new, r_new));
                 break;
             }
@@ -138,7 +261,7 @@ fn fallback(
     let mut solve_in = |a: f64, fa: f64, b: f64, fb: f64, evaluations: &mut usize| {
         let root = brent(|t| difference(t, evaluations), a, b, fa, fb, 1e-13, 200)?;
         let guess = (equations.f_at_theta(root.x, false, evaluations)?, root.x);
-        newton(equations, guess, settings, iterations)
+        newton(equations, guess, settings, Branch::Admissible, iterations)
     };
     // The last finite value on each side of 0.
     let (mut up, mut down) = ((0.0f64, origin), (0.0f64, origin));

@@ -49,8 +49,9 @@ impl Default for SpencerSettings {
 pub enum SpencerStatus {
     /// Both equations are satisfied to the tolerance with every m_α positive.
     Converged,
-    /// No (F, θ) with positive denominators satisfies both equations on the searched range
-    /// (F in 1e-6…1e6, |θ| < 89°).
+    /// No (F, θ) satisfies both equations on the searched range (F in 1e-6…1e6): none with
+    /// every denominator m_α positive (|θ| < 89°), and none found past the poles of m_α with
+    /// every slice past its pole pressed onto its base.
     NoSolution,
     /// φ' = 0 and no parallel inter-slice forces satisfy force equilibrium, but the moment
     /// equation alone fixes F: with φ' = 0 the base shear c'·l/F does not depend on the normal
