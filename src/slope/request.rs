@@ -131,8 +131,9 @@ pub struct SpencerRequest {
     #[serde(default)]
     #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub surface: Option<Vec<[f64; 2]>>,
-    /// The centre [x, y] about which moment-only methods (Bishop's) take moments for a `surface`;
-    /// without it they are not reported for a surface (a circle uses its centre).
+    /// The centre [x, y] about which the moment-only methods (Bishop's, the ordinary method) take
+    /// moments for a `surface`; without it they are not reported for a surface (a circle uses its
+    /// centre). Spencer's, Morgenstern–Price's and Janbu's answers never depend on it.
     #[serde(default)]
     #[schema(value_type = Option<Vec<f64>>, min_items = 2, max_items = 2)]
     pub moment_centre: Option<[f64; 2]>,
@@ -153,7 +154,8 @@ pub struct SpencerRequest {
     /// classic equations (the default: Spencer's and the thesis' published numbers; a root
     /// held up by net tension is answered `unphysical`, never converged), `drop_friction`
     /// (no tension: the frictional term is dropped on those slices, c' kept, and the equations
-    /// solved again, as Slide2 and SLOPE/W do) or `drop_strength` (c' dropped too).
+    /// solved again, as Slide2 and SLOPE/W do) or `drop_strength` (c' dropped too). The
+    /// `methods` answer on the slices the headline dropped.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub negative_effective_stress: NegativeEffectiveStressDto,

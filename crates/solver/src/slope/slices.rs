@@ -68,16 +68,30 @@ pub struct SliceModel {
     pub seismic: Seismic,
     /// Known forces on slices (moments about their base middles).
     pub loads: Vec<ExternalLoad>,
-    /// The point moments are taken about: the circle's centre, or the given moment centre.
+    /// The point Spencer's and Morgenstern–Price's moment equation is written about: a circle's
+    /// centre, or a point above a polyline's middle. Where force equilibrium holds the point
+    /// does not change their root; it is never the given moment centre, so that they do not
+    /// depend on it (model §6.3).
     pub reference: (f64, f64),
-    /// Whether `reference` is a centre of rotation of the surface (a circle's centre, or one
-    /// given): only then is a moment-only method (Bishop's) meaningful.
-    pub has_moment_centre: bool,
+    /// The centre of rotation the moment-only methods (Bishop's, the ordinary method) take
+    /// moments about: a circle's centre, or the one given for a polyline; `None` otherwise.
+    pub moment_centre: Option<(f64, f64)>,
+    /// Whether the surface is a circle about `reference`: every base normal then passes through
+    /// it, and with φ' = 0 the moment equation alone fixes F.
+    pub circular: bool,
     /// A length of the size of the mass (the radius of a circle), to scale moment residuals.
     pub length_scale: f64,
 }
 
 impl SliceModel {
+    /// The same slices with moments taken about `centre` (the moment-only methods).
+    pub fn about(&self, centre: (f64, f64)) -> Self {
+        Self {
+            reference: centre,
+            ..self.clone()
+        }
+    }
+
     /// The start of the slip surface (toe end).
     pub fn lower_end(&self) -> (f64, f64) {
         self.slices

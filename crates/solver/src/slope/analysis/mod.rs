@@ -22,7 +22,8 @@ use crate::slope::section::Section;
 use crate::slope::slices::Sliced;
 use crate::slope::spencer::methods::InterSliceFunction;
 use crate::slope::spencer::{
-    factor_curves_around, solve_spencer, NegativeEffectiveStress, Seismic, SpencerSettings,
+    factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress, Seismic,
+    SpencerSettings,
 };
 use crate::slope::SlopeError;
 pub use methods::{Method, MethodFactors};
@@ -163,12 +164,12 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         _ => None,
     };
     let methods = (!plan.methods.is_empty()).then(|| {
-        methods::side_by_side(
-            &plan.methods,
-            &plan.interslice_function,
+        let model = with_strength_dropped(
             &problem.model(),
-            &solution,
-        )
+            &solution.tension_dropped_slices,
+            plan.negative_effective_stress,
+        );
+        methods::side_by_side(&plan.methods, &plan.interslice_function, &model, &solution)
     });
     Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
         problem,

@@ -154,12 +154,15 @@ impl Cut {
             .zip(base_ys.iter().copied())
             .chain(crack.map(|c| (c.0, c.2)))
             .collect();
-        let (reference, has_moment_centre) = match (shape, moment_centre) {
-            (SlipShape::Circle { centre, .. }, _) => (*centre, true),
-            (SlipShape::Polyline(_), Some(centre)) => (centre, true),
-            (SlipShape::Polyline(_), None) => {
+        let (reference, moment_centre, circular) = match shape {
+            SlipShape::Circle { centre, .. } => (*centre, Some(*centre), true),
+            SlipShape::Polyline(_) => {
                 let top = ground.y_at(xa).max(ground.y_at(xb));
-                ((0.5 * (xa + xb), top + 0.5 * (xb - xa)), false)
+                (
+                    (0.5 * (xa + xb), top + 0.5 * (xb - xa)),
+                    moment_centre,
+                    false,
+                )
             }
         };
         let length_scale = surface
@@ -176,7 +179,8 @@ impl Cut {
                 seismic,
                 loads,
                 reference,
-                has_moment_centre,
+                moment_centre,
+                circular,
                 length_scale,
             },
             ends: (

@@ -74,10 +74,10 @@ impl MethodFactor {
 /// The ordinary method (Fellenius): N = the known forces' normal component, moments about the
 /// centre. `None` without a centre of rotation or when nothing drives the mass.
 pub fn ordinary(model: &SliceModel) -> MethodFactor {
-    if !model.has_moment_centre {
+    let Some(centre) = model.moment_centre else {
         return MethodFactor::plain(None);
-    }
-    let equations = Equations::new(model);
+    };
+    let equations = Equations::new(&model.about(centre));
     let (mut driving, mut resisting) = (0.0, 0.0);
     for t in &equations.terms {
         let (s, c) = (t.sin_alpha, t.cos_alpha);
@@ -95,11 +95,17 @@ pub fn ordinary(model: &SliceModel) -> MethodFactor {
 
 /// Bishop's simplified method: the moment equation with horizontal inter-slice forces.
 pub fn bishop(model: &SliceModel) -> MethodFactor {
-    if !model.has_moment_centre {
-        return MethodFactor::plain(None);
-    }
+    MethodFactor::plain(bishop_factor(model))
+}
+
+/// Bishop's F about the model's centre of rotation, `None` without one or without a root.
+pub(super) fn bishop_factor(model: &SliceModel) -> Option<f64> {
+    let centre = model.moment_centre?;
     let mut evaluations = 0;
-    MethodFactor::plain(Equations::new(model).f_at_theta(0.0, true, &mut evaluations))
+    if centre == model.reference {
+        return Equations::new(model).f_at_theta(0.0, true, &mut evaluations);
+    }
+    Equations::new(&model.about(centre)).f_at_theta(0.0, true, &mut evaluations)
 }
 
 /// Janbu's simplified method (uncorrected): force equilibrium with horizontal inter-slice

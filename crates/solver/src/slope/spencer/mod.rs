@@ -111,7 +111,7 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
     // φ' = 0 on a circle: the moment equation about the centre alone fixes F whatever the
     // inter-slice forces (the base normals pass through the centre, the shear is c'l/F), so
     // Bishop's F is Spencer's; no need to look for θ.
-    if equations.is_frictionless() && model.has_moment_centre {
+    if equations.is_frictionless() && model.circular {
         let mut evaluations = 0;
         return match equations.f_at_theta(0.0, true, &mut evaluations) {
             Some(f) => FactorOutcome::Solved(SpencerFactor {
@@ -122,7 +122,7 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
         };
     }
     let mut solved = solve_equations(&equations, settings);
-    solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
+    solved.bishop = reported_bishop(model, solved.bishop);
     match (solved.root, solved.bishop) {
         (Some((f, theta)), _) if is_physical(&equations, f, theta) => {
             FactorOutcome::Solved(SpencerFactor {
@@ -131,11 +131,24 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
             })
         }
         // φ' = 0: the moment equation alone is exact (see SpencerStatus::MomentOnly).
-        (None, Some(f)) if equations.is_frictionless() => FactorOutcome::Solved(SpencerFactor {
-            factor_of_safety: f,
-            theta_rad: None,
-        }),
+        (None, Some(f)) if equations.is_frictionless() && model.circular => {
+            FactorOutcome::Solved(SpencerFactor {
+                factor_of_safety: f,
+                theta_rad: None,
+            })
+        }
         (_, bishop) => FactorOutcome::Unsolved { bishop },
+    }
+}
+
+/// Bishop's F as reported: a moment equation about the centre of rotation, meaningless without
+/// one. `about_reference` is Bishop's F about the model's reference (Spencer's start), which is
+/// that centre for a circle.
+fn reported_bishop(model: &SliceModel, about_reference: Option<f64>) -> Option<f64> {
+    match model.moment_centre {
+        Some(centre) if centre == model.reference => about_reference,
+        Some(_) => methods::bishop_factor(model),
+        None => None,
     }
 }
 
@@ -180,12 +193,7 @@ pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerS
         if newly.is_empty() || solution.status == SpencerStatus::NoSolution {
             break;
         }
-        for &i in &newly {
-            current.slices[i].tan_phi = 0.0;
-            if drop_cohesion {
-                current.slices[i].cohesion = 0.0;
-            }
-        }
+        current = with_strength_dropped(&current, &newly, settings.negative_effective_stress);
         dropped.extend(newly);
         solution = solve_classic(&current, settings);
     }
@@ -194,12 +202,35 @@ pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerS
     solution
 }
 
+/// `model` with the strength of `slices` dropped as `treatment` says: the friction (and with
+/// [`NegativeEffectiveStress::DropStrength`] the cohesion); unchanged with `Keep`. The methods
+/// side by side answer on the slices Spencer's answer dropped, so that one treatment of
+/// tension holds for the headline and every method (model §6.3).
+pub fn with_strength_dropped(
+    model: &SliceModel,
+    slices: &[usize],
+    treatment: NegativeEffectiveStress,
+) -> SliceModel {
+    let mut out = model.clone();
+    if treatment == NegativeEffectiveStress::Keep {
+        return out;
+    }
+    for &i in slices {
+        if let Some(slice) = out.slices.get_mut(i) {
+            slice.tan_phi = 0.0;
+            if treatment == NegativeEffectiveStress::DropStrength {
+                slice.cohesion = 0.0;
+            }
+        }
+    }
+    out
+}
+
 /// The classic equations, with the physical check.
 fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
     let equations = Equations::new(model);
     let mut solved = solve_equations(&equations, settings);
-    // Bishop's F is a moment equation about a centre of rotation: without one it means nothing.
-    solved.bishop = solved.bishop.filter(|_| model.has_moment_centre);
+    solved.bishop = reported_bishop(model, solved.bishop);
     match (solved.root, solved.bishop) {
         (Some((f, theta)), _) if !is_physical(&equations, f, theta) => {
             // Described, so that the slices in tension are known; F and θ withheld.
@@ -215,7 +246,7 @@ fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolut
             }
         }
         (Some((f, theta)), _) => describe(model, &equations, f, theta, &solved),
-        (None, Some(bishop)) if equations.is_frictionless() => {
+        (None, Some(bishop)) if equations.is_frictionless() && model.circular => {
             let mut s = describe(model, &equations, bishop, 0.0, &solved);
             s.status = SpencerStatus::MomentOnly;
             s.theta_rad = None;

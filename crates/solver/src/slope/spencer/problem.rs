@@ -190,7 +190,8 @@ impl SlopeProblem {
             seismic: self.seismic,
             loads: self.external_loads.clone(),
             reference: g.centre,
-            has_moment_centre: true,
+            moment_centre: Some(g.centre),
+            circular: true,
             length_scale: g.radius,
         }
     }
