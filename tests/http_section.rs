@@ -80,6 +80,42 @@ async fn the_simple_slope_takes_an_absolute_circle_and_a_surface() {
 }
 
 #[tokio::test]
+async fn the_simple_form_and_the_same_slope_as_a_section_agree_on_every_circle() {
+    // model §6.3: the relative circle (X, Y, F_e) and the same circle given absolutely on the
+    // slope written out as a section, centres in front of the toe included (the thesis'
+    // geometry answered 0.9776 where the section had no solution): the same answer, to the
+    // last digit JSON prints, or the same refusal.
+    let server = Server::start().await;
+    let soil = json!({"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30});
+    let section = json!({"ground": [[-100, 0], [0, 0], [20, 10], [200, 10]],
+                         "layers": [{"top": null, "soil": soil}]});
+    for (x, y, fe) in [
+        (3.0, 20.0, 0.0),
+        (0.0, 25.0, 0.0),
+        (-1.0, 30.0, 0.0),
+        (-2.0, 15.0, 0.0),
+        (-8.0, 30.0, 0.0),
+        (4.0, 18.0, 0.3),
+        (-6.0, 10.0, 0.0),
+    ] {
+        let relative = json!({"slope": {"height": 10, "length": 20}, "soil": soil,
+            "circle": {"x": x, "y": y, "lower_end_factor": fe}, "slices": 50});
+        let centre = [-fe * 10.0 + 0.0 + x, y];
+        let absolute = json!({"section": section, "slices": 50,
+            "circle": {"centre": centre, "radius": f64::hypot(x, y)}});
+        let (status_a, _, a) = server.post("/slope/spencer", &relative).await;
+        let (status_b, _, b) = server.post("/slope/spencer", &absolute).await;
+        assert_eq!(status_a, status_b, "({x}, {y}, {fe}): {a} vs {b}");
+        assert_eq!(a["status"], b["status"], "({x}, {y}, {fe})");
+        assert_eq!(
+            a["factor_of_safety"], b["factor_of_safety"],
+            "({x}, {y}, {fe})"
+        );
+        assert_eq!(a["theta_deg"], b["theta_deg"], "({x}, {y}, {fe})");
+    }
+}
+
+#[tokio::test]
 async fn section_errors_name_their_fields() {
     let server = Server::start().await;
     let cases: Vec<(Value, &str)> = vec![

@@ -5,11 +5,9 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::slope::section::{
-    Layer, Polyline, Section, SectionParts, SectionProblem, SlipShape,
-};
+use thrustline_solver::slope::section::{Section, SectionProblem, SlipShape};
 use thrustline_solver::slope::{
-    Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, SlopeProblem, Soil,
+    Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, Soil,
 };
 
 use super::methods::interslice_function;
@@ -19,9 +17,9 @@ use super::section::{
 };
 use crate::error::ApiError;
 use crate::limits::{
-    CENTRE_HEIGHT, DEFAULT_WATER_UNIT_WEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR,
-    LOWER_END_FACTOR_MAX, MAX_GRID_SLICES, MAX_SLICES, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
-    SEISMIC_KV, SLICES, SLICE_TOLERANCE,
+    CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
+    MAX_GRID_SLICES, MAX_SLICES, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH, SEISMIC_KV, SLICES,
+    SLICE_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, SectionSearch, SlopePlan, Target};
@@ -220,14 +218,15 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
                         LOWER_END_FACTOR,
                     )?,
                 };
-                Ok(Target::Surface(Analysed::Simple(SlopeProblem::new(
-                    embankment,
-                    relative,
+                let problem = SectionProblem::new(
+                    Section::simple(&embankment, soil)?,
+                    relative.placed(embankment.height())?,
                     parts.slices,
-                    soil,
                     parts.seismic,
-                    parts.external_loads,
-                )?)))
+                    None,
+                )?
+                .with_slice_loads(parts.external_loads)?;
+                Ok(Target::Surface(Analysed::Section(Box::new(problem))))
             }
             Ground::Section(_) => Err(ApiError::invalid(
                 "circle",
@@ -279,21 +278,7 @@ fn section_target(
 ) -> Result<Target, ApiError> {
     let section = match parts.ground {
         Ground::Section(section) => *section,
-        Ground::Simple(embankment, soil) => Section::new(SectionParts {
-            ground: Polyline::new(vec![(0.0, 0.0), (embankment.length(), embankment.height())])
-                .map_err(|e| ApiError::invalid("slope", e.to_string()))?,
-            layers: vec![Layer {
-                top: None,
-                soil,
-                pore_pressure_ratio: Some(soil.pore_pressure_ratio()),
-            }],
-            bedrock: None,
-            piezometric_line: None,
-            water_unit_weight: DEFAULT_WATER_UNIT_WEIGHT,
-            surcharges: Vec::new(),
-            line_loads: Vec::new(),
-            tension_crack: None,
-        })?,
+        Ground::Simple(embankment, soil) => Section::simple(&embankment, soil)?,
     };
     let problem = SectionProblem::new(section, shape, parts.slices, parts.seismic, moment_centre)?;
     Ok(Target::Surface(Analysed::Section(Box::new(problem))))

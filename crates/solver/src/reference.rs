@@ -65,6 +65,23 @@ pub mod spencer_1967 {
     }
 
     /// The example circle cut into `slices` slices, static, with γ = [`UNIT_WEIGHT`].
+    /// The example circle on the embankment as a section, as the service analyses it.
+    pub fn section_problem(slices: usize) -> crate::slope::section::SectionProblem {
+        let placed = circle().placed(HEIGHT).expect("Spencer's circle is finite");
+        let section = crate::slope::section::Section::simple(&embankment(), soil(UNIT_WEIGHT))
+            .expect("Spencer's embankment is a section");
+        crate::slope::section::SectionProblem::new(
+            section,
+            placed,
+            NonZeroUsize::new(slices).expect("at least one slice"),
+            Default::default(),
+            None,
+        )
+        .expect("Spencer's circle cuts the embankment")
+    }
+
+    /// The example circle in the thesis' own geometry (kept as an independent check of the
+    /// section engine).
     pub fn problem(slices: usize) -> SlopeProblem {
         SlopeProblem::new(
             embankment(),

@@ -56,13 +56,15 @@ fn spencer_search(grid: Option<SearchGrid>) -> Target {
 fn one_circle_is_answered_as_spencers_method_answers_it() {
     // Spencer (1967) example at 100 slices: the analysis is the solve, bit for bit, and the
     // methods planned are the methods on the same slices.
-    let problem = spencer_1967::problem(100);
-    let alone = solve_spencer(&problem.model(), &SpencerSettings::default());
-    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Simple(problem.clone())));
+    let problem = spencer_1967::section_problem(100);
+    let alone = solve_spencer(problem.model(), &SpencerSettings::default());
+    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Section(Box::new(
+        problem.clone(),
+    ))));
     plan.methods = vec![Method::Bishop];
     let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
     assert_eq!(answer.solution, alone);
-    let bishop_alone = bishop(&problem.model());
+    let bishop_alone = bishop(problem.model());
     assert_eq!(answer.methods.unwrap().bishop, Some(bishop_alone));
     // Nothing else was planned, so nothing else ran.
     assert!(answer.search.is_none() && answer.curves.is_none() && answer.refinement.is_none());
@@ -81,7 +83,9 @@ fn one_circle_is_answered_as_spencers_method_answers_it() {
 fn a_planned_refinement_reaches_the_converged_factor() {
     // Spencer (1967): F = 1.0695 as N → ∞; from 10 slices to 1e-6, within the published
     // rounding (5e-5).
-    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Simple(spencer_1967::problem(10))));
+    let mut plan = SlopePlan::spencer(Target::Surface(Analysed::Section(Box::new(
+        spencer_1967::section_problem(10),
+    ))));
     plan.slice_tolerance = Some(1e-6);
     let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
     let refinement = answer.refinement.unwrap();

@@ -26,7 +26,8 @@ pub fn ground(
     ground.push((left.min(first.0), bottom));
     canvas.polygon(&ground, "fill=\"#d7ccc8\" stroke=\"none\"");
     let mut legend: Vec<(&'static str, String)> = Vec::new();
-    if let Analysed::Section(p) = problem {
+    let Analysed::Section(p) = problem;
+    {
         // Each layer in its colour, over the plain ground colour.
         let fills = layer_fills(p.section(), left.min(first.0), right.max(last.0), bottom);
         for fill in fills.iter().filter(|_| p.section().layers().len() > 1) {

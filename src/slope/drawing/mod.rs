@@ -43,17 +43,6 @@ fn scene(problem: &Analysed) -> Scene {
         })
         .collect();
     match problem {
-        Analysed::Simple(p) => {
-            let e = &p.geometry.embankment;
-            Scene {
-                ground: vec![(0.0, 0.0), (e.length(), e.height())],
-                lines: Vec::new(),
-                surface: problem.surface(),
-                sides,
-                circle: problem.circle(),
-                loads: Vec::new(),
-            }
-        }
         Analysed::Section(p) => {
             let section = p.section();
             let mut lines = Vec::new();

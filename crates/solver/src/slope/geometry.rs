@@ -1,6 +1,12 @@
 //! The embankment, the slip circle and the vertical slices it is cut into (model §2.1; the
 //! thesis' "Geometry Configuration" script).
 //!
+//! The service analyses the simple embankment as a section ([`super::section::Section::simple`],
+//! the circle placed by [`SlipCircle::placed`]): one engine for every slope. This module keeps
+//! the thesis' own geometry as an independent check of that engine (the two agree to rounding
+//! wherever the circle's mass starts at its lower end) and as the reference the published
+//! tables are reproduced with.
+//!
 //! The slip circle passes through its lower end, which lies on the ground at `F_e·H` in front of
 //! the toe; its centre is given relative to that lower end. The sliding mass is bounded by the
 //! lower arc of the circle and the ground surface, between the lower end and the point where the
@@ -73,6 +79,43 @@ pub struct SlipCircle {
     pub y: f64,
     /// Lower-end position factor F_e: the lower end lies F_e·H in front of the toe (≥ 0).
     pub lower_end_factor: f64,
+}
+
+impl SlipCircle {
+    /// The circle as a section's: centre (−F_e·H + X, Y), radius √(X² + Y²), after the checks
+    /// of the thesis' variables (Y > 0, F_e ≥ 0, all finite).
+    pub fn placed(&self, height: f64) -> Result<super::section::SlipShape, SlopeError> {
+        check_range(
+            SlopeParameter::CircleX,
+            self.x,
+            f64::MIN,
+            false,
+            f64::MAX,
+            "a finite number",
+        )?;
+        check_range(
+            SlopeParameter::CircleY,
+            self.y,
+            0.0,
+            true,
+            f64::MAX,
+            "a finite number > 0 (the centre lies above the lower end)",
+        )?;
+        check_range(
+            SlopeParameter::LowerEndFactor,
+            self.lower_end_factor,
+            0.0,
+            false,
+            f64::MAX,
+            "a finite number ≥ 0",
+        )?;
+        // `+ 0.0` turns −0.0 (F_e = 0) into 0.0.
+        let through = -self.lower_end_factor * height + 0.0;
+        Ok(super::section::SlipShape::Circle {
+            centre: (through + self.x, self.y),
+            radius: self.x.hypot(self.y),
+        })
+    }
 }
 
 /// One vertical slice of the sliding mass.

@@ -18,9 +18,8 @@ use crate::budget::Budget;
 use crate::numerics::{nelder_mead, Minimum};
 use crate::outcome::SolverFailure;
 
-use super::spencer::{
-    spencer_factor_outcome, FactorOutcome, Seismic, SlopeProblem, Soil, SpencerSettings,
-};
+use super::section::{Section, SectionProblem};
+use super::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, Soil, SpencerSettings};
 
 /// The region of centres searched and the grid laid over it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -101,15 +100,26 @@ pub struct SearchProblem {
 }
 
 impl SearchProblem {
-    /// The problem of one circle of the search (no external loads: the slices move).
-    pub fn at(&self, circle: SlipCircle) -> Result<SlopeProblem, SlopeError> {
-        SlopeProblem::new(
-            self.embankment,
-            circle,
+    /// The problem of one circle of the search: the embankment as a section
+    /// ([`Section::simple`]), the circle through (−F_e·H, 0) with its centre (X, Y) from there
+    /// (no external loads: the slices move).
+    pub fn at(&self, circle: SlipCircle) -> Result<SectionProblem, SlopeError> {
+        self.on(&self.section()?, circle)
+    }
+
+    /// The embankment as a section, built once for a search's circles.
+    pub fn section(&self) -> Result<Section, SlopeError> {
+        Section::simple(&self.embankment, self.soil)
+    }
+
+    /// One circle's problem on `section` ([`SearchProblem::section`]).
+    fn on(&self, section: &Section, circle: SlipCircle) -> Result<SectionProblem, SlopeError> {
+        SectionProblem::new(
+            section.clone(),
+            circle.placed(self.embankment.height())?,
             self.slices,
-            self.soil,
             self.seismic,
-            Vec::new(),
+            None,
         )
     }
 }
@@ -201,20 +211,25 @@ pub fn factor_of_safety(
     circle: SlipCircle,
     settings: &SpencerSettings,
 ) -> Option<f64> {
-    outcome(problem, circle, settings).ok()
+    let section = problem.section().ok()?;
+    outcome(problem, &section, circle, settings).ok()
 }
 
 /// Spencer's F for one circle; `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it
 /// has no physical solution (with Bishop's F there, if any).
 fn outcome(
     problem: &SearchProblem,
+    section: &Section,
     circle: SlipCircle,
     settings: &SpencerSettings,
 ) -> Result<f64, Option<Option<f64>>> {
-    let slope = problem.at(circle).map_err(|_| None::<Option<f64>>)?;
-    match spencer_factor_outcome(&slope.model(), settings) {
+    let slope = problem
+        .on(section, circle)
+        .map_err(|_| None::<Option<f64>>)?;
+    match spencer_factor_outcome(slope.model(), settings) {
         FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
         FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
+        FactorOutcome::Undriven => Err(None),
     }
 }
 
@@ -237,6 +252,7 @@ type Outcomes = Vec<Vec<Result<f64, Option<Option<f64>>>>>;
 
 fn evaluate_grid(
     problem: &SearchProblem,
+    section: &Section,
     grid: &SearchGrid,
     settings: &SearchSettings,
     budget: &Budget,
@@ -258,7 +274,7 @@ fn evaluate_grid(
                     if !within_reach(circle, settings.max_radius) {
                         return Err(None);
                     }
-                    outcome(problem, circle, &settings.spencer)
+                    outcome(problem, section, circle, &settings.spencer)
                 })
                 .collect()
         })
@@ -332,6 +348,7 @@ fn recentred(grid: SearchGrid, v: &[f64]) -> SearchGrid {
 /// is searched too, the lower end with it.
 fn refine_from(
     problem: &SearchProblem,
+    section: &Section,
     grid: &SearchGrid,
     factors: &FactorGrid,
     (i, j): (usize, usize),
@@ -362,7 +379,7 @@ fn refine_from(
         if !within_reach(circle_at(v), settings.max_radius) {
             return f64::INFINITY;
         }
-        factor_of_safety(problem, circle_at(v), &settings.spencer).unwrap_or(f64::INFINITY)
+        outcome(problem, section, circle_at(v), &settings.spencer).unwrap_or(f64::INFINITY)
     };
     // Centres first, at the grid's lower-end factor…
     let start = [factors.xs[i], factors.ys[j]];
@@ -404,11 +421,31 @@ pub fn search_critical_circle(
     settings: &SearchSettings,
     budget: &Budget,
 ) -> SearchSolution {
+    // The embankment and soil are valid by construction: a section that cannot be built has no
+    // circle to offer.
+    let Ok(section) = problem.section() else {
+        return SearchSolution {
+            status: SearchStatus::NoValidCircle,
+            circle: None,
+            factor_of_safety: None,
+            grid: FactorGrid {
+                xs: grid.xs(),
+                ys: grid.ys(),
+                factors: vec![vec![None; grid.nx]; grid.ny],
+            },
+            evaluations: 0,
+            regrids: 0,
+            is_on_edge: false,
+            unsolved: 0,
+            unsolved_bishop_minimum: None,
+            unsolved_near_minimum: false,
+        };
+    };
     let mut grid = grid;
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let (factors, outcomes) = evaluate_grid(problem, &grid, settings, budget);
+        let (factors, outcomes) = evaluate_grid(problem, &section, &grid, settings, budget);
         evaluations += grid.nx * grid.ny;
         let points = ranked(&factors);
         let Some(&(_, bi, bj)) = points.first() else {
@@ -441,7 +478,7 @@ pub fn search_critical_circle(
         }
         let refined: Vec<Minimum> = starts
             .par_iter()
-            .map(|&start| refine_from(problem, &grid, &factors, start, settings, budget))
+            .map(|&start| refine_from(problem, &section, &grid, &factors, start, settings, budget))
             .collect();
         evaluations += refined.iter().map(|r| r.evaluations).sum::<usize>();
         let best = refined

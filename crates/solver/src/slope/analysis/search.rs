@@ -62,7 +62,7 @@ pub(super) fn simple(
     );
     let answered = problem.at(circle)?;
     let report = SearchReport::of_simple(&found, hard_bounds, grid_lower_end);
-    Ok(Ok((Analysed::Simple(answered), report)))
+    Ok(Ok((Analysed::Section(Box::new(answered)), report)))
 }
 
 /// A section's critical circle, then the non-circular stage from it when planned.

@@ -1,20 +1,18 @@
-//! The slip surface an analysis answers: on the simple embankment (the thesis' relative circle)
-//! or on a section; what an answer and its drawing read of it, in the caller's coordinates.
+//! The slip surface an analysis answers, on a section (the simple embankment is one,
+//! [`crate::slope::section::Section::simple`]); what an answer and its drawing read of it, in
+//! the caller's coordinates.
 
 use std::borrow::Cow;
 use std::num::NonZeroUsize;
 
 use crate::slope::section::{SectionProblem, SlipShape};
 use crate::slope::slices::{SliceModel, Sliced};
-use crate::slope::spencer::SlopeProblem;
 use crate::slope::SlopeError;
 
-/// One slip surface on the simple embankment (the thesis' relative circle) or on a section.
+/// One slip surface on a section (the simple slope as one, its relative circle placed).
 #[derive(Debug, Clone)]
 pub enum Analysed {
-    /// The simple embankment with a circle relative to its lower end.
-    Simple(SlopeProblem),
-    /// A section (or the simple slope as one) with an absolute circle or a polyline.
+    /// A section with a circle or a polyline.
     Section(Box<SectionProblem>),
 }
 
@@ -35,7 +33,6 @@ impl Analysed {
     /// A solver-frame x in the request's coordinates.
     pub fn request_x(&self, x: f64) -> f64 {
         match self {
-            Self::Simple(_) => x,
             Self::Section(p) => p.to_section_x(x),
         }
     }
@@ -43,15 +40,6 @@ impl Analysed {
     /// The circle, when the surface is one.
     pub fn circle(&self) -> Option<PlacedCircle> {
         match self {
-            Self::Simple(p) => {
-                let g = &p.geometry;
-                Some(PlacedCircle {
-                    centre: g.centre,
-                    radius: g.radius,
-                    lower_end: g.lower_end,
-                    upper_exit: g.upper_exit,
-                })
-            }
             Self::Section(p) => match p.shape() {
                 SlipShape::Circle { centre, radius } => {
                     let (lower_end, upper_exit) = p.ends();
@@ -70,12 +58,6 @@ impl Analysed {
     /// The slip surface as cut, left to right (the slice bases' end points).
     pub fn surface(&self) -> Vec<(f64, f64)> {
         match self {
-            Self::Simple(p) => {
-                let g = &p.geometry;
-                std::iter::once(g.lower_end)
-                    .chain(g.slices.iter().map(|s| (s.x_right, s.base_right_y)))
-                    .collect()
-            }
             Self::Section(p) => p.surface(),
         }
     }
@@ -83,7 +65,6 @@ impl Analysed {
     /// Ground level above a solver-frame x.
     pub fn ground_y(&self, x: f64) -> f64 {
         match self {
-            Self::Simple(p) => p.geometry.embankment.ground(x),
             Self::Section(p) => p.section().ground().y_at(self.request_x(x)),
         }
     }
@@ -92,21 +73,18 @@ impl Analysed {
 impl Sliced for Analysed {
     fn model(&self) -> Cow<'_, SliceModel> {
         match self {
-            Self::Simple(p) => Cow::Owned(p.model()),
             Self::Section(p) => Cow::Borrowed(p.model()),
         }
     }
 
     fn slice_count(&self) -> usize {
         match self {
-            Self::Simple(p) => p.geometry.slices.len(),
             Self::Section(p) => Sliced::slice_count(p.as_ref()),
         }
     }
 
     fn with_slices(&self, slices: NonZeroUsize) -> Result<Self, SlopeError> {
         Ok(match self {
-            Self::Simple(p) => Self::Simple(p.with_slices(slices)?),
             Self::Section(p) => Self::Section(Box::new(p.with_slices(slices)?)),
         })
     }

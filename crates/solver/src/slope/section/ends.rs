@@ -7,6 +7,9 @@ use crate::slope::error::{SlopeError, SlopeParameter};
 /// Relative tolerance on heights for "at the ground".
 const ON_GROUND: f64 = 1e-9;
 
+/// Relative distance of a crossing from a ground vertex that is rounding.
+const VERTEX_ROUNDING: f64 = 1e-12;
+
 /// The x of entry and exit (entry < exit) of `shape` on `ground`.
 pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<(f64, f64), SlopeError> {
     match shape {
@@ -93,7 +96,20 @@ fn circle_ends(
             ),
         });
     }
-    Ok((entry, exit))
+    let snap = |x: f64| on_vertex(ground, x, &arc, radius);
+    Ok((snap(entry), snap(exit)))
+}
+
+/// A crossing within rounding (1e-12 of the radius) of a ground vertex that the arc passes
+/// through, moved onto that vertex: a circle placed through a toe (the simple form's lower end)
+/// ends exactly there, not 1e-14 beside it.
+fn on_vertex(ground: &Polyline, x: f64, arc: &impl Fn(f64) -> f64, radius: f64) -> f64 {
+    let tolerance = VERTEX_ROUNDING * radius.max(x.abs());
+    ground
+        .points()
+        .iter()
+        .find(|v| (v.0 - x).abs() <= tolerance && (arc(v.0) - v.1).abs() <= tolerance)
+        .map_or(x, |v| v.0)
 }
 
 /// The first and last crossings of the surface with the ground; the surface must start and end

@@ -6,6 +6,7 @@ use std::num::NonZeroUsize;
 use super::column::{LevelTable, Levels};
 use super::tests::{line, one_soil};
 use super::*;
+use crate::slope::spencer::Seismic;
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
 
 #[test]

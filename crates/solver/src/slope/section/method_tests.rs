@@ -8,6 +8,7 @@ use super::*;
 use crate::slope::spencer::methods::{
     bishop, janbu, morgenstern_price, ordinary, InterSliceFunction,
 };
+use crate::slope::spencer::Seismic;
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
 
 #[test]

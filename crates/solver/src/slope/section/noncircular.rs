@@ -224,7 +224,7 @@ fn confirmed_factor(
         let cut = place(section, Some(mirror), shape, n, seismic, None).ok()?;
         match spencer_factor_outcome(&cut.model, settings) {
             FactorOutcome::Solved(s) => Some(s.factor_of_safety),
-            FactorOutcome::Unsolved { .. } => None,
+            FactorOutcome::Unsolved { .. } | FactorOutcome::Undriven => None,
         }
     };
     match (at(slices), at(doubled)) {

@@ -206,6 +206,7 @@ impl Evaluator<'_> {
         match spencer_factor_outcome(&cut.model, &self.spencer) {
             FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
             FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
+            FactorOutcome::Undriven => Err(None),
         }
     }
 

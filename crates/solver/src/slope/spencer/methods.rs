@@ -78,19 +78,38 @@ pub fn ordinary(model: &SliceModel) -> MethodFactor {
         return MethodFactor::plain(None);
     };
     let equations = Equations::new(&model.about(centre));
-    let (mut driving, mut resisting) = (0.0, 0.0);
+    let (driving, _) = ordinary_moments(&equations);
+    let resisting: f64 = equations
+        .terms
+        .iter()
+        .map(|t| t.resistance * (t.arm.0 * t.sin_alpha - t.arm.1 * t.cos_alpha))
+        .sum();
+    let f = -resisting / driving;
+    MethodFactor::plain((driving < 0.0 && f.is_finite() && f > 0.0).then_some(f))
+}
+
+/// The moment of the known forces about the reference (negative: towards the toe), with the
+/// known normal force on each base, and the sum of the terms' sizes (for rounding).
+fn ordinary_moments(equations: &Equations) -> (f64, f64) {
+    let (mut driving, mut size) = (0.0, 0.0);
     for t in &equations.terms {
         let (s, c) = (t.sin_alpha, t.cos_alpha);
         // The known force K from its components along and across the base.
         let kx = -t.a_t * c + t.a_n * s;
         let ky = -t.a_t * s - t.a_n * c;
         let (dx, dy) = t.arm;
-        let normal = t.a_n;
-        driving += dx * ky - dy * kx + t.moment + normal * (dx * c + dy * s);
-        resisting += t.resistance * (dx * s - dy * c);
+        let term = dx * ky - dy * kx + t.moment + t.a_n * (dx * c + dy * s);
+        driving += term;
+        size += term.abs();
     }
-    let f = -resisting / driving;
-    MethodFactor::plain((driving < 0.0 && f.is_finite() && f > 0.0).then_some(f))
+    (driving, size)
+}
+
+/// Whether the known forces drive the mass towards the toe about the reference (a circle's
+/// centre): a moment beyond rounding (1e-12 of its terms' sizes).
+pub(super) fn drives(equations: &Equations) -> bool {
+    let (driving, size) = ordinary_moments(equations);
+    driving < -1e-12 * size
 }
 
 /// Bishop's simplified method: the moment equation with horizontal inter-slice forces.

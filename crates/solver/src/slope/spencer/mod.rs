@@ -76,7 +76,7 @@ pub fn solve_spencer_factor(
 ) -> Option<SpencerFactor> {
     match spencer_factor_outcome(model, settings) {
         FactorOutcome::Solved(s) => Some(s),
-        FactorOutcome::Unsolved { .. } => None,
+        FactorOutcome::Unsolved { .. } | FactorOutcome::Undriven => None,
     }
 }
 
@@ -91,11 +91,18 @@ pub enum FactorOutcome {
         /// Bishop's simplified F (circles, or a given moment centre).
         bishop: Option<f64>,
     },
+    /// A circle whose known forces drive no rotation towards the toe (a lens of level ground
+    /// symmetric about the centre's vertical, say): nothing to hold, no F. Not a candidate of a
+    /// search, and not counted as unsolved.
+    Undriven,
 }
 
 /// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution.
 pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
+        if model.circular && !methods::drives(&Equations::new(model)) {
+            return FactorOutcome::Undriven;
+        }
         let s = solve_spencer(model, settings);
         return match s.factor_of_safety {
             Some(f) => FactorOutcome::Solved(SpencerFactor {
@@ -108,6 +115,9 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
         };
     }
     let equations = Equations::new(model);
+    if model.circular && !methods::drives(&equations) {
+        return FactorOutcome::Undriven;
+    }
     // φ' = 0 on a circle: the moment equation about the centre alone fixes F whatever the
     // inter-slice forces (the base normals pass through the centre, the shear is c'l/F), so
     // Bishop's F is Spencer's; no need to look for θ.
