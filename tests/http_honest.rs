@@ -53,7 +53,7 @@ async fn a_search_does_not_drift_to_circles_held_up_by_tension() {
 async fn unsolved_circles_below_the_minimum_are_reported() {
     // A 76° face 10 high (c' = 20, φ' = 30°): near the face's critical circle F_f(θ) and F_m(θ)
     // run within 0.2 % of each other without crossing, on the classic domain or past its
-    // poles, so hundreds of circles have no Spencer root; Bishop's F on them goes lower than
+    // poles, so dozens of circles have no Spencer root; Bishop's F on them goes lower than
     // the F found, and the answer says so with that F.
     let server = Server::start().await;
     let body = json!({"section": {"ground": [[0, 0], [20, 0], [22.5, 10], [45, 10]],
@@ -66,7 +66,7 @@ async fn unsolved_circles_below_the_minimum_are_reported() {
         .as_f64()
         .unwrap();
     assert!(bishop < f, "{bishop} vs {f}");
-    assert!(answer["search"]["unsolved"].as_u64().unwrap() > 100);
+    assert!(answer["search"]["unsolved"].as_u64().unwrap() > 50);
     let warnings = answer["warnings"].to_string();
     assert!(
         warnings.contains("may be lower than reported")
