@@ -184,6 +184,8 @@ pub const RADIUS: Range = Range::above(0.0, MAX_LENGTH);
 pub const CENTRE_HEIGHT: Range = Range::greater_than(0.0);
 /// The length of a road load's patch or an axle's contact.
 pub const PATCH_LENGTH: Range = Range::closed(0.0, MAX_LENGTH);
+/// The least depth of a search's candidate surfaces below the ground.
+pub const MIN_DEPTH: Range = Range::closed(0.0, MAX_LENGTH);
 /// A tension crack's depth.
 pub const CRACK_DEPTH: Range = Range::above(0.0, MAX_LENGTH);
 /// The water in a tension crack (at most its depth, checked beside).

@@ -7,22 +7,23 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::slope::section::{Section, SectionProblem, SlipShape};
 use thrustline_solver::slope::{
-    Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, Soil,
+    Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, SlopeError,
+    SlopeParameter, Soil,
 };
 
 use super::methods::interslice_function;
-use super::request::{CircleDto, SearchDto, SpencerRequest};
+use super::request::{CircleDto, CompositeDto, SearchDto, SpencerRequest};
 use super::section::{
     polyline, refuse_section_only, search_region, section_from, soil as soil_from,
 };
 use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
-    MAX_GRID_SLICES, MAX_SLICES, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH, SEISMIC_KV, SLICES,
-    SLICE_TOLERANCE,
+    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
+    SEISMIC_KV, SLICES, SLICE_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
-use thrustline_solver::slope::analysis::{Analysed, SectionSearch, SlopePlan, Target};
+use thrustline_solver::slope::analysis::{Analysed, Candidates, SectionSearch, SlopePlan, Target};
 
 /// The ground and soil: a section, or the simple slope with its soil.
 enum Ground {
@@ -74,6 +75,7 @@ impl SpencerRequest {
                 "is for a polyline surface only (a circle uses its centre)",
             ));
         }
+        let mut candidates = Candidates::default();
         let target = if let Some(circle) = &self.circle {
             circle_target(circle, parts)?
         } else if let Some(points) = &self.surface {
@@ -87,30 +89,9 @@ impl SpencerRequest {
                 .transpose()?;
             section_target(parts, SlipShape::Polyline(line), centre)?
         } else if let Some(search) = &self.search {
-            match parts.ground {
-                Ground::Simple(embankment, soil) => {
-                    if !parts.external_loads.is_empty() {
-                        return Err(ApiError::invalid(
-                            "external_loads",
-                            "cannot be combined with search: loads are given per slice, and \
-                             the slices change from circle to circle",
-                        ));
-                    }
-                    search_from(search, embankment, soil, parts.slices, parts.seismic)?
-                }
-                Ground::Section(section) => {
-                    let (region, hard, noncircular) =
-                        search_region(search, &section, parts.slices.get())?;
-                    Target::SectionSearch(Box::new(SectionSearch {
-                        section: *section,
-                        region,
-                        hard,
-                        slices: parts.slices,
-                        seismic: parts.seismic,
-                        noncircular,
-                    }))
-                }
-            }
+            let (target, found) = search_target(search, parts)?;
+            candidates = found;
+            target
         } else {
             return Err(ApiError::invalid(
                 "circle",
@@ -128,6 +109,7 @@ impl SpencerRequest {
             methods: methods.into_iter().map(Into::into).collect(),
             interslice_function: interslice_function(self.interslice_function.as_deref())?,
             negative_effective_stress: self.negative_effective_stress.into(),
+            candidates,
         })
     }
 
@@ -204,6 +186,36 @@ impl SpencerRequest {
     }
 }
 
+/// A placed circle that cuts no mass names the relative centre the request gave.
+fn relative_centre(error: SlopeError) -> ApiError {
+    match error {
+        SlopeError::NoSlipMass {
+            parameter: SlopeParameter::CircleCentre,
+            reason,
+        } => ApiError::invalid(
+            "circle.x, circle.y",
+            format!("the centre (relative to the lower end) places no slip mass: {reason}"),
+        ),
+        other => other.into(),
+    }
+}
+
+/// What a search may answer: `search.min_depth` (by default 2 % of `height`) and
+/// `search.composite`.
+fn search_candidates(search: &SearchDto, height: f64) -> Result<Candidates, ApiError> {
+    let min_depth = match search.min_depth {
+        Some(d) => within("search.min_depth", d, MIN_DEPTH)?,
+        None => DEFAULT_MIN_DEPTH_OVER_HEIGHT * height,
+    };
+    Ok(Candidates {
+        min_depth,
+        circles_only: search.composite == CompositeDto::CirclesOnly,
+    })
+}
+
+/// The default `search.min_depth` as a fraction of the height (model §6.4).
+const DEFAULT_MIN_DEPTH_OVER_HEIGHT: f64 = 0.02;
+
 /// A circle in either form: relative (the simple slope only) or absolute.
 fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
     match (circle.x, circle.y, circle.centre, circle.radius) {
@@ -224,7 +236,8 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
                     parts.slices,
                     parts.seismic,
                     None,
-                )?
+                )
+                .map_err(relative_centre)?
                 .with_slice_loads(parts.external_loads)?;
                 Ok(Target::Surface(Analysed::Section(Box::new(problem))))
             }
@@ -359,4 +372,42 @@ fn search_from(
         grid,
         hard_bounds: hard,
     })
+}
+
+/// A search on the simple slope or a section, and what it may answer.
+fn search_target(search: &SearchDto, parts: Parts) -> Result<(Target, Candidates), ApiError> {
+    match parts.ground {
+        Ground::Simple(embankment, soil) => {
+            if !parts.external_loads.is_empty() {
+                return Err(ApiError::invalid(
+                    "external_loads",
+                    "cannot be combined with search: loads are given per slice, and the slices \
+                     change from circle to circle",
+                ));
+            }
+            let candidates = search_candidates(search, embankment.height())?;
+            let target = search_from(search, embankment, soil, parts.slices, parts.seismic)?;
+            Ok((target, candidates))
+        }
+        Ground::Section(section) => {
+            let (low, top) = section
+                .ground()
+                .points()
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                    (a.min(p.1), b.max(p.1))
+                });
+            let candidates = search_candidates(search, top - low)?;
+            let (region, hard, noncircular) = search_region(search, &section, parts.slices.get())?;
+            let target = Target::SectionSearch(Box::new(SectionSearch {
+                section: *section,
+                region,
+                hard,
+                slices: parts.slices,
+                seismic: parts.seismic,
+                noncircular,
+            }));
+            Ok((target, candidates))
+        }
+    }
 }

@@ -40,6 +40,12 @@ pub struct SearchOutDto {
     /// Whether circles without a solution lie at or next to the grid centre of the minimum
     /// (the least F found may then not be the least F there is).
     pub unsolved_near_minimum: bool,
+    /// The least depth below the ground a candidate surface had to reach (`search.min_depth`,
+    /// by default 2 % of the height).
+    pub min_depth: f64,
+    /// Whether circles that would cross the bedrock were candidates (`follow_bedrock`) or not
+    /// (`circles_only`).
+    pub composite: super::request::CompositeDto,
     /// With `shape: noncircular`: the least F found so far, first on the critical circle's
     /// polyline, then each time a round of the polyline search lowered it.
     #[serde(skip_serializing_if = "Option::is_none")]

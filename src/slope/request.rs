@@ -271,6 +271,27 @@ pub struct SearchDto {
     /// refinement.
     #[serde(default)]
     pub lower_end_factor_max: Option<f64>,
+    /// Surfaces whose greatest depth below the ground is smaller are not candidates (a sliver
+    /// along a c' = 0 face is not the mechanism checked). 0 ≤ d ≤ 1e9; defaults to 2 % of the
+    /// height (the ground's range of y on a section, H on the simple slope).
+    #[serde(default)]
+    pub min_depth: Option<f64>,
+    /// With bedrock: `follow_bedrock` (a circle that would cross it follows it, a composite
+    /// surface; the default) or `circles_only` (such a circle is not a candidate).
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub composite: CompositeDto,
+}
+
+/// Whether a circular search may answer composite surfaces (circles that follow the bedrock).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CompositeDto {
+    /// A circle that would cross the bedrock follows it (the default).
+    #[default]
+    FollowBedrock,
+    /// A circle that would cross the bedrock is not a candidate.
+    CirclesOnly,
 }
 
 fn default_grid() -> usize {

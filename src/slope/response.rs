@@ -2,6 +2,7 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::{Deserialize, Serialize};
+use thrustline_solver::slope::analysis::SearchReport;
 use thrustline_solver::slope::{SliceModel, Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
@@ -326,16 +327,7 @@ impl SpencerResponse {
             residual: solution.residual,
             warnings,
             solve_time_ms: solved.solve_time_ms,
-            search: solved.search.as_ref().map(|search| SearchOutDto {
-                evaluations: search.evaluations,
-                regrids: search.regrids,
-                on_edge: search.is_on_edge,
-                unsolved: search.unsolved,
-                unsolved_bishop_minimum: search.unsolved_bishop_minimum,
-                unsolved_near_minimum: search.unsolved_near_minimum,
-                path: search.path.clone(),
-                path_ms: search.path_ms.clone(),
-            }),
+            search: solved.search.as_ref().map(search_out),
             grid: solved.search.as_ref().map(|search| GridDto {
                 xs: search.grid.xs.clone(),
                 ys: search.grid.ys.clone(),
@@ -406,4 +398,24 @@ fn slice_dtos(
             }
         })
         .collect()
+}
+
+/// How a search went, as answered.
+fn search_out(search: &SearchReport) -> SearchOutDto {
+    SearchOutDto {
+        evaluations: search.evaluations,
+        regrids: search.regrids,
+        on_edge: search.is_on_edge,
+        unsolved: search.unsolved,
+        unsolved_bishop_minimum: search.unsolved_bishop_minimum,
+        unsolved_near_minimum: search.unsolved_near_minimum,
+        min_depth: search.candidates.min_depth,
+        composite: if search.candidates.circles_only {
+            super::request::CompositeDto::CirclesOnly
+        } else {
+            super::request::CompositeDto::FollowBedrock
+        },
+        path: search.path.clone(),
+        path_ms: search.path_ms.clone(),
+    }
 }

@@ -191,12 +191,70 @@ fn a_root_past_a_pole_of_m_alpha_is_found_where_the_classic_domain_has_none() {
 
 #[test]
 fn a_circle_in_level_ground_provably_has_no_root() {
-    // Symmetric about the centre's vertical: the weights drive no moment about the centre,
-    // so no finite F meets moment equilibrium (F_m = ∞ for every θ): no root, none reported.
+    // Symmetric about the centre's vertical: the weights drive no moment about the centre, so
+    // no finite F meets moment equilibrium (F_m = ∞ for every θ). Such a circle is refused as a
+    // slip surface (nothing drives it), and its slices, written out here (two mirror-image
+    // slices of a lens), have no root: Undriven to a search, no solution to a single analysis.
     let soil = Soil::new(20.0, 10.0, 30.0, 0.0).unwrap();
     let ground = vec![(-50.0, 0.0), (50.0, 0.0)];
-    let problem = circle(&section(ground, soil), (0.0, 5.0), 8.0);
-    let s = solve_spencer(problem.model(), &SpencerSettings::default());
+    let refused = SectionProblem::new(
+        section(ground, soil),
+        SlipShape::Circle {
+            centre: (0.0, 5.0),
+            radius: 8.0,
+        },
+        NonZeroUsize::new(50).unwrap(),
+        Seismic::default(),
+        None,
+    );
+    assert!(
+        matches!(&refused, Err(SlopeError::NoSlipMass { reason, .. }) if reason.contains("nothing drives")),
+        "{refused:?}"
+    );
+    let half_width = (8.0f64 * 8.0 - 5.0 * 5.0).sqrt();
+    let slice = |sign: f64| {
+        // From the centre's vertical out to the crossing: the chord from (0, −3) to (±w, 0).
+        let (x0, x1) = if sign > 0.0 {
+            (0.0, half_width)
+        } else {
+            (-half_width, 0.0)
+        };
+        let (y0, y1) = if sign > 0.0 { (-3.0, 0.0) } else { (0.0, -3.0) };
+        let length = half_width.hypot(3.0);
+        let weight = 20.0 * 0.5 * half_width * 3.0;
+        BaseSlice {
+            x_left: x0,
+            x_right: x1,
+            base_left_y: y0,
+            base_right_y: y1,
+            top_right_y: 0.0,
+            base_sin_cos: ((y1 - y0) / length, half_width / length),
+            base_length: length,
+            base_middle: (0.5 * (x0 + x1), -1.5),
+            height_middle: 1.5,
+            weight,
+            centroid_y: -1.0,
+            cohesion: 10.0,
+            tan_phi: 30f64.to_radians().tan(),
+            pore_pressure: 0.0,
+            layer: 0,
+            side_water: (0.0, 0.0),
+        }
+    };
+    let model = SliceModel {
+        slices: vec![slice(-1.0), slice(1.0)],
+        seismic: Seismic::default(),
+        loads: Vec::new(),
+        reference: (0.0, 5.0),
+        moment_centre: Some((0.0, 5.0)),
+        circular: true,
+        length_scale: 8.0,
+    };
+    assert_eq!(
+        spencer_factor_outcome(&model, &SpencerSettings::default()),
+        FactorOutcome::Undriven
+    );
+    let s = solve_spencer(&model, &SpencerSettings::default());
     assert_eq!(s.status, SpencerStatus::NoSolution);
     assert!(s.factor_of_safety.is_none() && s.theta_rad.is_none());
 }

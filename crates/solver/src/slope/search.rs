@@ -142,6 +142,9 @@ pub struct SearchSettings {
     /// Circles larger than this are no candidates (a radius that dwarfs the embankment is a
     /// plane, not a slip circle of it). Defaults to none.
     pub max_radius: Option<f64>,
+    /// Circles whose greatest depth below the ground is smaller are no candidates (a sliver
+    /// along a c' = 0 face is not the mechanism an engineer checks). Defaults to 0.
+    pub min_depth: f64,
 }
 
 impl Default for SearchSettings {
@@ -153,6 +156,7 @@ impl Default for SearchSettings {
             max_refine_evaluations: 300,
             hard_bounds: false,
             max_radius: None,
+            min_depth: 0.0,
         }
     }
 }
@@ -212,7 +216,7 @@ pub fn factor_of_safety(
     settings: &SpencerSettings,
 ) -> Option<f64> {
     let section = problem.section().ok()?;
-    outcome(problem, &section, circle, settings).ok()
+    outcome(problem, &section, circle, (settings, 0.0)).ok()
 }
 
 /// Spencer's F for one circle; `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it
@@ -221,11 +225,14 @@ fn outcome(
     problem: &SearchProblem,
     section: &Section,
     circle: SlipCircle,
-    settings: &SpencerSettings,
+    (settings, min_depth): (&SpencerSettings, f64),
 ) -> Result<f64, Option<Option<f64>>> {
     let slope = problem
         .on(section, circle)
         .map_err(|_| None::<Option<f64>>)?;
+    if slope.model().depth() < min_depth {
+        return Err(None);
+    }
     match spencer_factor_outcome(slope.model(), settings) {
         FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
         FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
@@ -274,7 +281,12 @@ fn evaluate_grid(
                     if !within_reach(circle, settings.max_radius) {
                         return Err(None);
                     }
-                    outcome(problem, section, circle, &settings.spencer)
+                    outcome(
+                        problem,
+                        section,
+                        circle,
+                        (&settings.spencer, settings.min_depth),
+                    )
                 })
                 .collect()
         })
@@ -379,7 +391,13 @@ fn refine_from(
         if !within_reach(circle_at(v), settings.max_radius) {
             return f64::INFINITY;
         }
-        outcome(problem, section, circle_at(v), &settings.spencer).unwrap_or(f64::INFINITY)
+        outcome(
+            problem,
+            section,
+            circle_at(v),
+            (&settings.spencer, settings.min_depth),
+        )
+        .unwrap_or(f64::INFINITY)
     };
     // Centres first, at the grid's lower-end factor…
     let start = [factors.xs[i], factors.ys[j]];
@@ -413,6 +431,26 @@ fn refine_from(
     }
 }
 
+/// A search that had no circle to evaluate.
+fn without_circles(grid: &SearchGrid) -> SearchSolution {
+    SearchSolution {
+        status: SearchStatus::NoValidCircle,
+        circle: None,
+        factor_of_safety: None,
+        grid: FactorGrid {
+            xs: grid.xs(),
+            ys: grid.ys(),
+            factors: vec![vec![None; grid.nx]; grid.ny],
+        },
+        evaluations: 0,
+        regrids: 0,
+        is_on_edge: false,
+        unsolved: 0,
+        unsolved_bishop_minimum: None,
+        unsolved_near_minimum: false,
+    }
+}
+
 /// Searches the critical circle over `grid` (moving it when the minimum is on its edge), within
 /// `budget`: circles not evaluated by its end count as invalid and the status says so.
 pub fn search_critical_circle(
@@ -424,22 +462,7 @@ pub fn search_critical_circle(
     // The embankment and soil are valid by construction: a section that cannot be built has no
     // circle to offer.
     let Ok(section) = problem.section() else {
-        return SearchSolution {
-            status: SearchStatus::NoValidCircle,
-            circle: None,
-            factor_of_safety: None,
-            grid: FactorGrid {
-                xs: grid.xs(),
-                ys: grid.ys(),
-                factors: vec![vec![None; grid.nx]; grid.ny],
-            },
-            evaluations: 0,
-            regrids: 0,
-            is_on_edge: false,
-            unsolved: 0,
-            unsolved_bishop_minimum: None,
-            unsolved_near_minimum: false,
-        };
+        return without_circles(&grid);
     };
     let mut grid = grid;
     let mut evaluations = 0;

@@ -92,6 +92,15 @@ impl SliceModel {
         }
     }
 
+    /// The greatest vertical depth of the slip surface below the ground, at the slices'
+    /// middles (what `search.min_depth` compares).
+    pub fn depth(&self) -> f64 {
+        self.slices
+            .iter()
+            .map(|s| s.height_middle)
+            .fold(0.0, f64::max)
+    }
+
     /// The start of the slip surface (toe end).
     pub fn lower_end(&self) -> (f64, f64) {
         self.slices

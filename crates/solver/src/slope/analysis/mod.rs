@@ -92,6 +92,18 @@ pub struct SlopePlan {
     pub interslice_function: InterSliceFunction,
     /// The treatment of tension at slice bases, in every method and every search.
     pub negative_effective_stress: NegativeEffectiveStress,
+    /// What a search may answer.
+    pub candidates: Candidates,
+}
+
+/// The surfaces a search may answer (model §6.4).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Candidates {
+    /// Surfaces whose greatest depth below the ground is smaller are not candidates.
+    pub min_depth: f64,
+    /// Whether a circle that would cross the bedrock is not a candidate (otherwise it follows
+    /// the bedrock: a composite surface).
+    pub circles_only: bool,
 }
 
 impl SlopePlan {
@@ -105,6 +117,7 @@ impl SlopePlan {
             methods: Vec::new(),
             interslice_function: InterSliceFunction::HalfSine,
             negative_effective_stress: NegativeEffectiveStress::Keep,
+            candidates: Candidates::default(),
         }
     }
 }
@@ -123,14 +136,22 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
             problem,
             grid,
             hard_bounds,
-        } => match search::simple(problem, *grid, *hard_bounds, &spencer, budget)? {
+        } => match search::simple(
+            problem,
+            (*grid, *hard_bounds),
+            &spencer,
+            plan.candidates,
+            budget,
+        )? {
             Ok((problem, report)) => (problem, Some(report)),
             Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
         },
-        Target::SectionSearch(plan) => match search::section(plan, &spencer, budget)? {
-            Ok((problem, report)) => (problem, Some(report)),
-            Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
-        },
+        Target::SectionSearch(section) => {
+            match search::section(section, &spencer, plan.candidates, budget)? {
+                Ok((problem, report)) => (problem, Some(report)),
+                Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
+            }
+        }
     };
     let (problem, solution, refinement) = match plan.slice_tolerance {
         None => {

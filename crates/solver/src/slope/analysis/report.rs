@@ -38,6 +38,8 @@ pub struct SearchReport {
     pub path_ms: Option<Vec<f64>>,
     /// Whether the budget ended a non-circular search (its answer is the best so far).
     pub timed_out: bool,
+    /// What the search could answer.
+    pub candidates: super::Candidates,
 }
 
 impl SearchReport {
@@ -57,6 +59,7 @@ impl SearchReport {
             path: None,
             path_ms: None,
             timed_out: false,
+            candidates: super::Candidates::default(),
         }
     }
 
@@ -75,6 +78,7 @@ impl SearchReport {
             path: None,
             path_ms: None,
             timed_out: false,
+            candidates: super::Candidates::default(),
         }
     }
 }

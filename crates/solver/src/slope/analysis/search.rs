@@ -4,7 +4,7 @@
 
 use super::report::SearchReport;
 use super::surface::Analysed;
-use super::SectionSearch;
+use super::{Candidates, SectionSearch};
 use crate::budget::{Budget, Stop};
 use crate::slope::search::{
     search_critical_circle, SearchGrid, SearchProblem, SearchSettings, SearchStatus,
@@ -36,9 +36,9 @@ fn no_circle(status: SearchStatus, budget: &Budget) -> Stop {
 /// The simple slope's critical circle over `grid`.
 pub(super) fn simple(
     problem: &SearchProblem,
-    grid: SearchGrid,
-    hard_bounds: bool,
+    (grid, hard_bounds): (SearchGrid, bool),
     spencer: &SpencerSettings,
+    candidates: Candidates,
     budget: &Budget,
 ) -> Result<Found, SlopeError> {
     let size = problem.embankment.height().max(problem.embankment.length());
@@ -47,6 +47,7 @@ pub(super) fn simple(
         hard_bounds,
         // Automatic bounds may move; not to circles that dwarf the embankment.
         max_radius: (!hard_bounds).then_some(MAX_RADIUS_OVER_SIZE * size),
+        min_depth: candidates.min_depth,
         ..SearchSettings::default()
     };
     let found = search_critical_circle(problem, grid, &settings, budget);
@@ -61,7 +62,10 @@ pub(super) fn simple(
         0.0,
     );
     let answered = problem.at(circle)?;
-    let report = SearchReport::of_simple(&found, hard_bounds, grid_lower_end);
+    let report = SearchReport {
+        candidates,
+        ..SearchReport::of_simple(&found, hard_bounds, grid_lower_end)
+    };
     Ok(Ok((Analysed::Section(Box::new(answered)), report)))
 }
 
@@ -69,10 +73,13 @@ pub(super) fn simple(
 pub(super) fn section(
     plan: &SectionSearch,
     spencer: &SpencerSettings,
+    candidates: Candidates,
     budget: &Budget,
 ) -> Result<Found, SlopeError> {
     let settings = CircleSearchSettings {
         spencer: *spencer,
+        min_depth: candidates.min_depth,
+        circles_only: candidates.circles_only,
         ..CircleSearchSettings::default()
     };
     let found = search_circles(
@@ -91,7 +98,10 @@ pub(super) fn section(
     let shape = SlipShape::Circle { centre, radius };
     let mut problem =
         SectionProblem::new(plan.section.clone(), shape, plan.slices, plan.seismic, None)?;
-    let mut report = SearchReport::of_section(&found, plan.hard);
+    let mut report = SearchReport {
+        candidates,
+        ..SearchReport::of_section(&found, plan.hard)
+    };
     if let Some(noncircular) = plan.noncircular {
         let stage_budget = budget.narrowed(noncircular.budget);
         let better = search_noncircular(

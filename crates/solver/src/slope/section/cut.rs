@@ -13,7 +13,7 @@ use super::slicing::{slice_all, Slicing};
 use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
-use crate::slope::spencer::{ExternalLoad, Seismic};
+use crate::slope::spencer::{drives_towards_toe, ExternalLoad, Seismic};
 
 /// Relative distance below which two cuts are one.
 const SAME_CUT: f64 = 1e-9;
@@ -65,7 +65,36 @@ pub(super) fn place(
     seismic: Seismic,
     moment_centre: Option<(f64, f64)>,
 ) -> Result<Cut, SlopeError> {
-    let (entry, exit) = super::ends::ends(&section.ground, shape)?;
+    // The deepest mass that something drives towards the toe: a lens under level ground
+    // beside a shallow slide on the face does not slide, the slide does.
+    let pieces = super::ends::ends(&section.ground, shape)?;
+    let mut first_error = None;
+    for (i, &ends) in pieces.iter().enumerate() {
+        match place_between(section, mirror, shape, ends, slices, seismic, moment_centre) {
+            Ok(cut) if drives_towards_toe(&cut.model) => return Ok(cut),
+            Ok(_) => {}
+            Err(e) if i == 0 => first_error = Some(e),
+            Err(_) => {}
+        }
+    }
+    Err(first_error.unwrap_or_else(|| SlopeError::NoSlipMass {
+        parameter: SlopeParameter::CircleCentre,
+        reason: "nothing drives the circle's mass towards the toe: it lies under level ground, \
+                 symmetric about the centre's vertical — move the centre towards the slope"
+            .to_owned(),
+    }))
+}
+
+/// The mass between `entry` and `exit`, cut in the frame where the crest lies to the right.
+fn place_between(
+    section: &Section,
+    mirror: Option<&Section>,
+    shape: &SlipShape,
+    (entry, exit): (f64, f64),
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    moment_centre: Option<(f64, f64)>,
+) -> Result<Cut, SlopeError> {
     let ground = &section.ground;
     let rises_left = ground.y_at(entry) > ground.y_at(exit)
         || (ground.y_at(entry) == ground.y_at(exit) && {

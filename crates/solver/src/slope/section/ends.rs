@@ -10,20 +10,22 @@ const ON_GROUND: f64 = 1e-9;
 /// Relative distance of a crossing from a ground vertex that is rounding.
 const VERTEX_ROUNDING: f64 = 1e-12;
 
-/// The x of entry and exit (entry < exit) of `shape` on `ground`.
-pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<(f64, f64), SlopeError> {
+/// The x of entry and exit (entry < exit) of the masses `shape` may cut out of `ground`, the
+/// deepest first (a polyline cuts one).
+pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<Vec<(f64, f64)>, SlopeError> {
     match shape {
         SlipShape::Circle { centre, radius } => circle_ends(ground, *centre, *radius),
-        SlipShape::Polyline(line) => polyline_ends(ground, line),
+        SlipShape::Polyline(line) => polyline_ends(ground, line).map(|e| vec![e]),
     }
 }
 
-/// The arc's two crossings of the ground that bound its deepest part below the ground.
+/// The pairs of the arc's crossings of the ground that bound a part of it below the ground, the
+/// deepest part first (the deepest two reaching equally deep is ambiguous: an error).
 fn circle_ends(
     ground: &Polyline,
     centre: (f64, f64),
     radius: f64,
-) -> Result<(f64, f64), SlopeError> {
+) -> Result<Vec<(f64, f64)>, SlopeError> {
     let (xc, yc) = centre;
     let (left, right) = (xc - radius, xc + radius);
     let arc = |x: f64| yc - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
@@ -76,8 +78,9 @@ fn circle_ends(
             ),
         });
     }
-    let deepest = deepest.into_iter().max_by(|a, b| a.2.total_cmp(&b.2));
-    let Some((entry, exit, _)) = deepest else {
+    let mut pieces = deepest;
+    pieces.sort_by(|a, b| b.2.total_cmp(&a.2));
+    let Some(&(entry, exit, _)) = pieces.first() else {
         return Err(SlopeError::NoSlipMass {
             parameter: SlopeParameter::CircleCentre,
             reason: format!(
@@ -97,7 +100,11 @@ fn circle_ends(
         });
     }
     let snap = |x: f64| on_vertex(ground, x, &arc, radius);
-    Ok((snap(entry), snap(exit)))
+    Ok(pieces
+        .into_iter()
+        .filter(|p| p.0 != left && p.1 != right)
+        .map(|(a, b, _)| (snap(a), snap(b)))
+        .collect())
 }
 
 /// A crossing within rounding (1e-12 of the radius) of a ground vertex that the arc passes

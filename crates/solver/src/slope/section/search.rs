@@ -131,6 +131,12 @@ pub struct CircleSearchSettings {
     pub max_refine_evaluations: usize,
     /// Times automatic bounds may move. Defaults to 3.
     pub max_regrids: usize,
+    /// Circles whose greatest depth below the ground is smaller are no candidates. Defaults
+    /// to 0.
+    pub min_depth: f64,
+    /// Whether a circle that would cross the bedrock is no candidate (`false`: it follows the
+    /// bedrock, a composite surface). Defaults to false.
+    pub circles_only: bool,
 }
 
 impl Default for CircleSearchSettings {
@@ -140,6 +146,8 @@ impl Default for CircleSearchSettings {
             starts: 3,
             max_refine_evaluations: 400,
             max_regrids: 3,
+            min_depth: 0.0,
+            circles_only: false,
         }
     }
 }
@@ -185,6 +193,10 @@ struct Evaluator<'a> {
     budget: &'a Budget,
     /// Lowest y a circle may usefully reach (automatic radii).
     deep: f64,
+    /// Shallower circles are no candidates.
+    min_depth: f64,
+    /// Circles that would cross the bedrock are no candidates.
+    circles_only: bool,
 }
 
 impl Evaluator<'_> {
@@ -203,11 +215,39 @@ impl Evaluator<'_> {
             None,
         )
         .map_err(|_| None::<Option<f64>>)?;
+        if cut.model.depth() < self.min_depth {
+            return Err(None);
+        }
+        if self.circles_only && self.crosses_bedrock(&cut, centre, radius) {
+            return Err(None);
+        }
         match spencer_factor_outcome(&cut.model, &self.spencer) {
             FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
             FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
             FactorOutcome::Undriven => Err(None),
         }
+    }
+
+    /// Whether the circle dips below the bedrock between its ends (its mass then follows the
+    /// bedrock). Bedrock less arc is concave on each straight stretch of the bedrock (slope m),
+    /// largest where the arc has its slope, x − x_c = m·R/√(1 + m²), or at the stretch's end.
+    fn crosses_bedrock(&self, cut: &super::cut::Cut, centre: (f64, f64), radius: f64) -> bool {
+        let frame = if cut.mirrored {
+            &self.mirror
+        } else {
+            self.section
+        };
+        let Some(bedrock) = frame.bedrock.as_ref() else {
+            return false;
+        };
+        let xc = if cut.mirrored { -centre.0 } else { centre.0 };
+        let arc = |x: f64| centre.1 - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
+        let (a, b) = (cut.ends.0 .0, cut.ends.1 .0);
+        let rounding = 1e-9 * radius;
+        bedrock.pieces(a, b).any(|(x0, x1, m, _)| {
+            let x = (xc + m * radius / m.hypot(1.0)).clamp(x0, x1);
+            bedrock.y_at(x) - arc(x) > rounding
+        })
     }
 
     fn radii(&self, radii: &Radii, (xc, yc): (f64, f64)) -> Vec<f64> {
@@ -374,7 +414,7 @@ impl<'a> Evaluator<'a> {
         section: &'a Section,
         slices: NonZeroUsize,
         seismic: Seismic,
-        spencer: SpencerSettings,
+        settings: &CircleSearchSettings,
         budget: &'a Budget,
     ) -> Self {
         let (_, _, y_low, y_top) = relief(section);
@@ -389,9 +429,11 @@ impl<'a> Evaluator<'a> {
             mirror: section.mirrored(),
             slices,
             seismic,
-            spencer,
+            spencer: settings.spencer,
             budget,
             deep,
+            min_depth: settings.min_depth,
+            circles_only: settings.circles_only,
         }
     }
 }
@@ -449,7 +491,7 @@ pub fn search_circles(
     settings: &CircleSearchSettings,
     budget: &Budget,
 ) -> CircleSearch {
-    let evaluator = Evaluator::new(section, slices, seismic, settings.spencer, budget);
+    let evaluator = Evaluator::new(section, slices, seismic, settings, budget);
     let mut region = region;
     let mut evaluations = 0;
     let mut regrids = 0;

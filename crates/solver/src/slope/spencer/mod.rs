@@ -151,6 +151,13 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
     }
 }
 
+/// Whether anything drives the mass towards the toe: always for a polyline; for a circle, the
+/// known forces' moment about its centre (a lens of level ground symmetric about the centre's
+/// vertical has none, and nothing to hold).
+pub fn drives_towards_toe(model: &SliceModel) -> bool {
+    !model.circular || methods::drives(&Equations::new(model))
+}
+
 /// Bishop's F as reported: a moment equation about the centre of rotation, meaningless without
 /// one. `about_reference` is Bishop's F about the model's reference (Spencer's start), which is
 /// that centre for a circle.

@@ -1,0 +1,74 @@
+//! Sections built from other sections or from the simple embankment.
+
+use super::{column, Layer, LineLoad, Polyline, Section, SectionParts, Surcharge};
+use crate::slope::error::{SlopeError, SlopeParameter};
+use crate::slope::spencer::Soil;
+
+impl Section {
+    /// The simple embankment as a section: the ground (0, 0)–(L, H), continued level both ways,
+    /// one soil with its r_u (the service's simple form and its search are this section).
+    pub fn simple(embankment: &crate::slope::Embankment, soil: Soil) -> Result<Self, SlopeError> {
+        let ground = Polyline::new(vec![(0.0, 0.0), (embankment.length(), embankment.height())])
+            .map_err(|e| SlopeError::NoSlipMass {
+                parameter: SlopeParameter::Height,
+                reason: e.to_string(),
+            })?;
+        Self::new(SectionParts {
+            ground,
+            layers: vec![Layer {
+                top: None,
+                soil,
+                pore_pressure_ratio: Some(soil.pore_pressure_ratio()),
+            }],
+            bedrock: None,
+            piezometric_line: None,
+            water_unit_weight: 9.81,
+            surcharges: Vec::new(),
+            line_loads: Vec::new(),
+            tension_crack: None,
+        })
+    }
+
+    /// The section seen from behind (x → −x).
+    pub(super) fn mirrored(&self) -> Self {
+        let line = |l: &Option<Polyline>| l.as_ref().map(Polyline::mirrored);
+        Self {
+            ground: self.ground.mirrored(),
+            layers: self
+                .layers
+                .iter()
+                .map(|l| Layer {
+                    top: line(&l.top),
+                    ..l.clone()
+                })
+                .collect(),
+            bedrock: line(&self.bedrock),
+            piezometric_line: line(&self.piezometric_line),
+            water_unit_weight: self.water_unit_weight,
+            surcharges: self
+                .surcharges
+                .iter()
+                .map(|s| Surcharge {
+                    x_start: -s.x_end,
+                    x_end: -s.x_start,
+                    pressure: s.pressure_end,
+                    pressure_end: s.pressure,
+                })
+                .collect(),
+            line_loads: self
+                .line_loads
+                .iter()
+                .map(|l| LineLoad {
+                    x: -l.x,
+                    fx: -l.fx,
+                    fy: l.fy,
+                })
+                .collect(),
+            tension_crack: self.tension_crack,
+            bends: Vec::new(),
+            levels: column::LevelTable::default(),
+            ponded: Vec::new(),
+        }
+        .with_bends()
+    }
+}

@@ -1,0 +1,115 @@
+//! What a search may answer (model §6.4): `search.min_depth` (no sliver along a c' = 0 face)
+//! and `search.composite` (circles only, or circles that follow the bedrock).
+
+// Test scaffolding: a missing field should fail the test loudly.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{assert_problem, Server};
+use serde_json::{json, Value};
+
+/// A dry c' = 0 face at 1 : 2 (β = 26.57°), 10 high, φ' = 35°.
+fn cohesionless(search: Value) -> Value {
+    json!({"section": {"ground": [[0, 0], [20, 0], [40, 10], [60, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}]},
+        "search": search, "slices": 50})
+}
+
+/// The greatest slice height of an answer: its surface's depth below the ground (at the slices'
+/// middles).
+fn depth(answer: &Value) -> f64 {
+    answer["slices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["height"].as_f64().unwrap())
+        .fold(0.0, f64::max)
+}
+
+#[tokio::test]
+async fn a_cohesionless_face_answers_a_mechanism_not_a_sliver() {
+    let server = Server::start().await;
+    // Without a least depth the critical surface is a sliver of the infinite slope, whose F is
+    // tan φ'/tan β = tan 35°/0.5 (derived by hand: a dry c' = 0 slope parallel to its face).
+    let (status, _, sliver) = server
+        .post("/slope/spencer", &cohesionless(json!({"min_depth": 0})))
+        .await;
+    assert_eq!(status, 200, "{sliver}");
+    let infinite_slope = 35f64.to_radians().tan() / 0.5;
+    let f = sliver["factor_of_safety"].as_f64().unwrap();
+    assert!((f - infinite_slope).abs() < 1e-9, "{f} vs {infinite_slope}");
+    assert!(depth(&sliver) < 0.05, "{}", depth(&sliver));
+    // The default least depth, 2 % of the height (0.2): a surface at least that deep, above
+    // the sliver's F.
+    let (_, _, default) = server
+        .post("/slope/spencer", &cohesionless(json!({})))
+        .await;
+    assert_eq!(default["search"]["min_depth"], 0.2);
+    assert!(depth(&default) >= 0.2, "{}", depth(&default));
+    let g = default["factor_of_safety"].as_f64().unwrap();
+    assert!(g > f + 1e-4, "{g} vs {f}");
+    // Deeper still when asked.
+    let (_, _, deep) = server
+        .post("/slope/spencer", &cohesionless(json!({"min_depth": 1.0})))
+        .await;
+    assert!(depth(&deep) >= 1.0, "{}", depth(&deep));
+    assert!(deep["factor_of_safety"].as_f64().unwrap() >= g);
+}
+
+#[tokio::test]
+async fn circles_only_keeps_a_search_off_the_bedrock() {
+    // A soft clay over bedrock that rises towards the crest: the deep circles cross it.
+    let server = Server::start().await;
+    let body = |composite: &str| {
+        json!({"section": {"ground": [[0, 0], [20, 0], [40, 10], [60, 10]],
+            "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 20, "friction_angle_deg": 5}}],
+            "bedrock": [[0, -3], [60, 3]]},
+            "search": {"composite": composite}, "slices": 50})
+    };
+    // How far the answer's circle dips below the bedrock along its surface (the bedrock line
+    // written out here: y = −3 + x/10).
+    let below = |answer: &Value| {
+        let c = &answer["circle"];
+        let (xc, yc, r) = (
+            c["centre"]["x"].as_f64().unwrap(),
+            c["centre"]["y"].as_f64().unwrap(),
+            c["radius"].as_f64().unwrap(),
+        );
+        answer["surface"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| {
+                let x = p["x"].as_f64().unwrap();
+                let arc = yc - (r * r - (x - xc).powi(2)).max(0.0).sqrt();
+                (-3.0 + x / 10.0) - arc
+            })
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (_, _, composite) = server.post("/slope/spencer", &body("follow_bedrock")).await;
+    let (status, _, circle) = server.post("/slope/spencer", &body("circles_only")).await;
+    assert_eq!(status, 200, "{circle}");
+    assert_eq!(circle["search"]["composite"], "circles_only");
+    assert!(below(&composite) > 0.01, "{}", below(&composite));
+    assert!(below(&circle) < 1e-6, "{}", below(&circle));
+    let (f, g) = (
+        composite["factor_of_safety"].as_f64().unwrap(),
+        circle["factor_of_safety"].as_f64().unwrap(),
+    );
+    assert!(g >= f, "circles only {g}, composite {f}");
+}
+
+#[tokio::test]
+async fn candidate_options_are_validated() {
+    let server = Server::start().await;
+    for (search, field) in [
+        (json!({"min_depth": -1}), "search.min_depth"),
+        (json!({"min_depth": 2e9}), "search.min_depth"),
+        (json!({"composite": "sometimes"}), "composite"),
+    ] {
+        let (status, content_type, body) =
+            server.post("/slope/spencer", &cohesionless(search)).await;
+        assert_problem(status, &content_type, &body, 422, field);
+    }
+}
