@@ -160,6 +160,9 @@ pub const FRICTION: Range = Range::closed(0.0, MAX_FRICTION_COEFFICIENT);
 pub const SOLVER_TOLERANCE: Range = Range::closed(1e-12, 1e-4);
 /// The minimum-thickness tolerance, relative to the radius.
 pub const THICKNESS_TOLERANCE: Range = Range::closed(1e-9, 1e-2);
+/// The accuracy a slope request may ask for (the estimate's floor: a kink of the ground moving
+/// within a slice changes F by ~1e-8 from one slice count to the next).
+pub const RELATIVE_ERROR: Range = Range::closed(1e-7, 0.1);
 /// The relative slice tolerance of the slice refinement.
 pub const SLICE_TOLERANCE: Range = Range::closed(1e-9, 0.1);
 /// A lower limit of an interface resultant (a tensile strength: ≤ 0).

@@ -19,7 +19,7 @@ use super::section::{
 use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
-    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
+    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, RELATIVE_ERROR, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
     SEISMIC_KV, SLICES, SLICE_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
@@ -52,6 +52,25 @@ impl SpencerRequest {
                 "slice_tolerance",
                 "cannot be combined with external_loads: loads are given per slice, and refining \
                  changes the slices",
+            ));
+        }
+        let relative_error = self
+            .accuracy
+            .as_ref()
+            .map(|a| within("accuracy.relative_error", a.relative_error, RELATIVE_ERROR))
+            .transpose()?;
+        if relative_error.is_some() && slice_tolerance.is_some() {
+            return Err(ApiError::invalid(
+                "accuracy",
+                "give one of slice_tolerance (a change of F between doublings) and \
+                 accuracy.relative_error (an estimated error), not both",
+            ));
+        }
+        if relative_error.is_some() && !parts.external_loads.is_empty() {
+            return Err(ApiError::invalid(
+                "accuracy",
+                "cannot be combined with external_loads: loads are given per slice, and the \
+                 slices change",
             ));
         }
         let given = [
@@ -104,6 +123,7 @@ impl SpencerRequest {
         Ok(SlopePlan {
             target,
             slice_tolerance,
+            relative_error,
             max_slices: MAX_SLICES,
             curves: self.curves,
             methods: methods.into_iter().map(Into::into).collect(),

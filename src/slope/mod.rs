@@ -129,6 +129,7 @@ pub async fn spencer_svg(
 /// solves ran beside it, [`AppState::refuse`]).
 async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
+    let by_accuracy = plan.relative_error.is_some();
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, move |budget| analyse(&plan, budget))
@@ -150,6 +151,11 @@ async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiErro
                     no_candidate: "no circle in the region searched cuts a sliding mass with a \
                                    solution: widen or move the bounds or the radii (or leave \
                                    them out)",
+                },
+                SlopeStage::Refinement if by_accuracy => Work {
+                    field: "accuracy.relative_error",
+                    advice: "ask for a larger relative_error",
+                    no_candidate: "",
                 },
                 SlopeStage::Refinement => Work {
                     field: "slice_tolerance",

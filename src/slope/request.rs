@@ -175,6 +175,12 @@ pub struct SpencerRequest {
     #[serde(default)]
     #[schema(examples(1e-4))]
     pub slice_tolerance: Option<f64>,
+    /// The accuracy asked for instead of a slice count: `{"relative_error": 1e-4}` (1e-7 …
+    /// 0.1) re-cuts the answered surface at the fewest slices (from 25, doubling, at most
+    /// 10000) whose estimated discretisation error is at most that fraction of F; the answer's
+    /// `accuracy` says what was used.
+    #[serde(default)]
+    pub accuracy: Option<AccuracyDto>,
     /// Number of vertical slices of equal width, 1 ≤ N ≤ 10000. Defaults to 100.
     #[serde(
         default = "default_slices",
@@ -281,6 +287,14 @@ pub struct SearchDto {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub composite: CompositeDto,
+}
+
+/// The accuracy a request asks for.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AccuracyDto {
+    /// The largest estimated |F(n) − F(∞)|/F accepted, 1e-7 ≤ e ≤ 0.1.
+    pub relative_error: f64,
 }
 
 /// Whether a circular search may answer composite surfaces (circles that follow the bedrock).

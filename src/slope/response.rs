@@ -224,11 +224,26 @@ pub struct SpencerResponse {
     /// With `methods`: each method's F for the same slices.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub methods: Option<MethodsDto>,
+    /// The accuracy of F: the slices answered and the estimated discretisation error
+    /// |F(n) − F(∞)|/F (from F at n, 2n and 4n slices; null where it cannot be estimated).
+    pub accuracy: AccuracyOutDto,
     /// With `slice_tolerance`: F at each number of slices tried, the last one answered.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slice_refinement: Option<Vec<SliceRefinementDto>>,
     /// The details `include` left out (returned empty, `grid` absent); empty by default.
     pub omitted: Vec<SlopeDetailDto>,
+}
+
+/// The accuracy of an answered F (model §6.2).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct AccuracyOutDto {
+    /// The slices of the answer.
+    pub slices: usize,
+    /// The estimated |F(n) − F(∞)|/F: the true error (against 10,000 slices) is at most twice
+    /// it (+1e-9) and, where above 1e-7, at least a tenth of it. Null where F at other slice
+    /// counts cannot be had (no solution there, loads given per slice, or no time left).
+    #[schema(required = true)]
+    pub discretisation_error: Option<f64>,
 }
 
 /// One step of the slice refinement.
@@ -341,6 +356,10 @@ impl SpencerResponse {
                 force_factor: c.force_factor.clone(),
                 moment_factor: c.moment_factor.clone(),
             }),
+            accuracy: AccuracyOutDto {
+                slices: solved.accuracy.slices,
+                discretisation_error: solved.accuracy.discretisation_error,
+            },
             slice_refinement: solved.refinement.as_ref().map(|r| {
                 r.steps
                     .iter()

@@ -16,6 +16,7 @@
 pub mod analysis;
 mod error;
 pub mod geometry;
+pub mod accuracy;
 pub mod refinement;
 pub mod search;
 pub mod section;

@@ -15,6 +15,7 @@ use std::num::NonZeroUsize;
 use std::time::Duration;
 
 use crate::budget::{Budget, Stop};
+use crate::slope::accuracy::{accuracy_of, to_accuracy, Accuracy};
 use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStatus};
 use crate::slope::search::{SearchGrid, SearchProblem};
 use crate::slope::section::search::CircleRegion;
@@ -23,7 +24,7 @@ use crate::slope::slices::Sliced;
 use crate::slope::spencer::methods::InterSliceFunction;
 use crate::slope::spencer::{
     factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress, Seismic,
-    SpencerSettings,
+    SpencerSettings, SpencerSolution,
 };
 use crate::slope::SlopeError;
 pub use methods::{Method, MethodFactors};
@@ -75,6 +76,9 @@ pub struct Noncircular {
     pub budget: Option<Duration>,
 }
 
+/// The slices an accuracy asked for starts doubling from.
+const ACCURACY_START_SLICES: usize = 25;
+
 /// Every option of a slope analysis, resolved.
 #[derive(Debug, Clone)]
 pub struct SlopePlan {
@@ -82,6 +86,9 @@ pub struct SlopePlan {
     pub target: Target,
     /// With a tolerance: the slices are doubled from the target's until F settles within it.
     pub slice_tolerance: Option<f64>,
+    /// With an accuracy: the answered surface is re-cut at the fewest slices (from 25,
+    /// doubling) whose estimated discretisation error is at most this fraction of F.
+    pub relative_error: Option<f64>,
     /// The most slices a refinement may reach.
     pub max_slices: usize,
     /// Whether to compute Spencer's curves F_f(θ), F_m(θ) around the answer.
@@ -112,6 +119,7 @@ impl SlopePlan {
         Self {
             target,
             slice_tolerance: None,
+            relative_error: None,
             max_slices: 10_000,
             curves: false,
             methods: Vec::new(),
@@ -153,32 +161,14 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
             }
         }
     };
-    let (problem, solution, refinement) = match plan.slice_tolerance {
-        None => {
-            let solution = solve_spencer(&problem.model(), &spencer);
-            (problem, solution, None)
-        }
-        Some(tolerance) => {
-            let settings = RefinementSettings {
-                max_slices: plan.max_slices,
-                spencer,
-                ..RefinementSettings::new(tolerance)
-            };
-            let refined = refine_slices(problem, &settings, budget)?;
-            let is_settled = match refined.status {
-                RefinementStatus::Settled => true,
-                RefinementStatus::SliceLimit => false,
-                RefinementStatus::SolverFailed(_) => {
-                    return Ok(stopped(SlopeStage::Refinement, budget.out_of_time()));
-                }
-            };
-            let refinement = Refinement {
-                tolerance,
-                steps: refined.steps,
-                is_settled,
-            };
-            (refined.problem, refined.solution, Some(refinement))
-        }
+    let Answered {
+        problem,
+        solution,
+        refinement,
+        accuracy,
+    } = match at_slices(problem, plan, &spencer, budget)? {
+        Ok(answered) => answered,
+        Err(stop) => return Ok(stopped(SlopeStage::Refinement, stop)),
     };
     let curves = match (solution.theta_rad, plan.curves) {
         (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
@@ -199,7 +189,78 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         curves,
         methods,
         refinement,
+        accuracy,
     })))
+}
+
+/// The answered surface at the slices the plan asks for, with its solution and accuracy.
+struct Answered {
+    problem: Analysed,
+    solution: SpencerSolution,
+    refinement: Option<Refinement>,
+    accuracy: Accuracy,
+}
+
+/// The surface at its own slices, refined to a slice tolerance, or re-cut to an accuracy;
+/// `Err(stop)` when the budget ended a refinement.
+fn at_slices(
+    problem: Analysed,
+    plan: &SlopePlan,
+    spencer: &SpencerSettings,
+    budget: &Budget,
+) -> Result<Result<Answered, Stop>, SlopeError> {
+    if let Some(target) = plan.relative_error {
+        let start = NonZeroUsize::new(ACCURACY_START_SLICES).unwrap_or(NonZeroUsize::MIN);
+        if let Some(answered) = to_accuracy(&problem, start, target, spencer, budget)? {
+            return Ok(Ok(Answered {
+                problem: answered.problem,
+                solution: answered.solution,
+                refinement: None,
+                accuracy: answered.accuracy,
+            }));
+        }
+        if budget.is_spent() {
+            return Ok(Err(budget.out_of_time()));
+        }
+    }
+    let (problem, solution, refinement) = match plan.slice_tolerance {
+        None => {
+            let solution = solve_spencer(&problem.model(), spencer);
+            (problem, solution, None)
+        }
+        Some(tolerance) => {
+            let settings = RefinementSettings {
+                max_slices: plan.max_slices,
+                spencer: *spencer,
+                ..RefinementSettings::new(tolerance)
+            };
+            let refined = refine_slices(problem, &settings, budget)?;
+            let is_settled = match refined.status {
+                RefinementStatus::Settled => true,
+                RefinementStatus::SliceLimit => false,
+                RefinementStatus::SolverFailed(_) => return Ok(Err(budget.out_of_time())),
+            };
+            let refinement = Refinement {
+                tolerance,
+                steps: refined.steps,
+                is_settled,
+            };
+            (refined.problem, refined.solution, Some(refinement))
+        }
+    };
+    let accuracy = match solution.factor_of_safety {
+        Some(f) => accuracy_of(&problem, f, spencer, budget),
+        None => Accuracy {
+            slices: problem.slice_count(),
+            discretisation_error: None,
+        },
+    };
+    Ok(Ok(Answered {
+        problem,
+        solution,
+        refinement,
+        accuracy,
+    }))
 }
 
 fn stopped(stage: SlopeStage, stop: Stop) -> SlopeOutcome {

@@ -109,6 +109,8 @@ pub struct SlopeAnswer {
     pub methods: Option<MethodFactors>,
     /// With a slice tolerance: the refinement.
     pub refinement: Option<Refinement>,
+    /// The estimated discretisation error of F at the slices answered.
+    pub accuracy: crate::slope::accuracy::Accuracy,
 }
 
 /// Which stage of a slope plan a stop ended.
