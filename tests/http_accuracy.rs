@@ -31,7 +31,11 @@ async fn every_answer_states_its_discretisation_error() {
 async fn an_accuracy_is_asked_for_instead_of_a_slice_count() {
     let server = Server::start().await;
     for target in [1e-3, 1e-5] {
-        let body = with(spencer_example(), "accuracy", json!({"relative_error": target}));
+        let body = with(
+            spencer_example(),
+            "accuracy",
+            json!({"relative_error": target}),
+        );
         let (status, _, answer) = server.post("/slope/spencer", &body).await;
         assert_eq!(status, 200, "{answer}");
         let e = answer["accuracy"]["discretisation_error"].as_f64().unwrap();
@@ -40,7 +44,10 @@ async fn an_accuracy_is_asked_for_instead_of_a_slice_count() {
         assert_eq!(answer["slice_count"], slices);
         // Converged F = 1.0695 (Spencer 1967; the thesis 1.06952): within twice the target.
         let f = answer["factor_of_safety"].as_f64().unwrap();
-        assert!((f - 1.069_522).abs() <= 2.0 * target * f + 1e-6, "{target}: F = {f}");
+        assert!(
+            (f - 1.069_522).abs() <= 2.0 * target * f + 1e-6,
+            "{target}: F = {f}"
+        );
     }
 }
 
@@ -48,12 +55,33 @@ async fn an_accuracy_is_asked_for_instead_of_a_slice_count() {
 async fn accuracy_requests_are_validated() {
     let server = Server::start().await;
     for (body, field) in [
-        (with(spencer_example(), "accuracy", json!({"relative_error": 0.5})), "accuracy.relative_error"),
-        (with(spencer_example(), "accuracy", json!({"relative_error": 1e-9})), "accuracy.relative_error"),
-        (with(spencer_example(), "accuracy", json!({})), "relative_error"),
         (
             with(
-                with(spencer_example(), "accuracy", json!({"relative_error": 1e-4})),
+                spencer_example(),
+                "accuracy",
+                json!({"relative_error": 0.5}),
+            ),
+            "accuracy.relative_error",
+        ),
+        (
+            with(
+                spencer_example(),
+                "accuracy",
+                json!({"relative_error": 1e-9}),
+            ),
+            "accuracy.relative_error",
+        ),
+        (
+            with(spencer_example(), "accuracy", json!({})),
+            "relative_error",
+        ),
+        (
+            with(
+                with(
+                    spencer_example(),
+                    "accuracy",
+                    json!({"relative_error": 1e-4}),
+                ),
                 "slice_tolerance",
                 json!(1e-4),
             ),

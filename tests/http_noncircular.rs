@@ -323,11 +323,11 @@ async fn a_time_budget_bounds_the_polyline_search() {
                       "search": {"shape": "noncircular", "time_budget_ms": 1}});
     let (status, _, hurried) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 200, "{hurried}");
-    let warned = hurried["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .any(|w| w.as_str().unwrap().contains("ran out of time"));
+    let warned = hurried["warnings"].as_array().unwrap().iter().any(|w| {
+        w.as_str()
+            .unwrap()
+            .contains("a budget ended the non-circular search")
+    });
     assert!(warned, "{}", hurried["warnings"]);
     let f = hurried["factor_of_safety"].as_f64().unwrap();
     assert!(f > 1.3, "F = {f}: 1 ms does not reach the seam");
@@ -365,4 +365,73 @@ async fn the_simple_slope_refuses_a_noncircular_search_instead_of_ignoring_it() 
     body["search"] = json!({"shape": "circular"});
     let (status, _, answer) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 200, "{answer}");
+}
+
+#[tokio::test]
+async fn the_polyline_stage_always_runs_and_never_answers_above_the_circle() {
+    // model §6.4. A soft clay over bedrock rising towards the crest: the critical circle follows
+    // the bedrock (composite). The polyline stage starts from it all the same (it used to skip
+    // without a word), and whatever its budget the answer is never above the circle.
+    let server = Server::start().await;
+    let section = json!({"ground": [[0, 0], [20, 0], [40, 10], [60, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 20, "friction_angle_deg": 5}}],
+        "bedrock": [[0, -3], [60, 3]]});
+    let circle = server
+        .post(
+            "/slope/spencer",
+            &json!({"section": section, "search": {}, "slices": 50}),
+        )
+        .await
+        .2["factor_of_safety"]
+        .as_f64()
+        .unwrap();
+    for search in [
+        json!({"shape": "noncircular"}),
+        json!({"shape": "noncircular", "max_evaluations": 5}),
+        json!({"shape": "noncircular", "time_budget_ms": 0.01}),
+    ] {
+        let body = json!({"section": section, "search": search, "slices": 50});
+        let (status, _, answer) = server.post("/slope/spencer", &body).await;
+        assert_eq!(status, 200, "{answer}");
+        assert!(answer["search"]["path"]
+            .as_array()
+            .is_some_and(|p| !p.is_empty()));
+        let f = answer["factor_of_safety"].as_f64().unwrap();
+        assert!(f <= circle, "{search}: {f} above the circle's {circle}");
+    }
+}
+
+#[tokio::test]
+async fn an_evaluation_budget_gives_the_same_answer_every_time() {
+    let server = Server::start().await;
+    let body = json!({"section": layered(true), "slices": 50,
+                      "search": {"shape": "noncircular", "max_evaluations": 150}});
+    let (_, _, first) = server.post("/slope/spencer", &body).await;
+    let (_, _, second) = server.post("/slope/spencer", &body).await;
+    assert_eq!(first["search"]["budget_exhausted"], true);
+    assert_eq!(first["factor_of_safety"], second["factor_of_safety"]);
+    assert_eq!(first["surface"], second["surface"]);
+    assert_eq!(
+        first["search"]["evaluations"],
+        second["search"]["evaluations"]
+    );
+    // Unbounded, the same search goes further (or as far) and says no budget ended it.
+    let body = json!({"section": layered(true), "slices": 50, "search": {"shape": "noncircular"}});
+    let (_, _, free) = server.post("/slope/spencer", &body).await;
+    assert_eq!(free["search"]["budget_exhausted"], false);
+    assert!(
+        free["factor_of_safety"].as_f64().unwrap() <= first["factor_of_safety"].as_f64().unwrap()
+    );
+    // A budget of evaluations is for the polyline stage only, and counted from 1.
+    for (search, field) in [
+        (json!({"max_evaluations": 10}), "search.max_evaluations"),
+        (
+            json!({"shape": "noncircular", "max_evaluations": 0}),
+            "search.max_evaluations",
+        ),
+    ] {
+        let body = json!({"section": layered(true), "slices": 50, "search": search});
+        let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+        assert_problem(status, &content_type, &answer, 422, field);
+    }
 }

@@ -214,6 +214,8 @@ pub const GRID_POINTS: Count = Count::new(2, MAX_GRID);
 pub const RADII: Count = Count::new(1, MAX_GRID);
 /// Vertices of a non-circular search's polyline.
 pub const VERTICES: Count = Count::new(4, 40);
+/// Trial surfaces a non-circular search may evaluate.
+pub const EVALUATIONS: Count = Count::new(1, 1_000_000);
 /// Points of a polyline of a section or a slip surface.
 pub const POLYLINE_POINTS: Count = Count::new(1, MAX_POLYLINE_POINTS);
 /// Layers of a section.

@@ -19,8 +19,8 @@ use super::section::{
 use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
-    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, RELATIVE_ERROR, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
-    SEISMIC_KV, SLICES, SLICE_TOLERANCE,
+    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, RELATIVE_ERROR, SEARCH_LOWER_END_FACTOR,
+    SEISMIC_KH, SEISMIC_KV, SLICES, SLICE_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, Candidates, SectionSearch, SlopePlan, Target};

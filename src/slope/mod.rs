@@ -10,6 +10,7 @@ pub mod drawing;
 pub mod fills;
 pub mod input;
 pub mod methods;
+pub mod options;
 pub mod outputs;
 pub mod report;
 pub mod request;

@@ -46,6 +46,10 @@ pub struct SearchOutDto {
     /// Whether circles that would cross the bedrock were candidates (`follow_bedrock`) or not
     /// (`circles_only`).
     pub composite: super::request::CompositeDto,
+    /// With `shape: noncircular`: whether a budget (`time_budget_ms`, `max_evaluations` or the
+    /// time limit) ended the polyline search: its answer is the best found by then, never
+    /// above the critical circle.
+    pub budget_exhausted: bool,
     /// With `shape: noncircular`: the least F found so far, first on the critical circle's
     /// polyline, then each time a round of the polyline search lowered it.
     #[serde(skip_serializing_if = "Option::is_none")]

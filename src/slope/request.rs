@@ -4,6 +4,8 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+pub use super::options::{AccuracyDto, CompositeDto};
+
 /// The embankment: toe at the origin, slope face up to (length, height), level crest beyond.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -248,6 +250,11 @@ pub struct SearchDto {
     /// warning says so. Defaults to the time limit.
     #[serde(default)]
     pub time_budget_ms: Option<f64>,
+    /// Section only, with `shape: noncircular`: the most trial surfaces the polyline search may
+    /// evaluate, 1 ≤ n ≤ 1000000: a budget that gives the same answer on any machine (the time
+    /// limits still apply). `search.budget_exhausted` says when a budget ended the search.
+    #[serde(default)]
+    pub max_evaluations: Option<usize>,
     /// Section only: circles tangent to these elevations (R = y_c − y) instead of a radius
     /// range; at most 101.
     #[serde(default)]
@@ -287,25 +294,6 @@ pub struct SearchDto {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub composite: CompositeDto,
-}
-
-/// The accuracy a request asks for.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct AccuracyDto {
-    /// The largest estimated |F(n) − F(∞)|/F accepted, 1e-7 ≤ e ≤ 0.1.
-    pub relative_error: f64,
-}
-
-/// Whether a circular search may answer composite surfaces (circles that follow the bedrock).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum CompositeDto {
-    /// A circle that would cross the bedrock follows it (the default).
-    #[default]
-    FollowBedrock,
-    /// A circle that would cross the bedrock is not a candidate.
-    CirclesOnly,
 }
 
 fn default_grid() -> usize {

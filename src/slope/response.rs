@@ -434,6 +434,7 @@ fn search_out(search: &SearchReport) -> SearchOutDto {
         } else {
             super::request::CompositeDto::FollowBedrock
         },
+        budget_exhausted: search.timed_out,
         path: search.path.clone(),
         path_ms: search.path_ms.clone(),
     }

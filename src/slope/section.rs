@@ -13,9 +13,10 @@ use thrustline_solver::slope::Soil;
 use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto, SoilDto};
 use crate::error::ApiError;
 use crate::limits::{
-    COORDINATE, CRACK_DEPTH, DEFAULT_WATER_UNIT_WEIGHT, FRICTION_ANGLE_DEG, GRID_POINTS, LAYERS,
-    LINE_LOAD, MAX_GRID_SLICES, MAX_POLYLINE_POINTS, POLYLINE_POINTS, PORE_PRESSURE_RATIO, RADII,
-    RADIUS, SECTION_LOADS, STRESS, TIME_BUDGET_MS, UNIT_WEIGHT, VERTICES,
+    COORDINATE, CRACK_DEPTH, DEFAULT_WATER_UNIT_WEIGHT, EVALUATIONS, FRICTION_ANGLE_DEG,
+    GRID_POINTS, LAYERS, LINE_LOAD, MAX_GRID_SLICES, MAX_POLYLINE_POINTS, POLYLINE_POINTS,
+    PORE_PRESSURE_RATIO, RADII, RADIUS, SECTION_LOADS, STRESS, TIME_BUDGET_MS, UNIT_WEIGHT,
+    VERTICES,
 };
 use crate::validation::{count_within, number, within};
 
@@ -48,6 +49,7 @@ pub fn refuse_section_only(search: &SearchDto) -> Result<(), ApiError> {
         ),
         ("search.vertices", search.vertices.is_some()),
         ("search.time_budget_ms", search.time_budget_ms.is_some()),
+        ("search.max_evaluations", search.max_evaluations.is_some()),
     ];
     if let Some((field, _)) = noncircular.iter().find(|f| f.1) {
         return Err(ApiError::invalid(
@@ -141,8 +143,18 @@ fn noncircular(search: &SearchDto) -> Result<Option<Noncircular>, ApiError> {
                 "is for shape: noncircular",
             ))
         }
+        SearchShapeDto::Circular if search.max_evaluations.is_some() => {
+            return Err(ApiError::invalid(
+                "search.max_evaluations",
+                "is for shape: noncircular",
+            ))
+        }
         SearchShapeDto::Circular => None,
         SearchShapeDto::Noncircular => Some(Noncircular {
+            max_evaluations: search
+                .max_evaluations
+                .map(|n| count_within("search.max_evaluations", n, EVALUATIONS))
+                .transpose()?,
             vertices: count_within("search.vertices", search.vertices.unwrap_or(12), VERTICES)?,
             budget: search
                 .time_budget_ms

@@ -107,11 +107,11 @@ fn search_warnings(
     }
     if search.timed_out {
         warnings.push(
-                "the non-circular search ran out of time: the surface is the best found so far, \
-                 a lower F may exist (fewer vertices or slices, a larger time_budget_ms or a longer \
-                 time limit)"
-                    .to_owned(),
-            );
+            "a budget ended the non-circular search (time_budget_ms, max_evaluations or the \
+                 time limit): the surface is the best found so far, never above the critical \
+                 circle, and a lower F may exist (fewer vertices or slices, or a larger budget)"
+                .to_owned(),
+        );
     }
     let below = search
         .unsolved_bishop_minimum

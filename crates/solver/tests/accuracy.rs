@@ -79,7 +79,14 @@ fn layered() -> Section {
 }
 
 fn on(section: Section, shape: SlipShape, seismic: Seismic) -> SectionProblem {
-    SectionProblem::new(section, shape, NonZeroUsize::new(100).unwrap(), seismic, None).unwrap()
+    SectionProblem::new(
+        section,
+        shape,
+        NonZeroUsize::new(100).unwrap(),
+        seismic,
+        None,
+    )
+    .unwrap()
 }
 
 fn surfaces() -> Vec<(&'static str, SectionProblem)> {
@@ -93,13 +100,22 @@ fn surfaces() -> Vec<(&'static str, SectionProblem)> {
         ("Spencer 1967", spencer_1967::section_problem(100)),
         (
             "Fredlund & Krahn circle",
-            on(fredlund_krahn(), circle((120.0, 90.0), 80.0), Seismic::default()),
+            on(
+                fredlund_krahn(),
+                circle((120.0, 90.0), 80.0),
+                Seismic::default(),
+            ),
         ),
         (
             "Fredlund & Krahn polyline",
             on(
                 fredlund_krahn(),
-                SlipShape::Polyline(line(&[(40.0, 62.0), (70.0, 38.0), (130.0, 22.0), (165.0, 21.0)])),
+                SlipShape::Polyline(line(&[
+                    (40.0, 62.0),
+                    (70.0, 38.0),
+                    (130.0, 22.0),
+                    (165.0, 21.0),
+                ])),
                 Seismic::default(),
             ),
         ),
@@ -111,19 +127,30 @@ fn surfaces() -> Vec<(&'static str, SectionProblem)> {
             "layered section, polyline",
             on(
                 layered(),
-                SlipShape::Polyline(line(&[(-6.0, 0.0), (2.0, -5.0), (22.0, -4.0), (30.0, 10.0)])),
+                SlipShape::Polyline(line(&[
+                    (-6.0, 0.0),
+                    (2.0, -5.0),
+                    (22.0, -4.0),
+                    (30.0, 10.0),
+                ])),
                 Seismic::default(),
             ),
         ),
         (
             "simple slope, r_u 0.3, k_h 0.1",
-            on(simple, circle((5.0, 22.0), 22.5), Seismic { kh: 0.1, kv: 0.0 }),
+            on(
+                simple,
+                circle((5.0, 22.0), 22.5),
+                Seismic { kh: 0.1, kv: 0.0 },
+            ),
         ),
     ]
 }
 
 fn factor(problem: &SectionProblem, slices: usize) -> f64 {
-    let p = problem.with_slices(NonZeroUsize::new(slices).unwrap()).unwrap();
+    let p = problem
+        .with_slices(NonZeroUsize::new(slices).unwrap())
+        .unwrap();
     solve_spencer(p.model(), &SpencerSettings::default())
         .factor_of_safety
         .unwrap()
@@ -143,7 +170,10 @@ fn the_stated_error_is_honest_against_ten_thousand_slices() {
             let stated = accuracy_of(&p, f, &settings, &Budget::unlimited());
             let e = stated.discretisation_error.unwrap();
             let truth = (f - reference).abs() / reference;
-            println!("{name} {n}: true {truth:.2e} stated {e:.2e} ratio {:.2}", truth / e);
+            println!(
+                "{name} {n}: true {truth:.2e} stated {e:.2e} ratio {:.2}",
+                truth / e
+            );
             assert!(
                 truth <= 2.0 * e + 1e-9,
                 "{name}, {n} slices: true {truth:.3e} above twice the stated {e:.3e}"
@@ -179,9 +209,19 @@ fn an_accuracy_asked_for_is_reached_with_the_fewest_doublings() {
         // One doubling fewer would not have been enough.
         let n = answered.accuracy.slices;
         if n > 25 {
-            let coarser = problem.with_slices(NonZeroUsize::new(n / 2).unwrap()).unwrap();
-            let stated = accuracy_of(&coarser, factor(&problem, n / 2), &settings, &Budget::unlimited());
-            assert!(stated.discretisation_error.unwrap() > target, "{target}: {n} slices");
+            let coarser = problem
+                .with_slices(NonZeroUsize::new(n / 2).unwrap())
+                .unwrap();
+            let stated = accuracy_of(
+                &coarser,
+                factor(&problem, n / 2),
+                &settings,
+                &Budget::unlimited(),
+            );
+            assert!(
+                stated.discretisation_error.unwrap() > target,
+                "{target}: {n} slices"
+            );
         }
     }
 }

@@ -13,10 +13,10 @@
 //! - [`section`]: any cross-section, any slip surface, and their searches.
 //! - [`analysis`]: one analysis of a plan within a budget — what runs after what.
 
+pub mod accuracy;
 pub mod analysis;
 mod error;
 pub mod geometry;
-pub mod accuracy;
 pub mod refinement;
 pub mod search;
 pub mod section;

@@ -74,6 +74,9 @@ pub struct Noncircular {
     pub vertices: usize,
     /// The most the stage may spend (within the analysis' own budget).
     pub budget: Option<Duration>,
+    /// The most trial surfaces the stage may evaluate: a budget that gives the same answer on
+    /// any machine.
+    pub max_evaluations: Option<usize>,
 }
 
 /// The slices an accuracy asked for starts doubling from.

@@ -12,7 +12,7 @@ use crate::slope::search::{
 use crate::slope::section::noncircular::search_noncircular;
 use crate::slope::section::search::{search_circles, CircleSearchSettings};
 use crate::slope::section::{Polyline, SectionProblem, SlipShape};
-use crate::slope::spencer::SpencerSettings;
+use crate::slope::spencer::{solve_spencer, SpencerSettings};
 use crate::slope::{SlopeError, SlopeParameter};
 
 /// With automatic search bounds, circles beyond this many times the embankment's larger
@@ -107,7 +107,7 @@ pub(super) fn section(
         let better = search_noncircular(
             problem.section(),
             &problem.surface(),
-            noncircular.vertices,
+            (noncircular.vertices, noncircular.max_evaluations),
             plan.slices,
             plan.seismic,
             spencer,
@@ -118,13 +118,23 @@ pub(super) fn section(
                 parameter: SlopeParameter::Search,
                 reason: e.to_string(),
             })?;
-            problem = SectionProblem::new(
+            let polyline = SectionProblem::new(
                 problem.section().clone(),
                 SlipShape::Polyline(line),
                 plan.slices,
                 plan.seismic,
                 None,
             )?;
+            // Never above the best circle: the polyline answers only where it is lower (its
+            // resampling of the circle starts a little above it, and a short budget may end
+            // the stage there).
+            let settings = SpencerSettings { ..*spencer };
+            let f = |p: &SectionProblem| solve_spencer(p.model(), &settings).factor_of_safety;
+            if let (Some(g), Some(c)) = (f(&polyline), f(&problem)) {
+                if g < c {
+                    problem = polyline;
+                }
+            }
             report.evaluations += better.evaluations;
             report.path = Some(better.path);
             report.path_ms = Some(better.path_ms);

@@ -46,9 +46,18 @@ pub struct NoncircularSearch {
 /// Whether a surface (left to right) may slide: its interior points below the ground, above
 /// bedrock, and concave upwards but for reverse bends of up to `REVERSE_BEND_DEG`.
 fn admissible(section: &Section, points: &[(f64, f64)]) -> bool {
+    // On the bedrock to rounding counts as on it (a composite start's vertices lie there).
+    let rounding = points
+        .iter()
+        .fold(1.0f64, |m, p| m.max(p.0.abs()).max(p.1.abs()))
+        * 1e-12;
     let inside = points.len() >= 2
         && points[1..points.len() - 1].iter().all(|&(x, y)| {
-            y < section.ground.y_at(x) && section.bedrock.as_ref().is_none_or(|r| y >= r.y_at(x))
+            y < section.ground.y_at(x)
+                && section
+                    .bedrock
+                    .as_ref()
+                    .is_none_or(|r| y >= r.y_at(x) - rounding)
         });
     let limit = REVERSE_BEND_DEG.to_radians();
     let angles: Vec<f64> = points
@@ -247,42 +256,64 @@ fn resampled(section: &Section, start: &[(f64, f64)], n: usize) -> Option<Parame
     let mut v = vec![a, b];
     for (k, m) in &fractions {
         let x = a + (b - a) * k / m;
-        v.push((section.ground.y_at(x) - start_line.y_at(x)).max(1e-6 * (b - a)));
+        // On the bedrock where a composite start follows it (not a rounding below it).
+        let y = section
+            .bedrock
+            .as_ref()
+            .map_or(start_line.y_at(x), |r| start_line.y_at(x).max(r.y_at(x)));
+        v.push((section.ground.y_at(x) - y).max(1e-6 * (b - a)));
     }
     Some((fractions, v))
 }
 
+/// A polyline's F, confirmed at four times the slices ([`confirmed_factor`]).
+fn polyline_factor(
+    section: &Section,
+    mirror: &Section,
+    points: Vec<(f64, f64)>,
+    (slices, seismic): (NonZeroUsize, Seismic),
+    settings: &SpencerSettings,
+) -> f64 {
+    let Ok(line) = Polyline::new(points) else {
+        return f64::INFINITY;
+    };
+    let shape = SlipShape::Polyline(line);
+    confirmed_factor(section, mirror, &shape, slices, seismic, settings)
+}
+
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
 /// the best block surface along the section's layer boundaries when that is lower. Once `budget`
-/// is spent every trial fails, so that the optimisers stop with the best found so far.
+/// is spent, or `max_evaluations` trial surfaces were evaluated, every trial fails, so that the
+/// optimisers stop with the best found so far (`timed_out` then says so).
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
-    vertices: usize,
+    (vertices, max_evaluations): (usize, Option<usize>),
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &SpencerSettings,
     budget: &Budget,
 ) -> Option<NoncircularSearch> {
     let mirror = section.mirrored();
-    // Trial surfaces without a Newton solution are skipped rather than searched for one.
+    // The start is solved as any answer is (with Spencer's own construction when Newton's
+    // method fails: a composite circle's θ can lie beyond Newton's reach from θ = 0); trial
+    // surfaces without a Newton solution are skipped rather than searched for one.
+    let start_settings = *settings;
     let settings = &SpencerSettings {
         fallback: false,
         ..*settings
     };
     let evaluations = std::cell::Cell::new(0usize);
-    let late = || budget.is_spent();
+    // The budget: the time's, and a count of trial surfaces that gives the same answer
+    // whatever the machine.
+    let late = || budget.is_spent() || max_evaluations.is_some_and(|m| evaluations.get() >= m);
     let evaluate = |points: &[(f64, f64)]| -> f64 {
-        let Ok(line) = Polyline::new(points.to_vec()) else {
-            return f64::INFINITY;
-        };
         evaluations.set(evaluations.get() + 1);
-        confirmed_factor(
+        polyline_factor(
             section,
             &mirror,
-            &SlipShape::Polyline(line),
-            slices,
-            seismic,
+            points.to_vec(),
+            (slices, seismic),
             settings,
         )
     };
@@ -302,7 +333,10 @@ pub fn search_noncircular(
     };
     let began = Instant::now();
     // The start is evaluated whatever the time, so that a search out of time still answers.
-    let first = surface_of(section, &fractions, &v).map_or(f64::INFINITY, |p| evaluate(&p));
+    evaluations.set(evaluations.get() + 1);
+    let first = surface_of(section, &fractions, &v).map_or(f64::INFINITY, |p| {
+        polyline_factor(section, &mirror, p, (slices, seismic), &start_settings)
+    });
     if !first.is_finite() {
         return None;
     }
