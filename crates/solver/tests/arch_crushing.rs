@@ -85,3 +85,38 @@ fn both_formulations_agree_and_the_planes_converge() {
         assert!((a - b).abs() < 1e-6 * a, "σ_c = {strength}: {a} vs {b}");
     }
 }
+
+/// λ₀ of the semicircle R = 10, D = 1.5 (100 voussoirs), dead load only, at strength σ_c.
+fn dead_load_factor(thickness: f64, strength: f64) -> f64 {
+    let arch = semicircle(100, 10.0, thickness).assembly();
+    let p = ArchProblem::new(arch, 1.0, InterfaceLimits::heyman(), None, Vec::new())
+        .unwrap()
+        .with_crushing(Crushing {
+            strength,
+            planes: 16,
+            cuts: Vec::new(),
+        })
+        .unwrap();
+    let s = solve_dead_load(&p, &LimitSettings::default());
+    assert_eq!(s.status, LimitStatus::Solved);
+    s.load_factor.unwrap()
+}
+
+#[test]
+fn with_crushing_the_dead_load_factor_is_the_share_of_the_weight_carried() {
+    // model §6.5. Equilibrium is linear in the loads and the crushing curve
+    // |M| ≤ N·(t − N/σ_c)/2 is homogeneous in (N, M, σ_c): λ·w is carried at strength σ_c exactly
+    // when w is carried at σ_c/λ. So below full weight λ₀ = σ_c/σ*, linear in σ_c, with σ* the
+    // least strength that carries the whole weight — checked from both sides. (This used to
+    // answer 0: the crushing rows were taken for a cone.)
+    let at_20 = dead_load_factor(1.5, 20.0);
+    assert!(at_20 > 0.05 && at_20 < 1.0, "{at_20}");
+    let at_10 = dead_load_factor(1.5, 10.0);
+    assert!((at_10 / at_20 - 0.5).abs() < 1e-6, "{at_10} vs {at_20}");
+    let least = 20.0 / at_20;
+    assert_eq!(dead_load_factor(1.5, least * 1.001), 1.0);
+    let below = dead_load_factor(1.5, least * 0.999);
+    assert!((below - 0.999).abs() < 1e-5, "{below}");
+    // Too thin to stand as rigid blocks (D < 1.0748): nothing is carried, exactly.
+    assert_eq!(dead_load_factor(1.0, 20.0), 0.0);
+}

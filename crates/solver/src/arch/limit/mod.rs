@@ -111,9 +111,13 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
             start,
         );
     }
-    if problem.is_homogeneous() && problem.passive.is_empty() {
+    if problem.passive.is_empty()
+        && (problem.is_homogeneous() || rigid_cannot_carry(problem, settings))
+    {
         // A cone: if λ·w cannot be carried for λ = 1, it cannot for any λ > 0 (passive
-        // capacities are fixed forces, not scaled with λ: with them it is not a cone).
+        // capacities are fixed forces, not scaled with λ: with them it is not a cone). A
+        // finite strength only shrinks what the rigid blocks admit: where they cannot carry
+        // the weight, nothing is carried with crushing either.
         let mechanism = cx.mechanism(&full.programme);
         return cx.finish(
             Found {
@@ -177,6 +181,21 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
         },
         start,
     )
+}
+
+/// Whether the same blocks without crushing, a cone, cannot carry their full dead load.
+fn rigid_cannot_carry(problem: &ArchProblem, settings: &LimitSettings) -> bool {
+    if problem.crushing.is_none() {
+        return false;
+    }
+    let rigid = ArchProblem {
+        crushing: None,
+        ..problem.clone()
+    };
+    rigid.is_homogeneous()
+        && Context::new(&rigid, settings)
+            .margin(1.0)
+            .is_ok_and(|e| e.value > settings.margin_tolerance)
 }
 
 /// One live-load solve with the crushing planes as they are.

@@ -254,9 +254,12 @@ impl ArchProblem {
 
     /// Whether every finite limit of every interface is zero (the admissible set a cone).
     pub(crate) fn is_homogeneous(&self) -> bool {
+        // Crushing (a finite strength) bounds the resultants by the strength, not by the
+        // loads: what a load carries, twice the load may not (model §6.5).
         self.limits.is_homogeneous()
             && self.ring.is_none_or(|(l, _)| l.is_homogeneous())
             && self.shear_capacities.is_none()
+            && self.crushing.is_none()
     }
 
     /// Whether any interface has Coulomb friction.
