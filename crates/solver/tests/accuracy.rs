@@ -225,12 +225,3 @@ fn an_accuracy_asked_for_is_reached_with_the_fewest_doublings() {
         }
     }
 }
-
-#[test]
-#[ignore]
-fn print_levels() {
-    let problem = spencer_1967::section_problem(100);
-    for n in [625, 1250, 2500, 5000, 10000] {
-        println!("{n} {:.15}", factor(&problem, n));
-    }
-}
