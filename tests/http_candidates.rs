@@ -113,3 +113,24 @@ async fn candidate_options_are_validated() {
         assert_problem(status, &content_type, &body, 422, field);
     }
 }
+
+#[tokio::test]
+async fn a_surface_beyond_the_stated_ground_is_flagged() {
+    // The ground stops 1 m behind the crest; the critical circle exits further back, where the
+    // ground is only taken as level: the answer says so (the simple slope, level beyond its
+    // ends by definition, does not).
+    let server = Server::start().await;
+    let soil = json!({"unit_weight": 20, "cohesion": 20, "friction_angle_deg": 25});
+    let short = json!({"section": {"ground": [[10, 0], [20, 0], [40, 10], [41, 10]],
+        "layers": [{"top": null, "soil": soil}]}, "search": {}, "slices": 50});
+    let (_, _, answer) = server.post("/slope/spencer", &short).await;
+    let exit = answer["circle"]["upper_exit"]["x"].as_f64().unwrap();
+    assert!(exit > 41.0, "{exit}");
+    assert!(answer["warnings"]
+        .to_string()
+        .contains("beyond the ground as stated"));
+    let simple = json!({"slope": {"height": 10, "length": 20}, "soil": soil, "search": {},
+                        "slices": 50});
+    let (_, _, answer) = server.post("/slope/spencer", &simple).await;
+    assert!(!answer["warnings"].to_string().contains("beyond the ground"));
+}

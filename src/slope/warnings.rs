@@ -4,7 +4,7 @@ use thrustline_solver::slope::SpencerStatus;
 
 use super::report::SolvedSlope;
 use crate::limits::MAX_SLICES;
-use thrustline_solver::slope::analysis::SearchReport;
+use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 
 /// Every warning that applies to `solved`, in words.
 pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
@@ -13,8 +13,9 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
     match solution.status {
         SpencerStatus::Converged => {}
         SpencerStatus::NoSolution => warnings.push(
-            "no (F, θ) with positive m_α satisfies both equilibrium equations for this circle; \
-             no factor of safety is reported"
+            "Spencer's equations have no root for this surface (none with every m_α positive, \
+             and none past the poles of m_α with the slices there pressed onto their bases); no \
+             factor of safety is reported"
                 .to_owned(),
         ),
         SpencerStatus::MomentOnly => warnings.push(
@@ -82,7 +83,37 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
     if let Some(search) = &solved.search {
         search_warnings(search, solution.factor_of_safety, &mut warnings);
     }
+    if let Some(beyond) = beyond_the_ground(solved) {
+        warnings.push(beyond);
+    }
     warnings
+}
+
+/// A surface that reaches beyond a section's ground as stated: the ground is taken level
+/// there, which the section did not say.
+fn beyond_the_ground(solved: &SolvedSlope) -> Option<String> {
+    let Analysed::Section(problem) = &solved.problem;
+    let section = problem.section();
+    if section.is_level_beyond_ends() {
+        return None;
+    }
+    let points = section.ground().points();
+    let (first, last) = (points[0].0, points[points.len() - 1].0);
+    // In section coordinates already.
+    let (low, high) = problem
+        .surface()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let rounding = 1e-9 * (last - first).abs().max(1.0);
+    (low < first - rounding || high > last + rounding).then(|| {
+        format!(
+            "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as stated \
+             (x = {first} … {last}): the ground is taken as level beyond its ends — extend \
+             section.ground if it is not"
+        )
+    })
 }
 
 /// What a search leaves unsure: a minimum on the edge, a non-circular stage out of time,

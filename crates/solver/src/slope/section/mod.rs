@@ -97,6 +97,9 @@ pub struct Section {
     /// The stretches of x (between bends, or beyond the last ones) where the piezometric line
     /// lies above the ground somewhere: ponded water. Sorted, merged.
     ponded: Vec<(f64, f64)>,
+    /// Whether the ground is level beyond its ends by definition (the simple embankment) rather
+    /// than as stated only so far (a section's ground line).
+    level_beyond_ends: bool,
 }
 
 /// Everything a [`Section`] is built from.
@@ -296,6 +299,7 @@ impl Section {
             bends: Vec::new(),
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
+            level_beyond_ends: false,
         }
         .with_bends())
     }
@@ -311,6 +315,13 @@ impl Section {
     /// Whether ponded water stands anywhere over [a, b].
     pub(crate) fn is_ponded_over(&self, a: f64, b: f64) -> bool {
         self.ponded.iter().any(|&(lo, hi)| lo < b && a < hi)
+    }
+
+    /// Whether the ground is level beyond its ends by definition (the simple embankment):
+    /// a surface reaching beyond a section's stated ground deserves a warning, the simple
+    /// embankment's does not.
+    pub fn is_level_beyond_ends(&self) -> bool {
+        self.level_beyond_ends
     }
 
     /// The ground line.

@@ -13,7 +13,7 @@ impl Section {
                 parameter: SlopeParameter::Height,
                 reason: e.to_string(),
             })?;
-        Self::new(SectionParts {
+        let section = Self::new(SectionParts {
             ground,
             layers: vec![Layer {
                 top: None,
@@ -26,6 +26,10 @@ impl Section {
             surcharges: Vec::new(),
             line_loads: Vec::new(),
             tension_crack: None,
+        })?;
+        Ok(Self {
+            level_beyond_ends: true,
+            ..section
         })
     }
 
@@ -68,6 +72,7 @@ impl Section {
             bends: Vec::new(),
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
+            level_beyond_ends: self.level_beyond_ends,
         }
         .with_bends()
     }
