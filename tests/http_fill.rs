@@ -111,6 +111,9 @@ async fn a_rolling_axle_is_symmetric_and_its_worst_stop_is_the_worst_single_load
     let least = factors.iter().copied().fold(f64::INFINITY, f64::min);
     assert_eq!(rolling["critical_load_factor"].as_f64().unwrap(), least);
     assert_eq!(answer["load_factor"].as_f64().unwrap(), least);
+    // The stops are 1 apart (−8 … 8 in 17): the least λ lies within half of that of the
+    // critical stop (model §6.2).
+    assert_eq!(rolling["critical_position_error"].as_f64().unwrap(), 0.5);
     // The same load as a road load at the critical stop gives the same λ.
     let x = rolling["critical_position"].as_f64().unwrap();
     let single = json!({"geometry": geometry(), "fill": fill,

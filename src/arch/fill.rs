@@ -380,6 +380,11 @@ pub struct RollingOutDto {
     /// λ there.
     #[schema(required = true)]
     pub critical_load_factor: Option<f64>,
+    /// How far the true critical position may lie from `critical_position`: half the spacing
+    /// of the stops (the least λ lies between the critical stop's neighbours); null when there
+    /// is no critical stop, 0 with a single stop.
+    #[schema(required = true)]
+    pub critical_position_error: Option<f64>,
     /// Wall time per stop in milliseconds, over the whole sweep. Only the live loads move, so
     /// the first stop's dead-load check serves every later stop (which then solve one
     /// programme, not two; with crushing each stop checks again).
@@ -392,7 +397,12 @@ pub struct RollingOutDto {
 impl RollingOutDto {
     /// The curve of a sweep over the stops at `positions`.
     pub fn new(curve: &RollingCurve, positions: Vec<f64>) -> Self {
+        let spacing = match positions.as_slice() {
+            [first, .., last] => (last - first).abs() / (positions.len() - 1) as f64,
+            _ => 0.0,
+        };
         Self {
+            critical_position_error: curve.critical.map(|_| 0.5 * spacing),
             critical_position: curve.critical.map(|(i, _)| positions[i]),
             critical_load_factor: curve.critical.map(|(_, f)| f),
             positions,
