@@ -436,3 +436,28 @@ async fn hinges_are_placed_and_reactions_carry_the_weight() {
         );
     }
 }
+
+#[tokio::test]
+async fn locked_rings_say_why_no_load_collapses_them() {
+    // model §6.5: two rings that cannot slip on each other interlock at their staggered joints:
+    // the answer is unbounded, where the same arch as one ring does not even carry its weight
+    // (D = 1.0 < Milankovitch's 1.0748); the warning says why. With ring friction, none.
+    let server = Server::start().await;
+    let body = |rings: usize, ring_friction: Option<f64>| {
+        let mut b = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0,
+                                        "voussoirs": 40, "rings": rings},
+                           "loads": [{"block": 10, "fy": -1}]});
+        if let Some(mu) = ring_friction {
+            b["ring_friction_coefficient"] = json!(mu);
+        }
+        b
+    };
+    let (_, _, locked) = server.post("/arch/live-load", &body(2, None)).await;
+    assert_eq!(locked["solver"]["status"], "unbounded", "{locked}");
+    assert!(locked["warnings"].to_string().contains("rings_locked"));
+    let (_, _, single) = server.post("/arch/live-load", &body(1, None)).await;
+    assert_eq!(single["solver"]["status"], "dead_load_not_carried");
+    assert_eq!(single["warnings"], json!([]));
+    let (_, _, sliding) = server.post("/arch/live-load", &body(2, Some(0.6))).await;
+    assert!(!sliding["warnings"].to_string().contains("rings_locked"));
+}

@@ -169,6 +169,10 @@ pub struct ArchOutcomeDto {
     pub reactions: Vec<ReactionDto>,
     /// How the solve ended.
     pub solver: SolverDto,
+    /// What to look at before trusting the answer, in words; `rings_locked:` — rings that
+    /// cannot slip on each other lock their staggered joints (an unbounded answer for that
+    /// reason).
+    pub warnings: Vec<String>,
     /// The details `include` left out (returned empty, `mechanism` null); empty by default.
     pub omitted: Vec<ArchDetailDto>,
 }
@@ -300,7 +304,18 @@ impl ArchOutcomeDto {
             &[]
         };
         let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
+        let mut warnings = Vec::new();
+        if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
+            warnings.push(
+                "rings_locked: the rings cannot slip on each other (no ring_friction_coefficient), \
+                 so their staggered joints lock and no finite load forms a mechanism; the mortar \
+                 between real rings shears — give ring_friction_coefficient (and \
+                 ring_interface_limits) for the ring joints"
+                    .to_owned(),
+            );
+        }
         Self {
+            warnings,
             stable: solution.dead_load_carried,
             dead_load_margin: solution.dead_load_margin,
             active_constraints: detail(ArchDetailDto::ActiveConstraints)

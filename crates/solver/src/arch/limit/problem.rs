@@ -262,6 +262,17 @@ impl ArchProblem {
             && self.crushing.is_none()
     }
 
+    /// Whether the rings of a multi-ring arch cannot slip on each other (their interfaces have
+    /// no friction coefficient, their own or the arch's): staggered joints then lock.
+    pub fn has_locked_rings(&self) -> bool {
+        let has_rings = self
+            .assembly
+            .interfaces
+            .iter()
+            .any(|i| i.kind == crate::arch::geometry::InterfaceKind::Ring);
+        has_rings && self.ring.map_or(self.friction, |(_, mu)| mu).is_none()
+    }
+
     /// Whether any interface has Coulomb friction.
     pub fn has_friction(&self) -> bool {
         self.friction.is_some() || self.ring.is_some_and(|(_, mu)| mu.is_some())
