@@ -22,21 +22,8 @@ fn line(points: &[(f64, f64)]) -> Polyline {
 }
 
 fn fredlund_krahn() -> Section {
-    Section::new(SectionParts {
-        ground: line(&[(0.0, 60.0), (60.0, 60.0), (140.0, 20.0), (180.0, 20.0)]),
-        layers: vec![Layer {
-            top: None,
-            soil: Soil::new(120.0, 600.0, 20.0, 0.0).unwrap(),
-            pore_pressure_ratio: None,
-        }],
-        bedrock: None,
-        piezometric_line: None,
-        water_unit_weight: 62.4,
-        surcharges: Vec::new(),
-        line_loads: Vec::new(),
-        tension_crack: None,
-    })
-    .unwrap()
+    let ground = vec![(0.0, 60.0), (60.0, 60.0), (140.0, 20.0), (180.0, 20.0)];
+    Section::of_one_soil(ground, Soil::new(120.0, 600.0, 20.0, 0.0).unwrap()).unwrap()
 }
 
 /// The API's `layered_section` example: two layers, bedrock, a water table, a surcharge, a line

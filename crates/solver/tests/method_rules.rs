@@ -9,7 +9,7 @@ use std::num::NonZeroUsize;
 use thrustline_solver::budget::Budget;
 use thrustline_solver::slope::analysis::{analyse, Analysed, Method, SlopeOutcome, SlopePlan};
 use thrustline_solver::slope::analysis::{SlopeAnswer, Target};
-use thrustline_solver::slope::section::{Layer, Polyline, Section, SectionParts};
+use thrustline_solver::slope::section::{Polyline, Section};
 use thrustline_solver::slope::section::{SectionProblem, SlipShape};
 use thrustline_solver::slope::spencer::methods::{janbu, morgenstern_price, InterSliceFunction};
 use thrustline_solver::slope::spencer::NegativeEffectiveStress;
@@ -20,21 +20,7 @@ use thrustline_solver::slope::*;
 fn polyline_problem(moment_centre: Option<(f64, f64)>) -> SectionProblem {
     let soil = Soil::new(120.0, 600.0, 20.0, 0.0).unwrap();
     let ground = vec![(0.0, 60.0), (60.0, 60.0), (140.0, 20.0), (180.0, 20.0)];
-    let section = Section::new(SectionParts {
-        ground: Polyline::new(ground).unwrap(),
-        layers: vec![Layer {
-            top: None,
-            soil,
-            pore_pressure_ratio: None,
-        }],
-        bedrock: None,
-        piezometric_line: None,
-        water_unit_weight: 62.4,
-        surcharges: Vec::new(),
-        line_loads: Vec::new(),
-        tension_crack: None,
-    })
-    .unwrap();
+    let section = Section::of_one_soil(ground, soil).unwrap();
     let surface = vec![(40.0, 62.0), (70.0, 38.0), (130.0, 22.0), (165.0, 21.0)];
     SectionProblem::new(
         section,

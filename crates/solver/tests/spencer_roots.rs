@@ -7,7 +7,7 @@
 
 use std::num::NonZeroUsize;
 
-use thrustline_solver::slope::section::{Layer, Polyline, Section, SectionParts};
+use thrustline_solver::slope::section::Section;
 use thrustline_solver::slope::section::{SectionProblem, SlipShape};
 use thrustline_solver::slope::*;
 
@@ -70,21 +70,7 @@ fn residuals(terms: &[Term], weight: f64, radius: f64, f: f64, theta: f64) -> (f
 }
 
 fn section(ground: Vec<(f64, f64)>, soil: Soil) -> Section {
-    Section::new(SectionParts {
-        ground: Polyline::new(ground).unwrap(),
-        layers: vec![Layer {
-            top: None,
-            soil,
-            pore_pressure_ratio: None,
-        }],
-        bedrock: None,
-        piezometric_line: None,
-        water_unit_weight: 9.81,
-        surcharges: Vec::new(),
-        line_loads: Vec::new(),
-        tension_crack: None,
-    })
-    .unwrap()
+    Section::of_one_soil(ground, soil).unwrap()
 }
 
 fn circle(section: &Section, centre: (f64, f64), radius: f64) -> SectionProblem {

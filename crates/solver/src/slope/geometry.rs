@@ -82,9 +82,8 @@ pub struct SlipCircle {
 }
 
 impl SlipCircle {
-    /// The circle as a section's: centre (−F_e·H + X, Y), radius √(X² + Y²), after the checks
-    /// of the thesis' variables (Y > 0, F_e ≥ 0, all finite).
-    pub fn placed(&self, height: f64) -> Result<super::section::SlipShape, SlopeError> {
+    /// Checks the thesis' variables: X finite, Y > 0 (the centre above the lower end), F_e ≥ 0.
+    pub fn check(&self) -> Result<(), SlopeError> {
         check_range(
             SlopeParameter::CircleX,
             self.x,
@@ -109,6 +108,13 @@ impl SlipCircle {
             f64::MAX,
             "a finite number ≥ 0",
         )?;
+        Ok(())
+    }
+
+    /// The circle as a section's: centre (−F_e·H + X, Y), radius √(X² + Y²), after the checks
+    /// of the thesis' variables (Y > 0, F_e ≥ 0, all finite).
+    pub fn placed(&self, height: f64) -> Result<super::section::SlipShape, SlopeError> {
+        self.check()?;
         // `+ 0.0` turns −0.0 (F_e = 0) into 0.0.
         let through = -self.lower_end_factor * height + 0.0;
         Ok(super::section::SlipShape::Circle {
@@ -185,30 +191,7 @@ impl SlopeGeometry {
         slices: std::num::NonZeroUsize,
     ) -> Result<Self, SlopeError> {
         let h = embankment.height;
-        check_range(
-            SlopeParameter::CircleX,
-            circle.x,
-            f64::MIN,
-            false,
-            f64::MAX,
-            "a finite number",
-        )?;
-        check_range(
-            SlopeParameter::CircleY,
-            circle.y,
-            0.0,
-            true,
-            f64::MAX,
-            "a finite number > 0 (the centre lies above the lower end)",
-        )?;
-        check_range(
-            SlopeParameter::LowerEndFactor,
-            circle.lower_end_factor,
-            0.0,
-            false,
-            f64::MAX,
-            "a finite number ≥ 0",
-        )?;
+        circle.check()?;
         // `+ 0.0` turns −0.0 (F_e = 0) into 0.0.
         let lower_end = (-circle.lower_end_factor * h + 0.0, 0.0);
         let centre = (lower_end.0 + circle.x, circle.y);

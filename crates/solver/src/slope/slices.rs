@@ -154,6 +154,32 @@ impl Seismic {
     }
 }
 
+/// Checks loads given per slice against `slices` slices: each on an existing slice, with
+/// finite components.
+pub(crate) fn check_slice_loads(loads: &[ExternalLoad], slices: usize) -> Result<(), SlopeError> {
+    for (index, load) in loads.iter().enumerate() {
+        if load.slice >= slices {
+            return Err(SlopeError::OutOfRange {
+                parameter: SlopeParameter::ExternalLoadSlice { index },
+                value: (load.slice + 1) as f64,
+                allowed: "the number of an existing slice, 1 ≤ slice ≤ slices",
+            });
+        }
+        for value in [load.fx, load.fy, load.moment] {
+            let parameter = SlopeParameter::ExternalLoad { index };
+            check_range(
+                parameter,
+                value,
+                f64::MIN,
+                false,
+                f64::MAX,
+                "a finite number",
+            )?;
+        }
+    }
+    Ok(())
+}
+
 /// A known force on one slice, applied at the middle of its base (the thesis' F_x, F_y, M1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ExternalLoad {

@@ -484,27 +484,7 @@ impl SectionProblem {
     /// base middle, slices counted from the lower end in the solver's frame). Such a problem
     /// cannot be re-cut into other slices (`with_slices` refuses it).
     pub fn with_slice_loads(mut self, loads: Vec<ExternalLoad>) -> Result<Self, SlopeError> {
-        let slices = self.cut.model.slices.len();
-        for (index, load) in loads.iter().enumerate() {
-            if load.slice >= slices {
-                return Err(SlopeError::OutOfRange {
-                    parameter: SlopeParameter::ExternalLoadSlice { index },
-                    value: (load.slice + 1) as f64,
-                    allowed: "the number of an existing slice, 1 ≤ slice ≤ slices",
-                });
-            }
-            for value in [load.fx, load.fy, load.moment] {
-                let parameter = SlopeParameter::ExternalLoad { index };
-                check_range(
-                    parameter,
-                    value,
-                    f64::MIN,
-                    false,
-                    f64::MAX,
-                    "a finite number",
-                )?;
-            }
-        }
+        crate::slope::slices::check_slice_loads(&loads, self.cut.model.slices.len())?;
         self.cut.model.loads.extend(loads.iter().copied());
         self.slice_loads.extend(loads);
         Ok(self)

@@ -13,24 +13,21 @@ impl Section {
                 parameter: SlopeParameter::Height,
                 reason: e.to_string(),
             })?;
-        let section = Self::new(SectionParts {
-            ground,
-            layers: vec![Layer {
-                top: None,
-                soil,
-                pore_pressure_ratio: Some(soil.pore_pressure_ratio()),
-            }],
-            bedrock: None,
-            piezometric_line: None,
-            water_unit_weight: 9.81,
-            surcharges: Vec::new(),
-            line_loads: Vec::new(),
-            tension_crack: None,
-        })?;
+        let section = Self::new(one_soil(ground, soil, Some(soil.pore_pressure_ratio())))?;
         Ok(Self {
             level_beyond_ends: true,
             ..section
         })
+    }
+
+    /// A section of one soil under `ground` (no water, loads or crack): the commonest scene,
+    /// and the fixtures' (water's unit weight 9.81).
+    pub fn of_one_soil(ground: Vec<(f64, f64)>, soil: Soil) -> Result<Self, SlopeError> {
+        let ground = Polyline::new(ground).map_err(|e| SlopeError::NoSlipMass {
+            parameter: SlopeParameter::Surface,
+            reason: e.to_string(),
+        })?;
+        Self::new(one_soil(ground, soil, None))
     }
 
     /// The section seen from behind (x → −x).
@@ -75,5 +72,23 @@ impl Section {
             level_beyond_ends: self.level_beyond_ends,
         }
         .with_bends()
+    }
+}
+
+/// The parts of a section of one soil under `ground`, with its own r_u when given.
+fn one_soil(ground: Polyline, soil: Soil, pore_pressure_ratio: Option<f64>) -> SectionParts {
+    SectionParts {
+        ground,
+        layers: vec![Layer {
+            top: None,
+            soil,
+            pore_pressure_ratio,
+        }],
+        bedrock: None,
+        piezometric_line: None,
+        water_unit_weight: 9.81,
+        surcharges: Vec::new(),
+        line_loads: Vec::new(),
+        tension_crack: None,
     }
 }

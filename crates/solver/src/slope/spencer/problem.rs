@@ -121,26 +121,7 @@ impl SlopeProblem {
         external_loads: Vec<ExternalLoad>,
     ) -> Result<Self, SlopeError> {
         Seismic::new(seismic.kh, seismic.kv)?;
-        for (index, load) in external_loads.iter().enumerate() {
-            if load.slice >= slices.get() {
-                return Err(SlopeError::OutOfRange {
-                    parameter: SlopeParameter::ExternalLoadSlice { index },
-                    value: (load.slice + 1) as f64,
-                    allowed: "the number of an existing slice, 1 ≤ slice ≤ slices",
-                });
-            }
-            for value in [load.fx, load.fy, load.moment] {
-                let parameter = SlopeParameter::ExternalLoad { index };
-                check_range(
-                    parameter,
-                    value,
-                    f64::MIN,
-                    false,
-                    f64::MAX,
-                    "a finite number",
-                )?;
-            }
-        }
+        crate::slope::slices::check_slice_loads(&external_loads, slices.get())?;
         let geometry = SlopeGeometry::new(embankment, circle, slices)?;
         Ok(Self {
             geometry,
