@@ -134,3 +134,35 @@ async fn a_surface_beyond_the_stated_ground_is_flagged() {
     let (_, _, answer) = server.post("/slope/spencer", &simple).await;
     assert!(!answer["warnings"].to_string().contains("beyond the ground"));
 }
+
+#[tokio::test]
+async fn options_that_would_be_ignored_are_refused() {
+    // Issue 38: Morgenstern–Price's inter-slice function without Morgenstern–Price, and a line
+    // load beyond the ground as stated, used to be accepted and ignored.
+    let server = Server::start().await;
+    let soil = json!({"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30});
+    let section = |x: f64| {
+        json!({"ground": [[0, 0], [20, 0], [40, 10], [60, 10]],
+               "layers": [{"top": null, "soil": soil}],
+               "line_loads": [{"x": x, "fx": 0, "fy": -50}]})
+    };
+    let circle = json!({"centre": [30, 30], "radius": 31});
+    let body = json!({"section": section(50.0), "circle": circle,
+                      "interslice_function": [[0, 0], [0.5, 1], [1, 0]], "methods": ["bishop"]});
+    let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+    assert_problem(status, &content_type, &answer, 422, "interslice_function");
+    let body = json!({"section": section(50.0), "circle": circle,
+                      "interslice_function": [[0, 0], [0.5, 1], [1, 0]],
+                      "methods": ["morgenstern_price"]});
+    let (status, _, answer) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let body = json!({"section": section(75.0), "circle": circle});
+    let (status, content_type, answer) = server.post("/slope/spencer", &body).await;
+    assert_problem(
+        status,
+        &content_type,
+        &answer,
+        422,
+        "section.line_loads[0].x",
+    );
+}

@@ -305,9 +305,14 @@ fn response(
         MinimumThicknessOutcome::StandsHoweverThin => MinimumThicknessResponse {
             outcome: MinimumThicknessOutcomeDto::StandsHoweverThin,
             detail: format!(
-                "no finite minimum: even thickness {} (1e-6·R) carries the dead load \
-                 (with three or fewer voussoirs no mechanism can form under symmetric dead load)",
-                1e-6 * radius
+                "no finite minimum: even thickness {} (1e-6·R) carries the dead load ({})",
+                1e-6 * radius,
+                if arch.voussoirs() <= 3 {
+                    "with three or fewer voussoirs no mechanism can form under symmetric dead load"
+                } else {
+                    "no mechanism of these voussoirs forms under their own weight: base angles \
+                     or joints that leave no room for four hinges"
+                }
             ),
             ..none
         },

@@ -120,6 +120,14 @@ impl SpencerRequest {
         };
         let mut methods = self.methods.clone();
         methods.dedup();
+        if self.interslice_function.is_some()
+            && !methods.contains(&super::methods::MethodName::MorgensternPrice)
+        {
+            return Err(ApiError::invalid(
+                "interslice_function",
+                "is Morgenstern–Price's: add \"morgenstern_price\" to methods, or leave it out",
+            ));
+        }
         Ok(SlopePlan {
             target,
             slice_tolerance,

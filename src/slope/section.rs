@@ -319,6 +319,7 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
+    on_the_ground(&ground, &line_loads)?;
     let tension_crack = dto
         .tension_crack
         .as_ref()
@@ -375,4 +376,26 @@ fn surcharges(dto: &SectionDto) -> Result<Vec<Surcharge>, ApiError> {
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()
+}
+
+/// A line load beyond the ground as stated would act on its level continuation, which the
+/// section does not describe: refused rather than placed there silently.
+fn on_the_ground(ground: &Polyline, line_loads: &[LineLoad]) -> Result<(), ApiError> {
+    let points = ground.points();
+    let (first, last) = (points[0].0, points[points.len() - 1].0);
+    match line_loads
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.x < first || l.x > last)
+    {
+        Some((i, l)) => Err(ApiError::invalid(
+            format!("section.line_loads[{i}].x"),
+            format!(
+                "{} lies beyond the ground (x = {first} … {last}): extend section.ground to \
+                 where the load stands",
+                l.x
+            ),
+        )),
+        None => Ok(()),
+    }
 }
