@@ -103,6 +103,8 @@ impl<S: Send + Sync, Q: TableQuery> FromRequestParts<S> for CsvTable<Q> {
                     let detail = detail
                         .strip_prefix("Failed to deserialize query string: ")
                         .unwrap_or(&detail);
+                    // serde names the parameter itself; the problem names it once.
+                    let detail = detail.strip_prefix("table: ").unwrap_or(detail);
                     ApiError::invalid("table", detail.to_owned())
                 })?;
         Ok(Self(

@@ -291,5 +291,16 @@ async fn tables_are_asked_for_and_refused_clearly() {
         assert_eq!(content_type, "application/problem+json");
         let problem: Value = serde_json::from_str(&text).unwrap();
         assert_eq!(problem["field"], "table", "{path}: {problem}");
+        // The parameter is named once, not "table: table: …".
+        let detail = problem["detail"].as_str().unwrap();
+        assert!(!detail.contains("table: table"), "{path}: {detail}");
     }
+    // A table that include left out is refused, not answered as a header alone.
+    let mut lean = example.clone();
+    lean["include"] = json!([]);
+    let (status, _, text) = server
+        .post_accept("/slope/spencer?table=slices", "text/csv", &lean)
+        .await;
+    assert_eq!(status, 422, "{text}");
+    assert!(text.contains("include left out"), "{text}");
 }

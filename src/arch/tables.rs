@@ -6,6 +6,7 @@ use utoipa::{IntoParams, ToSchema};
 
 use super::fill::RollingOutDto;
 use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
+use super::request::ArchDetailDto;
 use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
 use crate::error::ApiError;
 use crate::table::{csv, Csv, Row, TableQuery};
@@ -135,6 +136,20 @@ pub fn arch_table(
     rolling: Option<&RollingOutDto>,
     table: ArchTableDto,
 ) -> Result<Csv, ApiError> {
+    let detail = match table {
+        ArchTableDto::ThrustLine => Some(ArchDetailDto::ThrustLine),
+        ArchTableDto::Hinges => Some(ArchDetailDto::Hinges),
+        ArchTableDto::ActiveConstraints => Some(ArchDetailDto::ActiveConstraints),
+        ArchTableDto::Reactions => Some(ArchDetailDto::Reactions),
+        ArchTableDto::Mechanism => Some(ArchDetailDto::Mechanism),
+        ArchTableDto::Rolling => None,
+    };
+    if detail.is_some_and(|d| outcome.omitted.contains(&d)) {
+        return Err(ApiError::invalid(
+            "table",
+            "is a detail that include left out: add it to include, or leave include out",
+        ));
+    }
     match table {
         ArchTableDto::ThrustLine => csv(&outcome.thrust_line),
         ArchTableDto::Hinges => csv(&outcome.hinges),

@@ -4,7 +4,9 @@
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::response::{BoundaryThrustPointDto, PointDto, SliceDto, SpencerResponse};
+use super::response::{
+    BoundaryThrustPointDto, PointDto, SliceDto, SlopeDetailDto, SpencerResponse,
+};
 use crate::error::ApiError;
 use crate::table::{csv, Csv, Row, TableQuery};
 
@@ -93,6 +95,19 @@ impl Row for GridRow {
 
 /// The table of a Spencer answer.
 pub fn slope_table(answer: &SpencerResponse, table: SlopeTableDto) -> Result<Csv, ApiError> {
+    let detail = match table {
+        SlopeTableDto::Slices => SlopeDetailDto::Slices,
+        SlopeTableDto::ThrustLine => SlopeDetailDto::ThrustLine,
+        SlopeTableDto::EffectiveThrustLine => SlopeDetailDto::EffectiveThrustLine,
+        SlopeTableDto::Surface => SlopeDetailDto::Surface,
+        SlopeTableDto::Grid => SlopeDetailDto::Grid,
+    };
+    if answer.omitted.contains(&detail) {
+        return Err(ApiError::invalid(
+            "table",
+            "is a detail that include left out: add it to include, or leave include out",
+        ));
+    }
     match table {
         SlopeTableDto::Slices => csv(&answer.slices),
         SlopeTableDto::ThrustLine => csv(&answer.thrust_line),
