@@ -25,10 +25,11 @@ RUN apt-get update \
     && useradd --system --uid 10001 --no-create-home thrustline
 COPY --from=build /usr/local/bin/thrustline /usr/local/bin/thrustline
 USER 10001
-ENV THRUSTLINE_ADDR=0.0.0.0:8080 RUST_LOG=info
+ENV THRUSTLINE_ADDR=0.0.0.0:8080 THRUSTLINE_PORT_FILE=/tmp/thrustline.port RUST_LOG=info
 EXPOSE 8080
-# The port checked is the one THRUSTLINE_ADDR listens on (the text after its last colon).
+# The port checked is the one the service actually listens on, which it writes to
+# THRUSTLINE_PORT_FILE (`serve --addr 0.0.0.0:9000` included).
 HEALTHCHECK --interval=10s --timeout=3s --start-period=5s --retries=3 \
-    CMD curl -fsS "http://127.0.0.1:${THRUSTLINE_ADDR##*:}/healthz" || exit 1
+    CMD curl -fsS "http://127.0.0.1:$(cat "$THRUSTLINE_PORT_FILE")/healthz" || exit 1
 ENTRYPOINT ["thrustline"]
 CMD ["serve"]

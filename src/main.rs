@@ -24,6 +24,8 @@ Environment (read by `serve`):
   THRUSTLINE_TOKEN                bearer token required by every route but /healthz (default none;
                                   set but empty refuses to start)
   THRUSTLINE_CORS_ORIGINS         comma-separated origins allowed by CORS, or * (default none)
+  THRUSTLINE_PORT_FILE            a file to write the port actually listened on to, once listening
+                                  (the container's health check reads it; default none)
   RUST_LOG                        log filter (default info)";
 
 fn main() -> ExitCode {
@@ -105,6 +107,14 @@ fn run(settings: Settings) -> ExitCode {
             }
         };
         tracing::info!(addr = %settings.addr, "thrustline listening");
+        // The port actually listened on (an --addr given, or port 0), for health checks.
+        if let Some(path) = std::env::var_os("THRUSTLINE_PORT_FILE") {
+            let port = listener.local_addr().map(|a| a.port());
+            match port.and_then(|port| std::fs::write(&path, port.to_string())) {
+                Ok(()) => {}
+                Err(error) => tracing::warn!(%error, "cannot write THRUSTLINE_PORT_FILE"),
+            }
+        }
         match thrustline::serve(listener, settings, shutdown_signal()).await {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {

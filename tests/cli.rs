@@ -76,3 +76,43 @@ fn settings_that_are_mistakes_stop_the_start_with_a_message() {
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
     }
 }
+
+#[test]
+fn the_port_actually_listened_on_is_written_for_health_checks() {
+    // Issue 38: the container's health check followed THRUSTLINE_ADDR only, so `serve --addr
+    // 0.0.0.0:9000` turned unhealthy. The service writes the port it listens on.
+    let dir = std::env::temp_dir().join(format!("thrustline-port-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("port");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_thrustline"))
+        .args(["serve", "--addr", "127.0.0.1:0"])
+        .env("THRUSTLINE_PORT_FILE", &file)
+        .env("THRUSTLINE_ADDR", "127.0.0.1:1")
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut port = None;
+    for _ in 0..100 {
+        if let Ok(text) = std::fs::read_to_string(&file) {
+            port = text.trim().parse::<u16>().ok();
+            if port.is_some() {
+                break;
+            }
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let port = port.expect("the port file was written");
+    assert_ne!(port, 0);
+    let healthy = std::net::TcpStream::connect(("127.0.0.1", port)).and_then(|mut s| {
+        use std::io::{Read, Write};
+        s.write_all(b"GET /healthz HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")?;
+        let mut answer = String::new();
+        s.read_to_string(&mut answer)?;
+        Ok(answer)
+    });
+    let _ = child.kill();
+    let _ = child.wait();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(healthy.unwrap().starts_with("HTTP/1.1 200"));
+}

@@ -87,7 +87,7 @@ fn the_dockerfile_pins_its_images_caches_dependencies_and_checks_its_own_port() 
         }
     }
     // The service listens on THRUSTLINE_ADDR (no --addr to override it), which EXPOSE names,
-    // and the health check reads its port from that same variable.
+    // and the health check reads the port it actually listens on from THRUSTLINE_PORT_FILE.
     let env = &steps.iter().find(|s| s.0 == "ENV").unwrap().1;
     let addr = env
         .split_whitespace()
@@ -104,9 +104,10 @@ fn the_dockerfile_pins_its_images_caches_dependencies_and_checks_its_own_port() 
     );
     let health = &steps.iter().find(|s| s.0 == "HEALTHCHECK").unwrap().1;
     assert!(
-        health.contains("${THRUSTLINE_ADDR##*:}/healthz"),
+        health.contains("$(cat \"$THRUSTLINE_PORT_FILE\")/healthz"),
         "{health}"
     );
+    assert!(env.contains("THRUSTLINE_PORT_FILE="), "{env}");
     assert!(
         !health.contains(&format!(":{}/", port(addr))),
         "port hard-coded"
