@@ -240,11 +240,8 @@ fn a_rolling_load_answers_its_least_stop_as_that_stop_alone_answers() {
     assert_eq!(outcome.status, ArchStatus::Limit(LimitStatus::Solved));
 }
 
-#[test]
-fn non_associative_friction_answers_below_the_associative_factor() {
-    // Two leaves under a cap (Gilbert, Casapulla & Ahmed 2006's kind of panel): the associative
-    // programme over-estimates; the iteration's settled answer is lower, and `Checked` keeps
-    // the associative factor while reporting the iteration.
+/// Two leaves 0.5 × 2 under a 1 × 0.5 cap on a base, μ = 0.5, pushed sideways at the cap.
+fn two_leaves_under_a_cap() -> ArchProblem {
     let wall = thrustline_solver::arch::Assembly::from_polygons(
         &[
             vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
@@ -261,8 +258,15 @@ fn non_associative_friction_answers_below_the_associative_factor() {
         fy: 0.0,
         moment: 0.0,
     };
-    let problem =
-        ArchProblem::new(wall, 1.0, InterfaceLimits::heyman(), Some(0.5), vec![load]).unwrap();
+    ArchProblem::new(wall, 1.0, InterfaceLimits::heyman(), Some(0.5), vec![load]).unwrap()
+}
+
+#[test]
+fn non_associative_friction_answers_below_the_associative_factor() {
+    // Two leaves under a cap (Gilbert, Casapulla & Ahmed 2006's kind of panel): the associative
+    // programme over-estimates; the iteration's settled answer is lower, and `Checked` keeps
+    // the associative factor while reporting the iteration.
+    let problem = two_leaves_under_a_cap();
     let checked = analyse_arch(
         &problem,
         &plan(Programme::LiveLoad, Friction::Checked),
@@ -351,24 +355,7 @@ fn a_budget_spent_between_friction_steps_ends_the_iteration_unsettled() {
     // The two leaves under a cap take 28 steps to settle; the budget's flag raised during the
     // second step ends the iteration at the next one: not settled, no factor, and the status
     // says the time limit (never the associative state answered as a fixed point).
-    let wall = thrustline_solver::arch::Assembly::from_polygons(
-        &[
-            vec![(0.0, 0.0), (0.5, 0.0), (0.5, 2.0), (0.0, 2.0)],
-            vec![(0.5, 0.0), (1.0, 0.0), (1.0, 2.0), (0.5, 2.0)],
-            vec![(0.0, 2.0), (1.0, 2.0), (1.0, 2.5), (0.0, 2.5)],
-        ],
-        &[vec![(-2.0, -1.0), (3.0, -1.0), (3.0, 0.0), (-2.0, 0.0)]],
-    )
-    .unwrap();
-    let load = LiveLoad {
-        block: 2,
-        point: (0.0, 2.5),
-        fx: 1.0,
-        fy: 0.0,
-        moment: 0.0,
-    };
-    let problem =
-        ArchProblem::new(wall, 1.0, InterfaceLimits::heyman(), Some(0.5), vec![load]).unwrap();
+    let problem = two_leaves_under_a_cap();
     let flag = Arc::new(AtomicBool::new(false));
     let settings = LimitSettings {
         formulation: thrustline_solver::arch::Formulation::Assembly,

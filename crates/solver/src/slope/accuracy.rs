@@ -159,7 +159,6 @@ pub fn to_accuracy<P: Sliced>(
         },
         problem,
         solution,
-        steps: factors,
     }))
 }
 
@@ -172,6 +171,4 @@ pub struct Answered<P> {
     pub solution: super::spencer::SpencerSolution,
     /// Its accuracy.
     pub accuracy: Accuracy,
-    /// F at every count tried (slices, F), in the order solved.
-    pub steps: Vec<(usize, Option<f64>)>,
 }

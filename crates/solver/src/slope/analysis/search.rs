@@ -128,9 +128,9 @@ pub(super) fn section(
             // Never above the best circle: the polyline answers only where it is lower (its
             // resampling of the circle starts a little above it, and a short budget may end
             // the stage there).
-            let settings = SpencerSettings { ..*spencer };
-            let f = |p: &SectionProblem| solve_spencer(p.model(), &settings).factor_of_safety;
-            if let (Some(g), Some(c)) = (f(&polyline), f(&problem)) {
+            // The circle's F is the search's own, at these slices.
+            let g = solve_spencer(polyline.model(), spencer).factor_of_safety;
+            if let (Some(g), Some(c)) = (g, found.factor_of_safety) {
                 if g < c {
                     problem = polyline;
                 }
