@@ -38,6 +38,10 @@ pub struct Settings {
     /// Open connections at most; more are closed on accept. Defaults to 1024
     /// (`THRUSTLINE_MAX_CONNECTIONS`).
     pub max_connections: usize,
+    /// Mebibytes the heavy solves running at once may take together; one solve that would
+    /// take more is refused (422). Defaults to 384 (`THRUSTLINE_SOLVE_MEMORY_MIB`, 16 to
+    /// 1048576).
+    pub solve_memory_mib: u32,
 }
 
 impl Default for Settings {
@@ -54,6 +58,7 @@ impl Default for Settings {
             header_timeout: Duration::from_secs(10),
             body_timeout: Duration::from_secs(30),
             max_connections: 1024,
+            solve_memory_mib: 384,
         }
     }
 }
@@ -118,6 +123,12 @@ impl Settings {
         }
         if let Some(n) = read::<usize>("THRUSTLINE_MAX_CONNECTIONS")? {
             settings.max_connections = n.max(1);
+        }
+        if let Some(mib) = read::<u32>("THRUSTLINE_SOLVE_MEMORY_MIB")? {
+            if !(16..=1 << 20).contains(&mib) {
+                return Err("THRUSTLINE_SOLVE_MEMORY_MIB must be 16 to 1048576".to_owned());
+            }
+            settings.solve_memory_mib = mib;
         }
         if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
             // An empty token is a mistake, not "no authentication": refuse to start.

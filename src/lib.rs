@@ -75,6 +75,7 @@ impl AppState {
             pool: pool::SolvePool::new(
                 settings.max_running,
                 settings.max_queued,
+                settings.solve_memory_mib,
                 // The solvers stop themselves at the solve timeout and answer; the pool's own
                 // deadline, later, only catches what could not (waiting in the queue included).
                 settings.solve_timeout * 2 + std::time::Duration::from_secs(1),

@@ -304,6 +304,9 @@ fn fill_from(dto: &FillDto, top: f64) -> Result<Fill, ApiError> {
     })
 }
 
+/// The most loads a rolling load's stops may put on the voussoirs together (48 MB).
+const MAX_ROLLING_LOADS: usize = 1_000_000;
+
 fn rolling_loads(
     profile: &ExtradosProfile,
     carrier: &Fill,
@@ -345,25 +348,36 @@ fn rolling_loads(
             }
         })
         .collect();
-    let loads = positions
-        .iter()
-        .map(|&x| {
-            axles
-                .iter()
-                .flat_map(|&(offset, fy, length)| {
-                    road_load_on(
-                        profile,
-                        carrier,
-                        RoadLoad {
-                            x: x + offset,
-                            fy,
-                            length,
-                        },
-                    )
-                })
-                .collect()
-        })
-        .collect();
+    // Every stop's loads are held for the sweep: bounded as they are made (a 400-byte request
+    // of 1001 stops of 20 axles spread over 10,000 voussoirs made 9 GB of them).
+    let mut loads = Vec::with_capacity(n);
+    let mut total = 0usize;
+    for &x in &positions {
+        let stop: Vec<LiveLoad> = axles
+            .iter()
+            .flat_map(|&(offset, fy, length)| {
+                let load = RoadLoad {
+                    x: x + offset,
+                    fy,
+                    length,
+                };
+                road_load_on(profile, carrier, load)
+            })
+            .collect();
+        total += stop.len();
+        if total > MAX_ROLLING_LOADS {
+            return Err(ApiError::invalid(
+                "rolling.positions",
+                format!(
+                    "the stops put more than {MAX_ROLLING_LOADS} loads on the voussoirs (each \
+                     axle spread over the voussoirs under it, at every stop; {total} by stop {} \
+                     of {n}): use fewer positions, voussoirs or axles, or less dispersal",
+                    loads.len() + 1
+                ),
+            ));
+        }
+        loads.push(stop);
+    }
     Ok(Rolling { positions, loads })
 }
 

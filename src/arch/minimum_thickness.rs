@@ -18,10 +18,12 @@ use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::limits::{LENGTH, THICKNESS_TOLERANCE};
+use crate::pool::Cost;
 use crate::stop::Work;
 use crate::table::{csv, Answer, CsvTable};
 use crate::validation::within;
 use crate::AppState;
+use thrustline_solver::arch::memory::chain_memory_bound;
 use thrustline_solver::budget::Stop;
 
 arch_request! {
@@ -217,9 +219,14 @@ async fn solve(
         settings,
         ..
     } = planned;
+    // A search of dead-load programmes on the chain formulation.
+    let cost = Cost {
+        light: false,
+        memory: chain_memory_bound(arch.voussoirs()),
+    };
     let ran = state
         .pool
-        .run_budgeted(state.solve_time_limit, move |budget| {
+        .run_budgeted(state.solve_time_limit, cost, move |budget| {
             let settings = MinimumThicknessSettings {
                 limit: LimitSettings {
                     budget: budget.clone(),

@@ -20,8 +20,10 @@ pub mod tables;
 
 use axum::extract::State;
 use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
+use thrustline_solver::arch::memory::{memory_bound, on_chain};
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::pool::Cost;
 use crate::stop::Work;
 use crate::svg::Svg;
 use crate::table::{Answer, CsvTable};
@@ -203,11 +205,14 @@ enum Problem {
 }
 
 /// The plan of a validated request: the programme (a rolling load's stops for a live load that
-/// rolls) and the treatment of friction.
-fn plan(which: Problem, input: &ArchInput) -> ArchPlan {
-    let programme = match (which, &input.rolling) {
+/// rolls: moved out of the input, which keeps the positions; a thousand stops of a long chain's
+/// loads are tens of MB) and the treatment of friction.
+fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
+    let programme = match (which, input.rolling.as_mut()) {
         (Problem::DeadLoad, _) => Programme::DeadLoad,
-        (Problem::LiveLoad, Some(rolling)) => Programme::Rolling(rolling.loads.clone()),
+        (Problem::LiveLoad, Some(rolling)) => {
+            Programme::Rolling(std::mem::take(&mut rolling.loads))
+        }
         (Problem::LiveLoad, None) => Programme::LiveLoad,
     };
     let friction = if input.non_associative {
@@ -222,14 +227,51 @@ fn plan(which: Problem, input: &ArchInput) -> ArchPlan {
     }
 }
 
+/// Chains of up to this many blocks, without a rolling load or the friction iteration, are
+/// light (a few milliseconds: docs/performance.md).
+const LIGHT_CHAIN_BLOCKS: usize = 1000;
+
+/// What the analysis will take; 422 naming the geometry when its memory bound is over what one
+/// solve may have (`THRUSTLINE_SOLVE_MEMORY_MIB`), with the most blocks that would fit.
+fn cost(state: &AppState, input: &ArchInput, plan: &ArchPlan) -> Result<Cost, ApiError> {
+    let problem = &input.problem;
+    let memory = memory_bound(problem, plan);
+    let limit = state.pool.memory_limit();
+    if memory > limit {
+        let blocks = problem.assembly().blocks.len();
+        // The bound is linear in the blocks' interfaces: the share that fits.
+        let fitting = (blocks as f64 * limit as f64 / memory as f64).floor();
+        return Err(ApiError::invalid(
+            "geometry",
+            format!(
+                "{blocks} blocks would take up to {} MiB to solve with these options, over the \
+                 {} MiB one solve may take: use about {fitting} blocks or fewer (fewer \
+                 voussoirs, rings or spans), or no crushing, rolling load or friction iteration",
+                memory.div_ceil(1 << 20),
+                limit >> 20,
+            ),
+        ));
+    }
+    let light = on_chain(problem, plan)
+        && problem.assembly().blocks.len() <= LIGHT_CHAIN_BLOCKS
+        && plan.friction != Friction::NonAssociative
+        && !matches!(plan.programme, Programme::Rolling(_));
+    Ok(Cost { light, memory })
+}
+
 /// Analyses the request on the pool within the solve time limit; a stop at the limit becomes
 /// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
-async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<SolvedArch, ApiError> {
-    let plan = plan(which, &input);
+async fn solve(
+    state: &AppState,
+    which: Problem,
+    mut input: ArchInput,
+) -> Result<SolvedArch, ApiError> {
+    let plan = plan(which, &mut input);
+    let cost = cost(state, &input, &plan)?;
     let problem = input.problem.clone();
     let ran = state
         .pool
-        .run_budgeted(state.solve_time_limit, move |budget| {
+        .run_budgeted(state.solve_time_limit, cost, move |budget| {
             analyse(&problem, &plan, budget)
         })
         .await?;
@@ -237,6 +279,7 @@ async fn solve(state: &AppState, which: Problem, input: ArchInput) -> Result<Sol
     tracing::info!(
         problem = ?which,
         blocks = outcome.problem.assembly().blocks.len(),
+        interfaces = outcome.problem.assembly().interfaces.len(),
         iterations = outcome.solution.iterations,
         solve_ms = ran.elapsed.as_secs_f64() * 1e3,
         load_factor = outcome.solution.load_factor,

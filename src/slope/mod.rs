@@ -24,6 +24,7 @@ use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, Slope
 use thrustline_solver::slope::Sliced;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::pool::Cost;
 use crate::stop::Work;
 use crate::svg::Svg;
 use crate::table::{Answer, CsvTable};
@@ -131,9 +132,17 @@ pub async fn spencer_svg(
 async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
     let by_accuracy = plan.relative_error.is_some();
+    // One surface at a stated slice count is milliseconds; searches and accuracy targets run
+    // in the heavy lane. Neither takes much memory (slices are capped at 10,000).
+    let cost = match (&plan.target, by_accuracy) {
+        (Target::Surface(_), false) => Cost::LIGHT,
+        _ => Cost::HEAVY,
+    };
     let ran = state
         .pool
-        .run_budgeted(state.solve_time_limit, move |budget| analyse(&plan, budget))
+        .run_budgeted(state.solve_time_limit, cost, move |budget| {
+            analyse(&plan, budget)
+        })
         .await?;
     let answer = match ran.value? {
         SlopeOutcome::Answered(answer) => *answer,

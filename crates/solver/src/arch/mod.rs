@@ -16,6 +16,7 @@
 //! - [`equilibrium`]: the sparse equilibrium matrix H and the load vectors.
 //! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
 //! - [`mechanism`]: the collapse mechanism read from the multipliers.
+//! - [`memory`]: the memory an analysis may take, bounded before it runs.
 //! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
 //! - [`rolling`]: the live-load factor at each stop of a rolling load.
 //! - [`thrust_line`]: the points of action of the interface resultants.
@@ -30,6 +31,7 @@ pub mod generators;
 pub mod geometry;
 pub mod limit;
 pub mod mechanism;
+pub mod memory;
 pub mod minimum_thickness;
 pub mod resultant;
 pub mod rolling;

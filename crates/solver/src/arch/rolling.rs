@@ -18,6 +18,7 @@
 //! method too.
 
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -33,8 +34,9 @@ use super::limit::{
 #[derive(Debug, Clone)]
 pub struct Sweep {
     /// Each stop's solution; `None` where the stop has no live load, or where the time ran out
-    /// before it was solved. A stop answered by the warm simplex method carries its status, λ
-    /// and dead-load margin only (no state: that of the critical stop is always given).
+    /// before it was solved. Only the first loaded stop and the critical stop carry their
+    /// state (resultants, mechanism, passive forces); the others their status, λ and dead-load
+    /// margin.
     pub stops: Vec<Option<LimitSolution>>,
     /// Stops answered by the warm simplex method (the rest: the interior-point method).
     pub simplex_stops: usize,
@@ -63,6 +65,42 @@ fn least_stop(stops: &[Option<LimitSolution>]) -> Option<(usize, f64)> {
             Some((_, b)) if b <= f => best,
             _ => Some((i, f)),
         })
+}
+
+/// `solution` without its state (resultants, mechanism, passive forces); the whole of it kept
+/// in `least` when it is the least stop so far (least λ, then the first of equal ones).
+fn keep_if_least(
+    least: &Mutex<Option<(usize, LimitSolution)>>,
+    i: usize,
+    mut solution: LimitSolution,
+) -> LimitSolution {
+    let bare = LimitSolution {
+        status: solution.status,
+        load_factor: solution.load_factor,
+        dead_load_carried: solution.dead_load_carried,
+        dead_load_margin: solution.dead_load_margin,
+        resultants: Vec::new(),
+        mechanism: None,
+        iterations: solution.iterations,
+        programmes: solution.programmes,
+        passive: Vec::new(),
+        solve_time_secs: solution.solve_time_secs,
+    };
+    if let Some(f) = solution.load_factor {
+        let mut least = least.lock().unwrap_or_else(|e| e.into_inner());
+        let better = match least
+            .as_ref()
+            .and_then(|(j, s)| s.load_factor.map(|g| (*j, g)))
+        {
+            Some((j, g)) => f < g || (f == g && i < j),
+            None => true,
+        };
+        if better {
+            *least = Some((i, std::mem::replace(&mut solution, bare)));
+            return solution;
+        }
+    }
+    bare
 }
 
 /// Solves the live load `loads[i]` on `problem` at every stop i (an empty list: no load there,
@@ -107,6 +145,9 @@ pub fn sweep_live_loads(
         });
     }
     let out_of_time = AtomicBool::new(false);
+    // Only the least stop's state is answered: the others keep their λ alone (a thousand
+    // states of a long chain took 270 MB).
+    let least = Mutex::new(None);
     let rest: Vec<(usize, Option<LimitSolution>)> = (first + 1..loads.len())
         .into_par_iter()
         .filter(|&i| !loads[i].is_empty())
@@ -123,11 +164,14 @@ pub fn sweep_live_loads(
                 Some(margin) => solve_live_load_after(&problem, settings, margin)?,
                 None => solve_live_load(&problem, settings)?,
             };
-            Ok((i, Some(solution)))
+            Ok((i, Some(keep_if_least(&least, i, solution))))
         })
         .collect::<Result<_, ArchError>>()?;
     for (i, solution) in rest {
         stops[i] = solution;
+    }
+    if let Some((i, solution)) = least.into_inner().unwrap_or_else(|e| e.into_inner()) {
+        stops[i] = Some(solution);
     }
     Ok(Sweep {
         stops,
