@@ -1,8 +1,10 @@
 //! `GET /healthz`: the service is up and can take solves.
 
 use axum::extract::State;
-use axum::http::StatusCode;
-use axum::Json;
+use axum::http::{header, StatusCode};
+use axum::response::IntoResponse;
+use axum::routing::get;
+use axum::{Json, Router};
 use serde::Serialize;
 use utoipa::ToSchema;
 
@@ -42,5 +44,36 @@ pub async fn healthz(State(state): State<AppState>) -> (StatusCode, Json<Health>
             running_solves: state.pool.running(),
             queued_solves: state.pool.queue_depth(),
         }),
+    )
+}
+
+/// Connections served beyond the connection cap, for `/healthz` alone: 1,024 silent sockets
+/// locked every client out, the liveness probe included.
+pub const RESERVED_CONNECTIONS: usize = 16;
+
+/// What a connection beyond the cap is served: `/healthz`, and 503 with `Retry-After` for
+/// every other request.
+pub fn reserved_app(state: AppState) -> Router {
+    Router::new()
+        .route("/healthz", get(healthz))
+        .fallback(at_connection_cap)
+        .with_state(state)
+}
+
+async fn at_connection_cap() -> impl IntoResponse {
+    let problem = serde_json::json!({
+        "type": "about:blank",
+        "title": "Service Unavailable",
+        "status": 503,
+        "detail": "the service is at its connection cap: retry, or reuse a connection",
+    });
+    (
+        StatusCode::SERVICE_UNAVAILABLE,
+        [
+            (header::CONTENT_TYPE, "application/problem+json"),
+            (header::RETRY_AFTER, "1"),
+            (header::CONNECTION, "close"),
+        ],
+        problem.to_string(),
     )
 }

@@ -17,6 +17,7 @@
 
 pub mod arch;
 pub mod auth;
+pub mod body;
 pub mod config;
 pub mod error;
 pub mod fields;
@@ -133,8 +134,9 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
             settings.body_limit,
             headers::refuse_early,
         ))
-        .layer(tower_http::timeout::RequestBodyTimeoutLayer::new(
+        .layer(axum::middleware::from_fn_with_state(
             settings.body_timeout,
+            body::body_deadline,
         ))
         .layer(CatchPanicLayer::custom(|_| {
             error::ApiError::Internal("a handler panicked".to_owned()).into_response()
@@ -255,14 +257,21 @@ pub async fn serve(
     shutdown: impl Future<Output = ()> + Send + 'static,
 ) -> std::io::Result<()> {
     let state = AppState::new(&settings);
+    let reserved = health::reserved_app(state.clone());
     let app = app(state, &settings);
     // HTTP/1.1 with a timer: a client must send a request's head within `header_timeout` of
     // the connection becoming ready for it (so idle keep-alive connections close too).
     let mut http = hyper::server::conn::http1::Builder::new();
     http.timer(hyper_util::rt::TokioTimer::new())
         .header_read_timeout(settings.header_timeout);
+    // Beyond the cap: one request, its head within a second.
+    let mut http_reserved = http.clone();
+    http_reserved
+        .header_read_timeout(Duration::from_secs(1))
+        .keep_alive(false);
     let graceful = hyper_util::server::graceful::GracefulShutdown::new();
     let connections = std::sync::Arc::new(tokio::sync::Semaphore::new(settings.max_connections));
+    let reserve = std::sync::Arc::new(tokio::sync::Semaphore::new(health::RESERVED_CONNECTIONS));
     let mut shutdown = std::pin::pin!(shutdown);
     loop {
         let (stream, _) = tokio::select! {
@@ -277,12 +286,19 @@ pub async fn serve(
             },
             () = &mut shutdown => break,
         };
-        // Over the connection cap: closed at once (the client may retry).
-        let Ok(permit) = connections.clone().try_acquire_owned() else {
-            tracing::warn!("connection refused: at the connection cap");
-            continue;
+        // Over the connection cap: /healthz on a reserved connection, else closed at once (the
+        // client may retry).
+        let (permit, service, http) = match connections.clone().try_acquire_owned() {
+            Ok(permit) => (permit, app.clone(), &http),
+            Err(_) => match reserve.clone().try_acquire_owned() {
+                Ok(permit) => (permit, reserved.clone(), &http_reserved),
+                Err(_) => {
+                    tracing::warn!("connection refused: at the connection cap");
+                    continue;
+                }
+            },
         };
-        let service = hyper_util::service::TowerToHyperService::new(app.clone());
+        let service = hyper_util::service::TowerToHyperService::new(service);
         // No upgrades (no websockets here): a plain connection, which the drain can close.
         let connection = http.serve_connection(hyper_util::rt::TokioIo::new(stream), service);
         let connection = graceful.watch(connection);

@@ -458,8 +458,10 @@ async fn slow_and_idle_clients_are_cut_off() {
         "{}",
         String::from_utf8_lossy(&answer)
     );
-    // The cap: four idle connections held, the fifth is closed at once (long before the
-    // header timeout of this second server).
+    // The cap: four idle connections held; beyond them a reserve of 16 connections answers
+    // /healthz (issue 38, O3: 1,024 silent sockets locked out the liveness probe) and 503 to
+    // anything else; with the reserve held too, the next connection is closed at once (long
+    // before the header timeout of this second server).
     let server = Server::start_with(thrustline::Settings {
         header_timeout: std::time::Duration::from_secs(20),
         max_connections: 4,
@@ -471,12 +473,97 @@ async fn slow_and_idle_clients_are_cut_off() {
         .map(|_| std::net::TcpStream::connect(&addr).unwrap())
         .collect();
     std::thread::sleep(std::time::Duration::from_millis(100));
-    let fifth = tokio::task::spawn_blocking({
+    let ask = |request: &'static [u8]| {
         let addr = addr.clone();
-        move || closed_within(std::net::TcpStream::connect(addr).unwrap(), 1)
+        tokio::task::spawn_blocking(move || {
+            let mut socket = std::net::TcpStream::connect(addr).unwrap();
+            socket.write_all(request).unwrap();
+            socket
+                .set_read_timeout(Some(std::time::Duration::from_secs(5)))
+                .unwrap();
+            let mut answer = String::new();
+            socket.read_to_string(&mut answer).map(|_| answer)
+        })
+    };
+    let health = ask(b"GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n");
+    let health = health.await.unwrap().expect("an answer and a close");
+    assert!(health.starts_with("HTTP/1.1 200"), "{health}");
+    assert!(health.contains(r#""status":"ok""#), "{health}");
+    let solve = ask(b"POST /slope/spencer HTTP/1.1\r\nHost: x\r\ncontent-length: 2\r\n\r\n{}");
+    let solve = solve.await.unwrap().expect("an answer and a close");
+    assert!(solve.starts_with("HTTP/1.1 503"), "{solve}");
+    assert!(
+        solve.to_ascii_lowercase().contains("retry-after: 1"),
+        "{solve}"
+    );
+    assert!(solve.contains("connection cap"), "{solve}");
+    let reserve: Vec<_> = (0..thrustline::health::RESERVED_CONNECTIONS)
+        .map(|_| std::net::TcpStream::connect(&addr).unwrap())
+        .collect();
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    let started = std::time::Instant::now();
+    let next = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || closed_within(std::net::TcpStream::connect(addr).unwrap(), 5)
     });
-    assert!(fifth.await.unwrap(), "the fifth connection was kept");
-    drop(held);
+    assert!(
+        next.await.unwrap(),
+        "the connection beyond the reserve was kept"
+    );
+    // Closed at once, not at the reserve's header timeout of 1 s.
+    assert!(started.elapsed() < std::time::Duration::from_millis(700));
+    drop((held, reserve));
+}
+
+#[tokio::test]
+async fn a_body_trickled_byte_by_byte_is_cut_off_at_the_body_deadline() {
+    // Issue 38, O1: the body timeout was per chunk, so a body sent one byte every 100 ms was
+    // never cut off. The whole body must arrive within the limit (300 ms here).
+    use std::io::{Read, Write};
+    let server = Server::start_with(thrustline::Settings {
+        body_timeout: std::time::Duration::from_millis(300),
+        ..Default::default()
+    })
+    .await;
+    let addr = server.base.trim_start_matches("http://").to_owned();
+    let trickled = tokio::task::spawn_blocking(move || {
+        let mut socket = std::net::TcpStream::connect(addr).unwrap();
+        socket
+            .write_all(
+                b"POST /slope/spencer HTTP/1.1\r\nHost: x\r\ncontent-type: application/json\r\n\
+                  content-length: 100\r\n\r\n",
+            )
+            .unwrap();
+        let started = std::time::Instant::now();
+        socket.set_nonblocking(true).unwrap();
+        let mut answer = Vec::new();
+        // One byte every 50 ms, for up to 5 s, until the server answers.
+        for _ in 0..100 {
+            let mut buffer = [0u8; 1024];
+            match socket.read(&mut buffer) {
+                Ok(n) if n > 0 => {
+                    answer.extend_from_slice(&buffer[..n]);
+                    break;
+                }
+                _ => {}
+            }
+            if socket.write_all(b" ").is_err() {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        (
+            String::from_utf8_lossy(&answer).into_owned(),
+            started.elapsed(),
+        )
+    });
+    let (answer, took) = trickled.await.unwrap();
+    assert!(
+        answer.starts_with("HTTP/1.1 4"),
+        "{answer:?} after {took:?}"
+    );
+    assert!(answer.contains("not sent within 0.3 s"), "{answer}");
+    assert!(took < std::time::Duration::from_secs(2), "{took:?}");
 }
 
 #[tokio::test]
