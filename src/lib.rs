@@ -264,10 +264,11 @@ pub async fn serve(
     let mut http = hyper::server::conn::http1::Builder::new();
     http.timer(hyper_util::rt::TokioTimer::new())
         .header_read_timeout(settings.header_timeout);
-    // Beyond the cap: one request, its head within a second.
+    // Beyond the cap: one request, its head within 250 ms (a probe's comes at once; silent
+    // sockets that reach the reserve leave it quickly).
     let mut http_reserved = http.clone();
     http_reserved
-        .header_read_timeout(Duration::from_secs(1))
+        .header_read_timeout(Duration::from_millis(250))
         .keep_alive(false);
     let graceful = hyper_util::server::graceful::GracefulShutdown::new();
     let connections = std::sync::Arc::new(tokio::sync::Semaphore::new(settings.max_connections));

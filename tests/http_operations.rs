@@ -510,8 +510,8 @@ async fn slow_and_idle_clients_are_cut_off() {
         next.await.unwrap(),
         "the connection beyond the reserve was kept"
     );
-    // Closed at once, not at the reserve's header timeout of 1 s.
-    assert!(started.elapsed() < std::time::Duration::from_millis(700));
+    // Closed at once (the reserve's header timeout is 250 ms, the server's 20 s).
+    assert!(started.elapsed() < std::time::Duration::from_millis(200));
     drop((held, reserve));
 }
 
