@@ -9,7 +9,7 @@
 use std::num::NonZeroUsize;
 
 use super::polyline::Polyline;
-use super::slicing::{slice_all, Slicing};
+use super::slicing::{slice_all, still_water_level, Slicing};
 use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
@@ -175,7 +175,13 @@ impl Cut {
             slices,
             base_ys,
             ponded,
-        } = slice_all(section, &boundaries, base_at, &points, tolerance);
+        } = slice_all(
+            section,
+            &boundaries,
+            base_at,
+            &points,
+            (tolerance, still_water_level(section, xa, xb)),
+        );
         let loads = loads(section, &slices, ponded, crack);
         let surface: Vec<(f64, f64)> = boundaries
             .iter()

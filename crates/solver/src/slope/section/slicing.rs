@@ -30,14 +30,79 @@ struct Scratch {
     middle: Levels,
 }
 
+/// The level of still water standing over the whole top of the mass between a and b, when it
+/// does: a piezometric line at or above the ground all along, pore pressures from it alone (no
+/// r_u) and no tension crack. The slices are then written relative to the hydrostatic field
+/// of that level (its lowest over the mass): the field's pressures on a slice's top, base and
+/// sides add up to the buoyancy γ_w·A through the centroid (Archimedes), so each slice carries
+/// its buoyancy and only the pressures in excess of the field — heads relative to the water
+/// surface, γ_w·(y_p − y_w) on its top and base — and the inter-slice forces are those beyond
+/// the field's. A submerged slope is then its buoyant twin at any head, with no large
+/// pressures cancelling (a head of 1e8 lost F before).
+pub(super) fn still_water_level(section: &Section, a: f64, b: f64) -> Option<f64> {
+    let line = section.piezometric_line.as_ref()?;
+    if section.tension_crack.is_some()
+        || section
+            .layers
+            .iter()
+            .any(|l| l.pore_pressure_ratio.is_some())
+    {
+        return None;
+    }
+    let inside = |x: f64| x > a && x < b;
+    let xs: Vec<f64> = [a, b]
+        .into_iter()
+        .chain(line.xs().filter(|&x| inside(x)))
+        .chain(section.ground.xs().filter(|&x| inside(x)))
+        .collect();
+    // Both lines are straight between these x: the water is above the ground all along if it
+    // is at each of them.
+    let standing = xs.iter().all(|&x| line.y_at(x) >= section.ground.y_at(x));
+    standing.then(|| {
+        xs.iter()
+            .map(|&x| line.y_at(x))
+            .fold(f64::INFINITY, f64::min)
+    })
+}
+
+/// The pore pressure at the base middle (levels, layer, height) and the pore water's force on
+/// the right side (its base at `br`) and its height; relative to still water at its level, the
+/// pressures in excess of the still water's: γ_w times the head above that level.
+fn base_water(
+    section: &Section,
+    still: Option<f64>,
+    (levels, layer, bm): (&[f64], usize, f64),
+    s: &Scratch,
+    br: f64,
+) -> (f64, (f64, f64)) {
+    let right = s.right.values();
+    match still {
+        Some(level) => {
+            let excess =
+                |levels: &[f64]| section.water_unit_weight * (water(levels) - level).max(0.0);
+            let g = ground(right);
+            (
+                excess(levels),
+                ((g - br).max(0.0) * excess(right), 0.5 * (g + br)),
+            )
+        }
+        None => (
+            pore_pressure(section, levels, layer, bm),
+            side_water(section, right, br),
+        ),
+    }
+}
+
 /// The slices between the sides `xs`; `base_at(i, x, g)` is the base's height at side i (at x,
-/// where the ground is at g). `points`: the section's bends within the cut, sorted.
+/// where the ground is at g). `points`: the section's bends within the cut, sorted. With
+/// `still`, the level of [`still_water_level`], the slices are written relative to its
+/// hydrostatic field.
 pub(super) fn slice_all(
     section: &Section,
     xs: &[f64],
     base_at: impl Fn(usize, f64, f64) -> f64,
     points: &[f64],
-    tolerance: f64,
+    (tolerance, still): (f64, Option<f64>),
 ) -> Slicing {
     let tan_phi: Vec<f64> = section
         .layers
@@ -64,7 +129,7 @@ pub(super) fn slice_all(
             ((xl, bl), (xr, br)),
             column_left,
             points,
-            (tolerance, &tan_phi),
+            (tolerance, &tan_phi, still),
             &mut s,
         );
         out.slices.push(slice);
@@ -84,6 +149,8 @@ struct Piece {
     integral: (f64, f64),
     /// The ponded water on its top: (f_x, f_y, x, y).
     wet: Option<(f64, f64, f64, f64)>,
+    /// Relative to still water: the buoyancy of the piece and the x of its centroid.
+    buoyancy: Option<(f64, f64)>,
 }
 
 /// One straight piece [x_a, x_b] of a slice, the levels at its ends given and the base chord
@@ -93,7 +160,7 @@ fn piece(
     ((xa, ya), (xb, yb)): ((f64, f64), (f64, f64)),
     (a, b): (&[f64], &[f64]),
     column_a: (f64, f64),
-    ponded: bool,
+    (ponded, still): (bool, Option<f64>),
     middle: &mut Levels,
 ) -> Piece {
     middle.midway(a, b);
@@ -104,10 +171,24 @@ fn piece(
         sixth * (column_a.0 + 4.0 * column_m.0 + column_b.0),
         sixth * (column_a.1 + 4.0 * column_m.1 + column_b.1),
     );
-    // Ponded water: pressure γ_w·d normal to the ground, d linear along the piece.
-    let wet = ponded.then(|| {
-        let (ga, gb) = (ground(a), ground(b));
-        let (da, db) = ((water(a) - ga).max(0.0), (water(b) - gb).max(0.0));
+    let (ga, gb) = (ground(a), ground(b));
+    // Ponded water: pressure γ_w·d normal to the ground, d linear along the piece; relative to
+    // still water at y_w, d = y_p − y_w, and the piece is buoyed up by γ_w times its area.
+    let buoyancy = still.map(|_| {
+        let (ha, hb) = (ga - ya, gb - yb);
+        let area = 0.5 * (xb - xa) * (ha + hb);
+        let x = match ha + hb > 0.0 {
+            true => xa + (xb - xa) * (ha + 2.0 * hb) / (3.0 * (ha + hb)),
+            false => 0.5 * (xa + xb),
+        };
+        (section.water_unit_weight * area, x)
+    });
+    let wet = (ponded || still.is_some()).then(|| {
+        let depth = |levels: &[f64], g: f64| match still {
+            Some(level) => (water(levels) - level).max(0.0),
+            None => (water(levels) - g).max(0.0),
+        };
+        let (da, db) = (depth(a, ga), depth(b, gb));
         (da + db > 0.0).then(|| {
             let p = section.water_unit_weight * (xb - xa) * 0.5 * (da + db);
             let t = (da + 2.0 * db) / (3.0 * (da + db));
@@ -119,6 +200,7 @@ fn piece(
         column_b,
         integral,
         wet: wet.flatten(),
+        buoyancy,
     }
 }
 
@@ -130,7 +212,7 @@ fn slice(
     ((xl, bl), (xr, br)): ((f64, f64), (f64, f64)),
     column_left: (f64, f64),
     points: &[f64],
-    (tolerance, tan_phi): (f64, &[f64]),
+    (tolerance, tan_phi, still): (f64, &[f64], Option<f64>),
     s: &mut Scratch,
 ) -> (BaseSlice, (f64, f64), (f64, f64, f64)) {
     let width = xr - xl;
@@ -149,6 +231,10 @@ fn slice(
             water_force.1 += fy;
             water_force.2 += (x - xm) * fy - (y - bm) * fx;
         }
+        if let Some((up, x)) = piece.buoyancy {
+            water_force.1 += up;
+            water_force.2 += (x - xm) * up;
+        }
         piece.column_b
     };
     let column_right = if inner.is_empty() {
@@ -158,7 +244,7 @@ fn slice(
             ((xl, bl), (xr, br)),
             (s.left.values(), s.right.values()),
             column_left,
-            ponded,
+            (ponded, still),
             &mut s.middle,
         ))
     } else {
@@ -178,7 +264,7 @@ fn slice(
                 ((xa, ya), (xb, yb)),
                 (s.a.values(), s.b.values()),
                 column_a,
-                ponded,
+                (ponded, still),
                 &mut s.middle,
             ));
             (xa, ya, column_a) = (xb, yb, column_b);
@@ -192,6 +278,7 @@ fn slice(
     let rise = br - bl;
     let base_length = (width * width + rise * rise).sqrt();
     let soil = &section.layers[layer].soil;
+    let (pore_pressure, side_water) = base_water(section, still, (levels, layer, bm), s, br);
     let slice = BaseSlice {
         x_left: xl,
         x_right: xr,
@@ -206,9 +293,9 @@ fn slice(
         centroid_y: if weight > 0.0 { moment / weight } else { bm },
         cohesion: soil.cohesion,
         tan_phi: tan_phi[layer],
-        pore_pressure: pore_pressure(section, levels, layer, bm),
+        pore_pressure,
         layer,
-        side_water: side_water(section, s.right.values(), br),
+        side_water,
     };
     (slice, column_right, water_force)
 }

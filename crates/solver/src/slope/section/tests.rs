@@ -227,23 +227,35 @@ fn slope_circle() -> SlipShape {
 
 #[test]
 fn a_submerged_slope_is_the_slope_of_buoyant_weight() {
-    // Archimedes: water above the whole section (ponded on the ground, pore pressure at the
-    // base) acts on the mass as the buoyancy γ_w·V. Bishop's F (vertical equilibrium per slice,
-    // moments about the centre) is then that of the dry slope of unit weight γ − γ_w up to the
-    // O(N⁻²) of the slicing; Spencer's nearly so (the side water forces are not parallel to the
-    // effective inter-slice forces, hence θ differs).
-    let mut wet = one_soil(&SLOPE, 20.0, 5.0, 30.0);
-    wet.water_unit_weight = 10.0;
-    wet.piezometric_line = Some(line(&[(-50.0, 15.0), (60.0, 15.0)]));
-    let (_, a) = solve(wet, slope_circle(), 400);
-    let (_, b) = solve(one_soil(&SLOPE, 10.0, 5.0, 30.0), slope_circle(), 400);
-    let (ba, bb) = (
-        a.bishop_factor_of_safety.unwrap(),
-        b.bishop_factor_of_safety.unwrap(),
-    );
-    assert!((ba - bb).abs() < 2e-5 * bb, "Bishop {ba} vs buoyant {bb}");
-    let (fa, fb) = (a.factor_of_safety.unwrap(), b.factor_of_safety.unwrap());
-    assert!((fa - fb).abs() < 3e-4 * fb, "Spencer {fa} vs buoyant {fb}");
+    // Archimedes: still water above the whole section (ponded on the ground, pore pressure at
+    // the base) acts on the mass as the buoyancy γ_w·V through each slice's centroid. Written
+    // relative to the water's own hydrostatic field, every method's F is that of the dry slope
+    // of unit weight γ − γ_w — θ too — at any head (issue 38: F drifted by 7.6e-4 with the head
+    // and was lost at 1e8, the large pressures cancelling).
+    let (_, dry) = solve(one_soil(&SLOPE, 10.0, 5.0, 30.0), slope_circle(), 400);
+    let (fd, td) = (dry.factor_of_safety.unwrap(), dry.theta_rad.unwrap());
+    let bd = dry.bishop_factor_of_safety.unwrap();
+    let mut first = None;
+    for level in [10.0, 15.0, 1e3, 1e8] {
+        let mut wet = one_soil(&SLOPE, 20.0, 5.0, 30.0);
+        wet.water_unit_weight = 10.0;
+        wet.piezometric_line = Some(line(&[(-50.0, level), (60.0, level)]));
+        let (_, a) = solve(wet, slope_circle(), 400);
+        let (fa, ta) = (a.factor_of_safety.unwrap(), a.theta_rad.unwrap());
+        let ba = a.bishop_factor_of_safety.unwrap();
+        assert!(
+            (fa - fd).abs() < 1e-9 * fd,
+            "level {level}: Spencer {fa} vs buoyant {fd}"
+        );
+        assert!((ta - td).abs() < 1e-7, "level {level}: θ {ta} vs {td}");
+        assert!(
+            (ba - bd).abs() < 1e-9 * bd,
+            "level {level}: Bishop {ba} vs {bd}"
+        );
+        // (The 4e-10 to the dry twin is the solvers' tolerance; between heads, rounding.)
+        let (f0, b0) = *first.get_or_insert((fa, ba));
+        assert!((fa - f0).abs() < 1e-12 * f0 && (ba - b0).abs() < 1e-12 * b0);
+    }
 }
 
 #[test]
