@@ -31,17 +31,23 @@ pub fn crushing(
     legend: &mut Legend,
 ) {
     if let Some(m) = mechanism.filter(|m| !m.crushing.is_empty()) {
-        for &k in &m.crushing {
-            if let Some(i) = assembly.interfaces.get(k) {
-                canvas.polyline(
-                    &[i.intrados, i.extrados],
-                    "stroke=\"#ef6c00\" stroke-width=\"4\"",
-                );
-            }
-        }
+        let bars: Vec<Vec<(f64, f64)>> = m
+            .crushing
+            .iter()
+            .filter_map(|&k| assembly.interfaces.get(k))
+            .map(|i| vec![i.intrados, i.extrados])
+            .collect();
+        canvas.path(
+            &bars,
+            false,
+            "fill=\"none\" stroke=\"#ef6c00\" stroke-width=\"4\"",
+        );
         legend.push(("#ef6c00", "▮ crushing"));
     }
 }
+
+/// Sliding joints with their slip arrows when at most this many.
+const MAX_SLIP_ARROWS: usize = 40;
 
 /// Sliding joints: the joint drawn along, with the slip of the block on the normal's side
 /// relative to the other (of the block, on a support) as a short arrow at its middle.
@@ -53,12 +59,30 @@ pub fn sliding(
 ) {
     let span = assembly.length_scale();
     if let Some(m) = mechanism.filter(|m| !m.sliding.is_empty()) {
-        for &k in &m.sliding {
-            if let Some(i) = assembly.interfaces.get(k) {
-                canvas.polyline(
-                    &[i.intrados, i.extrados],
-                    "stroke=\"#7b1fa2\" stroke-width=\"3\" stroke-dasharray=\"2 2\"",
-                );
+        let joints: Vec<&Interface> = m
+            .sliding
+            .iter()
+            .filter_map(|&k| assembly.interfaces.get(k))
+            .collect();
+        let along: Vec<Vec<(f64, f64)>> = joints
+            .iter()
+            .map(|i| vec![i.intrados, i.extrados])
+            .collect();
+        canvas.path(
+            &along,
+            false,
+            "fill=\"none\" stroke=\"#7b1fa2\" stroke-width=\"3\" stroke-dasharray=\"2 2\"",
+        );
+        // Beyond a few dozen the arrows would hide the arch: the joints alone, said in the key.
+        if joints.len() > MAX_SLIP_ARROWS {
+            legend.push((
+                "#7b1fa2",
+                "┊ sliding joints (slip arrows left out: too many)",
+            ));
+            return;
+        }
+        for i in joints {
+            {
                 if let Some(slip) = slip(assembly, &m.velocities, i) {
                     let middle = (
                         0.5 * (i.intrados.0 + i.extrados.0),

@@ -13,6 +13,10 @@ type Legend = Vec<(&'static str, &'static str)>;
 
 /// Chains of more blocks than this are drawn as one outline.
 const MERGED_ABOVE: usize = 200;
+/// Assemblies of more blocks than this are drawn without the displaced blocks and the sliding
+/// joints (both in the JSON; the key says so): each block is then a pixel or two wide, and
+/// drawing them twice more doubled the picture (1.4 MB for eight rings of 1000).
+const MECHANISM_DRAWN_UP_TO: usize = 1000;
 /// Hinges are labelled with their angle when there are at most this many.
 const MAX_HINGE_LABELS: usize = 8;
 
@@ -70,7 +74,9 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     }
     parts::blocks(&mut canvas, assembly, solved.input.is_curved);
     if let Some(mechanism) = mechanism {
-        parts::mechanism(&mut canvas, assembly, mechanism, solved.input.is_curved);
+        if assembly.blocks.len() <= MECHANISM_DRAWN_UP_TO {
+            parts::mechanism(&mut canvas, assembly, mechanism, solved.input.is_curved);
+        }
     }
     // A chain is drawn with its line of thrust; other assemblies block by block, with the
     // points of action at their contacts.
@@ -82,9 +88,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     if assembly.is_chain() {
         canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
     } else {
-        for point in thrust.iter().filter(|p| p.0.is_finite()) {
-            canvas.dot(*point, 2.5, "fill=\"#c62828\"");
-        }
+        canvas.dots(&thrust, 5.0, "#c62828");
     }
     let hinge_count = parts::hinges_and_loads(&mut canvas, assembly, mechanism, loads);
     joints::passive(
@@ -94,7 +98,10 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         &mut legend,
     );
     joints::crushing(&mut canvas, assembly, mechanism, &mut legend);
-    joints::sliding(&mut canvas, assembly, mechanism, &mut legend);
+    let dense = assembly.blocks.len() > MECHANISM_DRAWN_UP_TO;
+    if !dense {
+        joints::sliding(&mut canvas, assembly, mechanism, &mut legend);
+    }
     if !solved.thrust_line.is_empty() {
         legend.insert(0, ("#c62828", "— line of thrust"));
     }
@@ -109,7 +116,13 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         ));
     }
     if mechanism.is_some() {
-        legend.push(("#546e7a", "- - collapse mechanism"));
+        legend.push(match dense {
+            true => (
+                "#546e7a",
+                "collapse mechanism and sliding joints not drawn: too many blocks",
+            ),
+            false => ("#546e7a", "- - collapse mechanism"),
+        });
     }
     if !loads.is_empty() {
         legend.push(("#1565c0", "→ live loads"));

@@ -90,6 +90,13 @@ pub fn blocks(canvas: &mut Canvas, assembly: &Assembly, curved: bool) {
                 "stroke=\"#8d6e63\" stroke-width=\"0.5\"",
             );
         }
+    } else if assembly.blocks.len() > MERGED_ABOVE {
+        // Rings and spans of many blocks: every block still drawn, in one path.
+        canvas.path(
+            &outlines,
+            true,
+            &format!("fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"{thin}\""),
+        );
     } else {
         for o in &outlines {
             canvas.polygon(
@@ -133,6 +140,8 @@ pub fn mechanism(canvas: &mut Canvas, assembly: &Assembly, mechanism: &Mechanism
         let extrados: Vec<(f64, f64)> = displaced.iter().flat_map(|c| [c[1], c[2]]).collect();
         canvas.polyline(&intrados, style);
         canvas.polyline(&extrados, style);
+    } else if assembly.blocks.len() > MERGED_ABOVE {
+        canvas.path(&displaced, true, style);
     } else {
         for d in &displaced {
             canvas.polygon(d, style);
@@ -152,7 +161,11 @@ pub fn hinges_and_loads(
     let span = assembly.length_scale();
     let mut hinge_labels = Vec::new();
     let mut labels = Labels::default();
-    for hinge in mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default() {
+    let hinges = mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default();
+    // Many hinges (a multi-ring mechanism) are drawn as one path of dots.
+    let many = hinges.len() > MAX_HINGE_LABELS;
+    let mut dots = Vec::new();
+    for hinge in hinges {
         let Some(interface) = assembly.interfaces.get(hinge.interface) else {
             continue;
         };
@@ -160,6 +173,10 @@ pub fn hinges_and_loads(
             HingeSide::Intrados => (interface.intrados, -1.0, "intrados"),
             HingeSide::Extrados => (interface.extrados, 1.0, "extrados"),
         };
+        if many {
+            dots.push(point);
+            continue;
+        }
         canvas.dot(
             point,
             5.0,
@@ -174,6 +191,7 @@ pub fn hinges_and_loads(
         );
         hinge_labels.push((p, direction, format!("{:.1}° {location}", hinge.angle_deg)));
     }
+    canvas.dots(&dots, 8.0, "#1b5e20");
     // Live loads: arrows ending at their point, 12 % of the span long.
     let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
     for load in loads {
@@ -190,12 +208,9 @@ pub fn hinges_and_loads(
         labels.avoid_segment(canvas.px(from), canvas.px(load.point), 6.0);
     }
     let area = canvas.plot_area();
-    // Many hinges (a multi-ring mechanism) would bury the drawing in labels: their angles are
-    // in the JSON; the key says how many.
-    let hinge_count = hinge_labels.len();
-    if hinge_count > MAX_HINGE_LABELS {
-        hinge_labels.clear();
-    }
+    // Many hinges would bury the drawing in labels: their angles are in the JSON; the key
+    // says so.
+    let hinge_count = hinge_labels.len() + dots.len();
     for (p, direction, text) in hinge_labels {
         let (x, y) = labels.place(p, direction, (text.chars().count(), 11.0), area);
         canvas.raw(&format!(
