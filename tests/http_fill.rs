@@ -277,3 +277,79 @@ async fn the_live_load_route_judges_the_dead_load_as_the_dead_load_route_does() 
         "{verdicts:?}"
     );
 }
+
+#[tokio::test]
+async fn refine_critical_narrows_the_critical_position_between_the_stops() {
+    // SPEC §6.2: two axles over the filled arch of the README at 101 stops (spacing 0.22):
+    // the critical stop's λ is 0.6413 at x = 0.54 (±0.11). With refine_critical the golden
+    // section narrows it to 1e-3 of the spacing; checked against an independent fine sweep of
+    // 441 stops (spacing 0.001) between the critical stop's neighbours.
+    let server = Server::start().await;
+    let axles = json!([{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}]);
+    let body = |x_start: f64, x_end: f64, positions: usize, refine: bool| {
+        json!({"geometry": geometry(), "fill": {"unit_weight": 1.8, "surface": 11.5},
+               "rolling": {"axles": axles, "x_start": x_start, "x_end": x_end,
+                           "positions": positions, "refine_critical": refine},
+               "include": []})
+    };
+    let (status, _, coarse) = server
+        .post("/arch/live-load", &body(-12.0, 10.0, 101, false))
+        .await;
+    assert_eq!(status, 200, "{coarse}");
+    let stop = &coarse["rolling"];
+    let (x_stop, lambda_stop) = (
+        stop["critical_position"].as_f64().unwrap(),
+        stop["critical_load_factor"].as_f64().unwrap(),
+    );
+    assert!(stop["refine_evaluations"].is_null());
+    let (status, _, refined) = server
+        .post("/arch/live-load", &body(-12.0, 10.0, 101, true))
+        .await;
+    assert_eq!(status, 200, "{refined}");
+    let r = &refined["rolling"];
+    let (x, lambda, error) = (
+        r["critical_position"].as_f64().unwrap(),
+        r["critical_load_factor"].as_f64().unwrap(),
+        r["critical_position_error"].as_f64().unwrap(),
+    );
+    assert!(error <= 1e-3 * 0.22 + 1e-12, "error {error}");
+    assert!(r["refine_evaluations"].as_u64().unwrap() >= 10);
+    assert!(lambda <= lambda_stop, "{lambda} > {lambda_stop}");
+    assert!((x - x_stop).abs() <= 0.22, "{x} vs {x_stop}");
+    // The answer is the refined position's: its λ, and the stops' curve unchanged.
+    assert_eq!(refined["load_factor"].as_f64().unwrap(), lambda);
+    assert_eq!(r["load_factor"], stop["load_factor"]);
+    // The fine sweep between the neighbours.
+    let (status, _, fine) = server
+        .post(
+            "/arch/live-load",
+            &body(x_stop - 0.22, x_stop + 0.22, 441, false),
+        )
+        .await;
+    assert_eq!(status, 200, "{fine}");
+    let f = &fine["rolling"];
+    let (x_fine, lambda_fine) = (
+        f["critical_position"].as_f64().unwrap(),
+        f["critical_load_factor"].as_f64().unwrap(),
+    );
+    assert!(
+        lambda <= lambda_fine + 1e-9,
+        "refined {lambda} above the fine sweep's {lambda_fine}"
+    );
+    assert!(
+        (lambda_fine - lambda) <= 1e-4 * lambda,
+        "{lambda_fine} vs {lambda}"
+    );
+    assert!(
+        (x - x_fine).abs() <= error + 0.001,
+        "{x} vs the fine sweep's {x_fine}"
+    );
+    // One stop: nothing to narrow.
+    let (_, _, one) = server
+        .post("/arch/live-load", &body(0.5, 0.5, 1, true))
+        .await;
+    assert_eq!(
+        one["rolling"]["critical_position_error"].as_f64(),
+        Some(0.0)
+    );
+}

@@ -137,6 +137,11 @@ pub struct RollingDto {
     #[serde(default)]
     #[schema(default = 101)]
     pub positions: Option<usize>,
+    /// Narrow the critical position between the critical stop's neighbours (golden section)
+    /// to 1e-3 of the stop spacing, and answer there. Defaults to false.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable, default = false)]
+    pub refine_critical: bool,
 }
 
 /// A validated rolling load: the live loads at each stop.
@@ -146,6 +151,33 @@ pub struct Rolling {
     pub positions: Vec<f64>,
     /// The live loads at each stop.
     pub loads: Vec<Vec<LiveLoad>>,
+    /// The axles on the arch, for a position between the stops; with `refine_critical`.
+    pub refine: Option<Axles>,
+}
+
+/// The axles (offset, load, patch length) dispersed through the fill onto the extrados.
+#[derive(Debug, Clone)]
+pub struct Axles {
+    profile: ExtradosProfile,
+    carrier: Fill,
+    axles: Vec<(f64, f64, f64)>,
+}
+
+impl Axles {
+    /// The live loads with the reference point at x.
+    pub fn loads_at(&self, x: f64) -> Vec<LiveLoad> {
+        self.axles
+            .iter()
+            .flat_map(|&(offset, fy, length)| {
+                let load = RoadLoad {
+                    x: x + offset,
+                    fy,
+                    length,
+                };
+                road_load_on(&self.profile, &self.carrier, load)
+            })
+            .collect()
+    }
 }
 
 /// Everything the fill gives a problem: its dead loads, the road loads as live loads, a
@@ -350,20 +382,15 @@ fn rolling_loads(
         .collect();
     // Every stop's loads are held for the sweep: bounded as they are made (a 400-byte request
     // of 1001 stops of 20 axles spread over 10,000 voussoirs made 9 GB of them).
+    let axles = Axles {
+        profile: profile.clone(),
+        carrier: *carrier,
+        axles,
+    };
     let mut loads = Vec::with_capacity(n);
     let mut total = 0usize;
     for &x in &positions {
-        let stop: Vec<LiveLoad> = axles
-            .iter()
-            .flat_map(|&(offset, fy, length)| {
-                let load = RoadLoad {
-                    x: x + offset,
-                    fy,
-                    length,
-                };
-                road_load_on(profile, carrier, load)
-            })
-            .collect();
+        let stop = axles.loads_at(x);
         total += stop.len();
         if total > MAX_ROLLING_LOADS {
             return Err(ApiError::invalid(
@@ -378,7 +405,12 @@ fn rolling_loads(
         }
         loads.push(stop);
     }
-    Ok(Rolling { positions, loads })
+    let refine = dto.refine_critical.then_some(axles);
+    Ok(Rolling {
+        positions,
+        loads,
+        refine,
+    })
 }
 
 /// A rolling load's answer: λ at each stop and the critical stop.
@@ -395,10 +427,15 @@ pub struct RollingOutDto {
     #[schema(required = true)]
     pub critical_load_factor: Option<f64>,
     /// How far the true critical position may lie from `critical_position`: half the spacing
-    /// of the stops (the least λ lies between the critical stop's neighbours); null when there
-    /// is no critical stop, 0 with a single stop.
+    /// of the stops (the least λ lies between the critical stop's neighbours), or with
+    /// `refine_critical` half the final bracket of the golden-section search (at most 1e-3 of
+    /// the spacing); null when there is no critical stop, 0 with a single stop.
     #[schema(required = true)]
     pub critical_position_error: Option<f64>,
+    /// With `refine_critical`: the live-load analyses the search ran (null without, or when
+    /// the time limit ended it and the stop's answer stands).
+    #[schema(required = true)]
+    pub refine_evaluations: Option<usize>,
     /// Wall time per stop in milliseconds, over the whole sweep. Only the live loads move, so
     /// the first stop's dead-load check serves every later stop (which then solve one
     /// programme, not two; with crushing each stop checks again).
@@ -415,10 +452,21 @@ impl RollingOutDto {
             [first, .., last] => (last - first).abs() / (positions.len() - 1) as f64,
             _ => 0.0,
         };
+        let refined = curve.refined;
         Self {
-            critical_position_error: curve.critical.map(|_| 0.5 * spacing),
-            critical_position: curve.critical.map(|(i, _)| positions[i]),
-            critical_load_factor: curve.critical.map(|(_, f)| f),
+            critical_position_error: match refined {
+                Some(r) => Some(r.error),
+                None => curve.critical.map(|_| 0.5 * spacing),
+            },
+            critical_position: match refined {
+                Some(r) => Some(r.position),
+                None => curve.critical.map(|(i, _)| positions[i]),
+            },
+            critical_load_factor: match refined {
+                Some(r) => Some(r.load_factor),
+                None => curve.critical.map(|(_, f)| f),
+            },
+            refine_evaluations: refined.map(|r| r.evaluations),
             positions,
             load_factor: curve.load_factors.clone(),
             time_per_position_ms: curve.time_per_stop_ms,

@@ -21,6 +21,7 @@ pub mod tables;
 use axum::extract::State;
 use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
 use thrustline_solver::arch::memory::{memory_bound, on_chain};
+use thrustline_solver::arch::refine::refine_critical;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::pool::Cost;
@@ -227,6 +228,9 @@ fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
     }
 }
 
+/// `refine_critical` narrows the critical position to this fraction of the stop spacing.
+const REFINED_TO: f64 = 1e-3;
+
 /// Chains of up to this many blocks, without a rolling load or the friction iteration, are
 /// light (a few milliseconds: docs/performance.md).
 const LIGHT_CHAIN_BLOCKS: usize = 1000;
@@ -269,10 +273,28 @@ async fn solve(
     let plan = plan(which, &mut input);
     let cost = cost(state, &input, &plan)?;
     let problem = input.problem.clone();
+    // With refine_critical: the axles and the stops, to search between them.
+    let refine = input.rolling.as_ref().and_then(|r| {
+        let axles = r.refine.clone()?;
+        (r.positions.len() > 1).then(|| (axles, r.positions.clone()))
+    });
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            analyse(&problem, &plan, budget)
+            let outcome = analyse(&problem, &plan, budget)?;
+            let Some((axles, positions)) = refine else {
+                return Ok(outcome);
+            };
+            let spacing = (positions[positions.len() - 1] - positions[0]).abs()
+                / (positions.len() - 1) as f64;
+            refine_critical(
+                outcome,
+                (&problem, &plan),
+                &positions,
+                REFINED_TO * spacing,
+                &|x| axles.loads_at(x),
+                budget,
+            )
         })
         .await?;
     let outcome = ran.value?;

@@ -69,6 +69,22 @@ pub struct RollingCurve {
     pub time_per_stop_ms: f64,
     /// Wall time of the first loaded stop (a cold start) in milliseconds.
     pub first_stop_ms: f64,
+    /// The critical position narrowed between the stops, when asked for
+    /// ([`super::refine::refine_critical`]).
+    pub refined: Option<RefinedCritical>,
+}
+
+/// A critical position narrowed between the stops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefinedCritical {
+    /// The position of least λ found.
+    pub position: f64,
+    /// λ there.
+    pub load_factor: f64,
+    /// Half the final bracket: how far the least λ may lie from `position` (λ unimodal there).
+    pub error: f64,
+    /// Live-load analyses the search ran.
+    pub evaluations: usize,
 }
 
 /// How an arch analysis' answer stands.
@@ -238,6 +254,7 @@ fn roll(
         critical: best,
         time_per_stop_ms: elapsed_ms / stops.len().max(1) as f64,
         first_stop_ms: sweep.first_stop_secs * 1e3,
+        refined: None,
     };
     let mut solutions = sweep.stops;
     let critical = best

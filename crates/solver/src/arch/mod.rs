@@ -19,6 +19,7 @@
 //! - [`memory`]: the memory an analysis may take, bounded before it runs.
 //! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
 //! - [`rolling`]: the live-load factor at each stop of a rolling load.
+//! - [`refine`]: a rolling load's critical position narrowed between the stops.
 //! - [`thrust_line`]: the points of action of the interface resultants.
 
 pub mod analysis;
@@ -33,6 +34,7 @@ pub mod limit;
 pub mod mechanism;
 pub mod memory;
 pub mod minimum_thickness;
+pub mod refine;
 pub mod resultant;
 pub mod rolling;
 pub mod thrust_line;

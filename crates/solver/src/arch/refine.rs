@@ -1,0 +1,127 @@
+//! A rolling load's critical position narrowed between the stops (SPEC §6.2): the least λ lies
+//! between the critical stop's neighbours; a golden-section search over that bracket, one
+//! live-load analysis per position, narrows it to a given fraction of the stop spacing.
+
+use super::analysis::{analyse, ArchOutcome, ArchPlan, Friction, Programme, RefinedCritical};
+use super::equilibrium::LiveLoad;
+use super::error::ArchError;
+use super::limit::ArchProblem;
+use crate::budget::Budget;
+
+/// 1/φ, the golden section.
+const GOLDEN: f64 = 0.618_033_988_749_894_8;
+
+/// `outcome` (a finished rolling sweep over the stops at `positions`) with its critical stop
+/// narrowed to `tolerance` (a length): a golden-section search for the least λ between the
+/// critical stop's neighbours, the live loads at a position from `loads_at`. Where a position
+/// gives a lower λ than the stop, the answer is that position's (its problem, state and
+/// mechanism, friction treated as `plan` says); the curve keeps the stops' λ. Unchanged when
+/// there is no critical stop, the sweep did not finish, or the budget ends the search (then
+/// the stop's answer stands, with the stops' half spacing as its error).
+pub fn refine_critical(
+    mut outcome: ArchOutcome,
+    (problem, plan): (&ArchProblem, &ArchPlan),
+    positions: &[f64],
+    tolerance: f64,
+    loads_at: &dyn Fn(f64) -> Vec<LiveLoad>,
+    budget: &Budget,
+) -> Result<ArchOutcome, ArchError> {
+    let start = std::time::Instant::now();
+    let Some(curve) = outcome.rolling.as_mut() else {
+        return Ok(outcome);
+    };
+    let Some((i, stop_lambda)) = curve.critical.filter(|_| outcome.stop.is_finished()) else {
+        return Ok(outcome);
+    };
+    let (mut a, mut b) = (
+        positions[i.saturating_sub(1)],
+        positions[(i + 1).min(positions.len() - 1)],
+    );
+    let associative = ArchPlan {
+        programme: Programme::LiveLoad,
+        friction: Friction::Associative,
+        settings: plan.settings.clone(),
+    };
+    let mut evaluations = 0;
+    let mut lambda = |x: f64| -> Result<Option<f64>, ArchError> {
+        let loads = loads_at(x);
+        if loads.is_empty() {
+            return Ok(Some(f64::INFINITY));
+        }
+        evaluations += 1;
+        let at = analyse(
+            &problem.clone().with_live_loads(loads)?,
+            &associative,
+            budget,
+        )?;
+        Ok(at
+            .stop
+            .is_finished()
+            .then(|| at.solution.load_factor.unwrap_or(f64::INFINITY)))
+    };
+    let mut best = (positions[i], stop_lambda);
+    let (mut c, mut d) = (b - GOLDEN * (b - a), a + GOLDEN * (b - a));
+    let (Some(mut fc), Some(mut fd)) = (lambda(c)?, lambda(d)?) else {
+        return Ok(outcome);
+    };
+    while b - a > 2.0 * tolerance {
+        for (x, f) in [(c, fc), (d, fd)] {
+            if f < best.1 {
+                best = (x, f);
+            }
+        }
+        if fc <= fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - GOLDEN * (b - a);
+            let Some(f) = lambda(c)? else {
+                return Ok(outcome);
+            };
+            fc = f;
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + GOLDEN * (b - a);
+            let Some(f) = lambda(d)? else {
+                return Ok(outcome);
+            };
+            fd = f;
+        }
+    }
+    for (x, f) in [(c, fc), (d, fd)] {
+        if f < best.1 {
+            best = (x, f);
+        }
+    }
+    let refined = RefinedCritical {
+        position: best.0,
+        load_factor: best.1,
+        error: 0.5 * (b - a),
+        evaluations,
+    };
+    if best.0 != positions[i] {
+        // The answer at the refined position, friction treated as the plan says.
+        let at = ArchPlan {
+            programme: Programme::LiveLoad,
+            ..plan.clone()
+        };
+        let answer = analyse(
+            &problem.clone().with_live_loads(loads_at(best.0))?,
+            &at,
+            budget,
+        )?;
+        if !answer.stop.is_finished() {
+            return Ok(outcome);
+        }
+        let (curve, swept) = (outcome.rolling.take(), outcome.solution.solve_time_secs);
+        outcome = ArchOutcome {
+            rolling: curve,
+            ..answer
+        };
+        outcome.solution.solve_time_secs = swept;
+    }
+    // The whole solve's time: the sweep's and the search's.
+    outcome.solution.solve_time_secs += start.elapsed().as_secs_f64();
+    if let Some(curve) = outcome.rolling.as_mut() {
+        curve.refined = Some(refined);
+    }
+    Ok(outcome)
+}
