@@ -12,7 +12,7 @@ use thrustline_solver::arch::{
 };
 
 use super::assembly::Generated;
-use super::fill::{fill_faces, fill_loads, FillDto, FillLoads, RoadLoadDto, Rolling, RollingDto};
+use super::fill::{fill_faces, fill_loads, FillDto, FillLoads, RoadLoadDto};
 use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
 };
@@ -20,6 +20,7 @@ use super::request::{
     ArchDetailDto, DeadLoadRequest, FrictionDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest,
     LoadDto, MaterialFields,
 };
+use super::rolling::{Rolling, RollingDto};
 use crate::error::ApiError;
 use crate::limits::{
     BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, FRICTION, LENGTH, LOADS,

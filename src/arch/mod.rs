@@ -16,6 +16,7 @@ pub mod mechanism;
 pub mod minimum_thickness;
 pub mod request;
 pub mod response;
+pub mod rolling;
 pub mod tables;
 
 use axum::extract::State;

@@ -372,7 +372,7 @@ limit_request! {
         /// A set of axles rolled across (on the road with `fill`, else on the extrados): the
         /// load factor at each stop in `rolling`, the answer at the critical stop.
         #[serde(default)]
-        pub rolling: Option<super::fill::RollingDto>,
+        pub rolling: Option<super::rolling::RollingDto>,
     }
 }
 

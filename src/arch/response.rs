@@ -9,12 +9,13 @@ use thrustline_solver::arch::{
 };
 use utoipa::ToSchema;
 
-use super::fill::{passive_out, PassiveOutDto, RollingOutDto};
+use super::fill::{passive_out, PassiveOutDto};
 use super::input::ArchInput;
 use super::mechanism::{
     active_constraints, hinges, ActiveConstraintDto, HingeDto, MechanismDto, NonAssociativeOutDto,
 };
 use super::request::{ArchDetailDto, FormulationDto};
+use super::rolling::RollingOutDto;
 
 /// The resultant at one interface.
 #[derive(Debug, Clone, Serialize, ToSchema)]

@@ -4,10 +4,10 @@
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
-use super::fill::RollingOutDto;
 use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
 use super::request::ArchDetailDto;
 use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
+use super::rolling::RollingOutDto;
 use crate::error::ApiError;
 use crate::table::{csv, Csv, Row, TableQuery};
 

@@ -1,7 +1,7 @@
 //! The rolling-load curve drawn under a bridge: λ against the position of the load, the
 //! critical stop marked.
 
-use crate::arch::fill::RollingOutDto;
+use crate::arch::rolling::RollingOutDto;
 use crate::svg::{Canvas, WIDTH};
 
 /// λ against the position of a rolling load, in a band under the arch, the critical stop

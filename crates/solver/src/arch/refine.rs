@@ -33,7 +33,7 @@ pub fn refine_critical(
     let Some((i, stop_lambda)) = curve.critical.filter(|_| outcome.stop.is_finished()) else {
         return Ok(outcome);
     };
-    let (mut a, mut b) = (
+    let (a, b) = (
         positions[i.saturating_sub(1)],
         positions[(i + 1).min(positions.len() - 1)],
     );
@@ -59,38 +59,10 @@ pub fn refine_critical(
             .is_finished()
             .then(|| at.solution.load_factor.unwrap_or(f64::INFINITY)))
     };
-    let mut best = (positions[i], stop_lambda);
-    let (mut c, mut d) = (b - GOLDEN * (b - a), a + GOLDEN * (b - a));
-    let (Some(mut fc), Some(mut fd)) = (lambda(c)?, lambda(d)?) else {
+    let Some((best, (a, b))) = golden((a, b), (positions[i], stop_lambda), tolerance, &mut lambda)?
+    else {
         return Ok(outcome);
     };
-    while b - a > 2.0 * tolerance {
-        for (x, f) in [(c, fc), (d, fd)] {
-            if f < best.1 {
-                best = (x, f);
-            }
-        }
-        if fc <= fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - GOLDEN * (b - a);
-            let Some(f) = lambda(c)? else {
-                return Ok(outcome);
-            };
-            fc = f;
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + GOLDEN * (b - a);
-            let Some(f) = lambda(d)? else {
-                return Ok(outcome);
-            };
-            fd = f;
-        }
-    }
-    for (x, f) in [(c, fc), (d, fd)] {
-        if f < best.1 {
-            best = (x, f);
-        }
-    }
     let refined = RefinedCritical {
         position: best.0,
         load_factor: best.1,
@@ -124,4 +96,50 @@ pub fn refine_critical(
         curve.refined = Some(refined);
     }
     Ok(outcome)
+}
+
+/// λ at a position: `None` when the budget ended its analysis.
+type Lambda<'a> = dyn FnMut(f64) -> Result<Option<f64>, ArchError> + 'a;
+
+/// The least point (x, λ) seen and the final bracket.
+type Found = ((f64, f64), (f64, f64));
+
+/// The golden-section search for the least of `f` over [a, b] until the bracket is at most
+/// 2·`tolerance` wide: the least point seen (`best` to start with) and the final bracket;
+/// `None` when an evaluation was cut short.
+fn golden(
+    (mut a, mut b): (f64, f64),
+    mut best: (f64, f64),
+    tolerance: f64,
+    f: &mut Lambda<'_>,
+) -> Result<Option<Found>, ArchError> {
+    let (mut c, mut d) = (b - GOLDEN * (b - a), a + GOLDEN * (b - a));
+    let (Some(mut fc), Some(mut fd)) = (f(c)?, f(d)?) else {
+        return Ok(None);
+    };
+    loop {
+        for (x, value) in [(c, fc), (d, fd)] {
+            if value < best.1 {
+                best = (x, value);
+            }
+        }
+        if b - a <= 2.0 * tolerance {
+            return Ok(Some((best, (a, b))));
+        }
+        if fc <= fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - GOLDEN * (b - a);
+            let Some(value) = f(c)? else {
+                return Ok(None);
+            };
+            fc = value;
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + GOLDEN * (b - a);
+            let Some(value) = f(d)? else {
+                return Ok(None);
+            };
+            fd = value;
+        }
+    }
 }
