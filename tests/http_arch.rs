@@ -461,3 +461,56 @@ async fn locked_rings_say_why_no_load_collapses_them() {
     let (_, _, sliding) = server.post("/arch/live-load", &body(2, Some(0.6))).await;
     assert!(!sliding["warnings"].to_string().contains("rings_locked"));
 }
+
+#[tokio::test]
+async fn locked_rings_far_above_the_bonded_single_ring_say_so() {
+    // SPEC §6.5: with crushing (σ_c = 50) two staggered rings that cannot slip carry a finite
+    // load, but far above one ring of the whole thickness (λ = 3.9095 for R = 10, D = 1.5,
+    // N = 100, a unit load on block 26): the warning gives both, the single ring's from its
+    // own request. Aligned rings (that can open, not slip: below the single ring) and rings
+    // that can slip: none.
+    let server = Server::start().await;
+    let body = |rings: usize, joints: &str, extra: Value| {
+        let mut b = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5,
+                                        "voussoirs": 100, "rings": rings, "ring_joints": joints},
+                           "loads": [{"block": 26, "fy": -1}], "compressive_strength": 50,
+                           "include": []});
+        for (k, v) in extra.as_object().unwrap() {
+            b[k] = v.clone();
+        }
+        b
+    };
+    let (_, _, single) = server
+        .post("/arch/live-load", &body(1, "staggered", json!({})))
+        .await;
+    let single = single["load_factor"].as_f64().unwrap();
+    assert!((single - 3.9095).abs() < 1e-4, "{single}");
+    let (status, _, locked) = server
+        .post("/arch/live-load", &body(2, "staggered", json!({})))
+        .await;
+    assert_eq!(status, 200, "{locked}");
+    let lambda = locked["load_factor"].as_f64().unwrap();
+    assert!(lambda > 1.25 * single, "{lambda} vs {single}");
+    let warnings = locked["warnings"].to_string();
+    assert!(warnings.contains("rings_locked"), "{warnings}");
+    assert!(warnings.contains(&format!("{single:.6}")), "{warnings}");
+    assert!(
+        warnings.contains(&format!("{:.2} times", lambda / single)),
+        "{warnings}"
+    );
+    for (joints, extra) in [
+        ("aligned", json!({})),
+        ("staggered", json!({"ring_friction_coefficient": 0.6})),
+    ] {
+        let (_, _, answer) = server
+            .post("/arch/live-load", &body(2, joints, extra))
+            .await;
+        // (With ring friction and crushing the dead load is not even carried: no λ.)
+        let lambda = answer["load_factor"].as_f64().unwrap_or(0.0);
+        assert!(lambda <= 1.25 * single, "{joints}: {lambda}");
+        assert!(
+            !answer["warnings"].to_string().contains("rings_locked"),
+            "{joints}"
+        );
+    }
+}

@@ -7,8 +7,8 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::fill::{Extrados, ExtradosFaces, Fill, RoadLoad};
 use thrustline_solver::arch::{
-    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, InterfaceLimits,
-    LimitSettings, LiveLoad, VoussoirShape,
+    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, LimitSettings,
+    LiveLoad, VoussoirShape,
 };
 
 use super::assembly::Generated;
@@ -16,15 +16,15 @@ use super::fill::{fill_faces, fill_loads, FillDto, FillLoads, RoadLoadDto};
 use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
 };
+use super::material::{material, ring_material};
 use super::request::{
-    ArchDetailDto, DeadLoadRequest, FrictionDto, InterfaceLimitsDto, LimitFields, LiveLoadRequest,
-    LoadDto, MaterialFields,
+    ArchDetailDto, DeadLoadRequest, FrictionDto, LimitFields, LiveLoadRequest, LoadDto,
 };
 use super::rolling::{Rolling, RollingDto};
 use crate::error::ApiError;
 use crate::limits::{
-    BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, FRICTION, LENGTH, LOADS,
-    LOWER_LIMIT, POSITIVE_STRESS, SOLVER_TOLERANCE, UNIT_WEIGHT, UPPER_LIMIT,
+    BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, LENGTH, LOADS, POSITIVE_STRESS,
+    SOLVER_TOLERANCE,
 };
 use crate::validation::{count, count_within, finite, within};
 
@@ -50,6 +50,9 @@ pub struct ArchInput {
     pub fill: Option<(Fill, ExtradosFaces, Vec<RoadLoad>)>,
     /// The details the answer carries (`include`; all when not given).
     pub include: Vec<ArchDetailDto>,
+    /// Rings that cannot slip on each other (one span, no rolling load): the same request on
+    /// one ring of the whole thickness, whose λ the answer is compared with (`rings_locked`).
+    pub bonded: Option<ArchProblem>,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -71,17 +74,6 @@ impl Extras<'_> {
             (!self.road_loads.is_empty()).then_some("road_loads")
         }
     }
-}
-
-/// The material part of every arch request, validated.
-#[derive(Debug, Clone, Copy)]
-pub struct Material {
-    /// Unit weight γ.
-    pub unit_weight: f64,
-    /// Limits on the interface resultants.
-    pub limits: InterfaceLimits,
-    /// Coulomb friction coefficient; `None` = no sliding.
-    pub friction: Option<f64>,
 }
 
 impl DeadLoadRequest {
@@ -203,7 +195,9 @@ fn input(
         relaxation: fields.friction_relaxation.solver(),
         ..LimitSettings::default()
     };
+    let bonded = bonded(&fields, &problem, loads, extras, time_limit_secs);
     Ok(ArchInput {
+        bonded,
         problem,
         settings,
         is_curved,
@@ -217,6 +211,36 @@ fn input(
             .map(|(f, faces)| (f, faces, filled.road)),
         include: include(fields.include),
     })
+}
+
+/// Where `problem`'s rings lock (staggered, no ring friction) on one span without a rolling
+/// load: the same request on one ring of the whole thickness (None where it does not validate,
+/// such as a load on a block of an outer ring).
+fn bonded(
+    fields: &LimitFields,
+    problem: &ArchProblem,
+    loads: &[LoadDto],
+    extras: Extras,
+    time_limit_secs: f64,
+) -> Option<ArchProblem> {
+    let GeometryDto::Circular(circular) = fields.geometry else {
+        return None;
+    };
+    let locked = circular.rings > 1 && circular.spans == 1 && problem.has_locked_rings();
+    if !locked || extras.rolling.is_some() {
+        return None;
+    }
+    let single = GeometryDto::Circular(CircularGeometryDto {
+        rings: 1,
+        ..circular.clone()
+    });
+    let fields = LimitFields {
+        geometry: &single,
+        ..*fields
+    };
+    input(fields, loads, extras, time_limit_secs)
+        .ok()
+        .map(|i| i.problem)
 }
 
 /// The ring interfaces' limits and friction (arches of more than one ring) and crushing.
@@ -267,54 +291,6 @@ fn include(given: Option<&[ArchDetailDto]>) -> Vec<ArchDetailDto> {
         .into_iter()
         .filter(|d| given.is_none_or(|g| g.contains(d)))
         .collect()
-}
-
-/// Validates the unit weight, `interface_limits` (missing fields take Heyman's values, `null`
-/// is unbounded) and `friction_coefficient` (null: no sliding).
-pub fn material(fields: MaterialFields) -> Result<Material, ApiError> {
-    let unit_weight = within("unit_weight", fields.unit_weight, UNIT_WEIGHT)?;
-    Ok(Material {
-        unit_weight,
-        limits: limits("interface_limits", fields.interface_limits)?,
-        friction: friction("friction_coefficient", fields.friction_coefficient)?,
-    })
-}
-
-/// `ring_interface_limits` and `ring_friction_coefficient`, validated like their one-ring twins.
-pub fn ring_material(fields: MaterialFields) -> Result<(InterfaceLimits, Option<f64>), ApiError> {
-    Ok((
-        limits("ring_interface_limits", fields.ring_interface_limits)?,
-        friction(
-            "ring_friction_coefficient",
-            fields.ring_friction_coefficient,
-        )?,
-    ))
-}
-
-/// Interface limits: missing fields take Heyman's values, `null` is unbounded.
-fn limits(name: &str, given: &InterfaceLimitsDto) -> Result<InterfaceLimits, ApiError> {
-    let heyman = InterfaceLimits::heyman();
-    let limit = |field: &str, given: Option<Option<f64>>, default: Option<f64>, lower: bool| {
-        let field = format!("{name}.{field}");
-        match given.unwrap_or(default) {
-            None => Ok(None),
-            Some(v) if lower => within(&field, v, LOWER_LIMIT).map(Some),
-            Some(v) => within(&field, v, UPPER_LIMIT).map(Some),
-        }
-    };
-    Ok(InterfaceLimits {
-        q_min: limit("q_min", given.q_min, heyman.q_min, true)?,
-        q_max: limit("q_max", given.q_max, heyman.q_max, false)?,
-        s_min: limit("s_min", given.s_min, heyman.s_min, true)?,
-        s_max: limit("s_max", given.s_max, heyman.s_max, false)?,
-        t_min: limit("t_min", given.t_min, heyman.t_min, true)?,
-        t_max: limit("t_max", given.t_max, heyman.t_max, false)?,
-    })
-}
-
-/// A friction coefficient: null is no sliding.
-fn friction(field: &str, mu: Option<f64>) -> Result<Option<f64>, ApiError> {
-    mu.map(|mu| within(field, mu, FRICTION)).transpose()
 }
 
 /// Validates a circular arch of the given thickness (against the radius it is

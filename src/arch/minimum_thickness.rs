@@ -12,7 +12,8 @@ use thrustline_solver::arch::{
 use utoipa::ToSchema;
 
 use super::geometry::CircularGeometryDto;
-use super::input::{circular_arch, material, ring_material, Material};
+use super::input::circular_arch;
+use super::material::{material, ring_material, Material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};

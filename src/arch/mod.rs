@@ -12,6 +12,7 @@ pub mod drawing;
 pub mod fill;
 pub mod geometry;
 pub mod input;
+pub mod material;
 pub mod mechanism;
 pub mod minimum_thickness;
 pub mod request;
@@ -20,9 +21,11 @@ pub mod rolling;
 pub mod tables;
 
 use axum::extract::State;
-use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
+use thrustline_solver::arch::analysis::{analyse, ArchOutcome, ArchPlan, Friction, Programme};
 use thrustline_solver::arch::memory::{memory_bound, on_chain};
 use thrustline_solver::arch::refine::refine_critical;
+use thrustline_solver::arch::{ArchError, ArchProblem};
+use thrustline_solver::budget::Budget;
 
 use crate::error::{ApiError, ApiJson, ProblemResponses};
 use crate::pool::Cost;
@@ -33,6 +36,7 @@ use crate::AppState;
 use input::ArchInput;
 use request::{DeadLoadRequest, LiveLoadRequest};
 use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
+use rolling::Axles;
 use tables::{arch_table, ArchTableQuery};
 
 /// Dead-load limit analysis (Livesley's λ₀).
@@ -274,31 +278,21 @@ async fn solve(
     let plan = plan(which, &mut input);
     let cost = cost(state, &input, &plan)?;
     let problem = input.problem.clone();
-    // With refine_critical: the axles and the stops, to search between them.
-    let refine = input.rolling.as_ref().and_then(|r| {
-        let axles = r.refine.clone()?;
-        (r.positions.len() > 1).then(|| (axles, r.positions.clone()))
-    });
+    let extra = Extra {
+        // With refine_critical: the axles and the stops, to search between them.
+        refine: input.rolling.as_ref().and_then(|r| {
+            let axles = r.refine.clone()?;
+            (r.positions.len() > 1).then(|| (axles, r.positions.clone()))
+        }),
+        bonded: input.bonded.take(),
+    };
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            let outcome = analyse(&problem, &plan, budget)?;
-            let Some((axles, positions)) = refine else {
-                return Ok(outcome);
-            };
-            let spacing = (positions[positions.len() - 1] - positions[0]).abs()
-                / (positions.len() - 1) as f64;
-            refine_critical(
-                outcome,
-                (&problem, &plan),
-                &positions,
-                REFINED_TO * spacing,
-                &|x| axles.loads_at(x),
-                budget,
-            )
+            run(&problem, &plan, extra, budget)
         })
         .await?;
-    let outcome = ran.value?;
+    let (outcome, bonded_load_factor) = ran.value?;
     tracing::info!(
         problem = ?which,
         blocks = outcome.problem.assembly().blocks.len(),
@@ -319,5 +313,57 @@ async fn solve(
         };
         return Err(state.refuse(outcome.stop, work, ran.shared));
     };
-    Ok(SolvedArch::new(input, outcome, status))
+    let mut solved = SolvedArch::new(input, outcome, status);
+    solved.bonded_load_factor = bonded_load_factor;
+    Ok(solved)
+}
+
+/// What a request adds to its plan's analysis.
+struct Extra {
+    /// `refine_critical`: the axles and the stops.
+    refine: Option<(Axles, Vec<f64>)>,
+    /// Locked rings: the bonded single ring.
+    bonded: Option<ArchProblem>,
+}
+
+/// What runs on the pool: the plan's analysis; a rolling load's critical position narrowed
+/// when asked; where the rings lock, the bonded single ring's λ (associative) to compare.
+fn run(
+    problem: &ArchProblem,
+    plan: &ArchPlan,
+    extra: Extra,
+    budget: &Budget,
+) -> Result<(ArchOutcome, Option<f64>), ArchError> {
+    let mut outcome = analyse(problem, plan, budget)?;
+    if let Some((axles, positions)) = extra.refine {
+        let spacing =
+            (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
+        outcome = refine_critical(
+            outcome,
+            (problem, plan),
+            &positions,
+            REFINED_TO * spacing,
+            &|x| axles.loads_at(x),
+            budget,
+        )?;
+    }
+    let compare = outcome.stop.is_finished()
+        && outcome.solution.load_factor.is_some()
+        && plan.programme == Programme::LiveLoad;
+    let bonded = match extra.bonded.filter(|_| compare) {
+        Some(bonded) => {
+            let at = ArchPlan {
+                friction: Friction::Associative,
+                ..plan.clone()
+            };
+            let single = analyse(&bonded, &at, budget)?;
+            single
+                .stop
+                .is_finished()
+                .then_some(single.solution.load_factor)
+                .flatten()
+        }
+        None => None,
+    };
+    Ok((outcome, bonded))
 }

@@ -232,7 +232,14 @@ pub struct SolvedArch {
     pub rolling: Option<RollingOutDto>,
     /// With friction: the non-associative iteration, when it ran.
     pub friction: Option<NonAssociative>,
+    /// Where the rings lock: the bonded single ring's λ.
+    pub bonded_load_factor: Option<f64>,
 }
+
+/// Locked rings whose λ exceeds the bonded single ring's by more than this factor are warned
+/// of (`rings_locked`): beyond a quarter more, the locking rather than the masonry carries the
+/// load (aligned rings bonded give the single ring's λ to 1e-8).
+const FAR_ABOVE_BONDED: f64 = 1.25;
 
 impl SolvedArch {
     /// The answer to `input` from the analysis' `outcome` with its `status`; the problem shown
@@ -251,6 +258,7 @@ impl SolvedArch {
             thrust_line: outcome.thrust_line,
             rolling,
             friction: outcome.friction,
+            bonded_load_factor: None,
         }
     }
 }
@@ -289,6 +297,33 @@ fn passive(solved: &SolvedArch) -> Option<Vec<PassiveOutDto>> {
         .then(|| passive_out(forces, &solved.solution.passive))
 }
 
+/// What to look at before trusting the answer: `rings_locked` where locked rings answer
+/// unbounded, or far above the bonded single ring.
+fn warnings(solved: &SolvedArch) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
+        warnings.push(
+            "rings_locked: the rings cannot slip on each other (no ring_friction_coefficient), \
+             so their staggered joints lock and no finite load forms a mechanism; the mortar \
+             between real rings shears — give ring_friction_coefficient (and \
+             ring_interface_limits) for the ring joints"
+                .to_owned(),
+        );
+    }
+    let locked = solved.bonded_load_factor.zip(solved.solution.load_factor);
+    if let Some((bonded, lambda)) = locked.filter(|(b, l)| *l > FAR_ABOVE_BONDED * b) {
+        warnings.push(format!(
+            "rings_locked: λ = {lambda:.6} is {:.2} times the {bonded:.6} of one ring of the \
+             whole thickness: the rings cannot slip on each other (no \
+             ring_friction_coefficient), so their staggered joints lock and hinges cannot \
+             cross them; the mortar between real rings shears — give \
+             ring_friction_coefficient (and ring_interface_limits) for the ring joints",
+            lambda / bonded
+        ));
+    }
+    warnings
+}
+
 impl ArchOutcomeDto {
     fn new(solved: &SolvedArch) -> Self {
         let solution = &solved.solution;
@@ -305,16 +340,7 @@ impl ArchOutcomeDto {
             &[]
         };
         let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
-        let mut warnings = Vec::new();
-        if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
-            warnings.push(
-                "rings_locked: the rings cannot slip on each other (no ring_friction_coefficient), \
-                 so their staggered joints lock and no finite load forms a mechanism; the mortar \
-                 between real rings shears — give ring_friction_coefficient (and \
-                 ring_interface_limits) for the ring joints"
-                    .to_owned(),
-            );
-        }
+        let warnings = warnings(solved);
         Self {
             warnings,
             stable: solution.dead_load_carried,
