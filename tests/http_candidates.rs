@@ -49,12 +49,16 @@ async fn a_cohesionless_face_answers_a_mechanism_not_a_sliver() {
     assert!(depth(&default) >= 0.2, "{}", depth(&default));
     let g = default["factor_of_safety"].as_f64().unwrap();
     assert!(g > f + 1e-4, "{g} vs {f}");
+    // The values docs/slopes.md shows.
+    assert!((g - 1.4038).abs() < 5e-5, "{g}");
     // Deeper still when asked.
     let (_, _, deep) = server
         .post("/slope/spencer", &cohesionless(json!({"min_depth": 1.0})))
         .await;
     assert!(depth(&deep) >= 1.0, "{}", depth(&deep));
-    assert!(deep["factor_of_safety"].as_f64().unwrap() >= g);
+    let h = deep["factor_of_safety"].as_f64().unwrap();
+    assert!(h >= g);
+    assert!((h - 1.4208).abs() < 5e-5, "{h}");
 }
 
 #[tokio::test]
@@ -165,4 +169,30 @@ async fn options_that_would_be_ignored_are_refused() {
         422,
         "section.line_loads[0].x",
     );
+}
+
+#[tokio::test]
+async fn the_non_circular_stage_keeps_to_the_least_depth_too() {
+    // model §6.4: the polyline stage moves from the best circle; on a c' = 0 face it would
+    // slide towards the sliver of no depth. Its trial surfaces shallower than min_depth are not
+    // candidates either: the answer is at least 1.0 deep, and never above the circle's F.
+    let server = Server::start().await;
+    let search = |min_depth: f64| json!({"shape": "noncircular", "min_depth": min_depth, "max_evaluations": 400});
+    let (status, _, deep) = server
+        .post("/slope/spencer", &cohesionless(search(1.0)))
+        .await;
+    assert_eq!(status, 200, "{deep}");
+    assert!(depth(&deep) >= 1.0, "{}", depth(&deep));
+    let f = deep["factor_of_safety"].as_f64().unwrap();
+    let (_, _, circle) = server
+        .post("/slope/spencer", &cohesionless(json!({"min_depth": 1.0})))
+        .await;
+    assert!(f <= circle["factor_of_safety"].as_f64().unwrap() + 1e-12);
+    // Without a least depth the stage finds the infinite slope's sliver (tan φ'/tan β).
+    let (_, _, shallow) = server
+        .post("/slope/spencer", &cohesionless(search(0.0)))
+        .await;
+    let g = shallow["factor_of_safety"].as_f64().unwrap();
+    assert!(g < f, "{g} vs {f}");
+    assert!(g >= 35f64.to_radians().tan() / 0.5 - 1e-9, "{g}");
 }

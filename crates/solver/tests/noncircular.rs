@@ -76,7 +76,7 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
     let found = search_noncircular(
         &section,
         &start,
-        (12, None),
+        (12, None, 0.0),
         slices,
         Seismic::default(),
         &SpencerSettings::default(),

@@ -107,7 +107,11 @@ pub(super) fn section(
         let better = search_noncircular(
             problem.section(),
             &problem.surface(),
-            (noncircular.vertices, noncircular.max_evaluations),
+            (
+                noncircular.vertices,
+                noncircular.max_evaluations,
+                candidates.min_depth,
+            ),
             plan.slices,
             plan.seismic,
             spencer,

@@ -224,13 +224,16 @@ fn confirmed_factor(
     section: &Section,
     mirror: &Section,
     shape: &SlipShape,
-    slices: NonZeroUsize,
-    seismic: Seismic,
+    (slices, seismic, min_depth): (NonZeroUsize, Seismic, f64),
     settings: &SpencerSettings,
 ) -> f64 {
     let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
     let at = |n: NonZeroUsize| -> Option<f64> {
         let cut = place(section, Some(mirror), shape, n, seismic, None).ok()?;
+        // Shallower than `search.min_depth`: not a candidate (as in the circle stage).
+        if cut.model.depth() < min_depth {
+            return None;
+        }
         match spencer_factor_outcome(&cut.model, settings) {
             FactorOutcome::Solved(s) => Some(s.factor_of_safety),
             FactorOutcome::Unsolved { .. } | FactorOutcome::Undriven => None,
@@ -271,14 +274,14 @@ fn polyline_factor(
     section: &Section,
     mirror: &Section,
     points: Vec<(f64, f64)>,
-    (slices, seismic): (NonZeroUsize, Seismic),
+    cut: (NonZeroUsize, Seismic, f64),
     settings: &SpencerSettings,
 ) -> f64 {
     let Ok(line) = Polyline::new(points) else {
         return f64::INFINITY;
     };
     let shape = SlipShape::Polyline(line);
-    confirmed_factor(section, mirror, &shape, slices, seismic, settings)
+    confirmed_factor(section, mirror, &shape, cut, settings)
 }
 
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
@@ -288,7 +291,7 @@ fn polyline_factor(
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
-    (vertices, max_evaluations): (usize, Option<usize>),
+    (vertices, max_evaluations, min_depth): (usize, Option<usize>, f64),
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &SpencerSettings,
@@ -313,7 +316,7 @@ pub fn search_noncircular(
             section,
             &mirror,
             points.to_vec(),
-            (slices, seismic),
+            (slices, seismic, min_depth),
             settings,
         )
     };
@@ -335,7 +338,7 @@ pub fn search_noncircular(
     // The start is evaluated whatever the time, so that a search out of time still answers.
     evaluations.set(evaluations.get() + 1);
     let first = surface_of(section, &fractions, &v).map_or(f64::INFINITY, |p| {
-        polyline_factor(section, &mirror, p, (slices, seismic), &start_settings)
+        polyline_factor(section, &mirror, p, (slices, seismic, 0.0), &start_settings)
     });
     if !first.is_finite() {
         return None;
