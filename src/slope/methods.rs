@@ -2,10 +2,11 @@
 //! same slices (model §4.3).
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::slope::analysis::{Method, MethodFactors};
-use thrustline_solver::slope::spencer::methods::{InterSliceFunction, MethodFactor};
+use thrustline_solver::slope::analysis::{Method, MethodAnswer, MethodFactors};
+use thrustline_solver::slope::spencer::methods::InterSliceFunction;
 use utoipa::ToSchema;
 
+use super::options::AccuracyOutDto;
 use crate::error::ApiError;
 use crate::limits::INTERSLICE_POINTS;
 use crate::validation::number;
@@ -37,6 +38,10 @@ pub struct MethodDto {
     /// Morgenstern–Price's λ (X/E = λ·f), when converged; absent for the other methods.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lambda: Option<f64>,
+    /// The accuracy of its F as the headline's (from its F at two more slice counts); null when
+    /// not converged.
+    #[schema(required = true)]
+    pub accuracy: Option<AccuracyOutDto>,
 }
 
 /// The methods asked for, each present only when asked.
@@ -101,11 +106,16 @@ impl From<MethodName> for Method {
 }
 
 impl MethodDto {
-    fn new(m: &MethodFactor) -> Self {
+    fn new(answer: &MethodAnswer) -> Self {
+        let m = &answer.factor;
         Self {
             converged: m.factor_of_safety.is_some(),
             factor_of_safety: m.factor_of_safety,
             lambda: m.lambda,
+            accuracy: answer.accuracy.map(|a| AccuracyOutDto {
+                slices: a.slices,
+                discretisation_error: a.discretisation_error,
+            }),
         }
     }
 }

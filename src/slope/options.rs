@@ -1,5 +1,5 @@
-//! Small option types of a Spencer request: the accuracy asked for, and whether a search may
-//! answer composite surfaces.
+//! Small option types of a Spencer request and answer: the accuracy asked for and answered, and
+//! whether a search may answer composite surfaces.
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -21,4 +21,16 @@ pub enum CompositeDto {
     FollowBedrock,
     /// A circle that would cross the bedrock is not a candidate.
     CirclesOnly,
+}
+
+/// The accuracy of an answered F (model §6.2).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct AccuracyOutDto {
+    /// The slices of the answer.
+    pub slices: usize,
+    /// The estimated |F(n) − F(∞)|/F: the true error (against 10,000 slices) is at most twice
+    /// it (+1e-9) and, where above 1e-7, at least a tenth of it. Null where F at other slice
+    /// counts cannot be had (no solution there, loads given per slice, or no time left).
+    #[schema(required = true)]
+    pub discretisation_error: Option<f64>,
 }

@@ -6,6 +6,7 @@ use thrustline_solver::slope::analysis::SearchReport;
 use thrustline_solver::slope::{SliceModel, Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
+use super::options::AccuracyOutDto;
 use super::outputs::{CurvesDto, GridDto, SearchOutDto};
 use super::report::SolvedSlope;
 use super::warnings::warnings;
@@ -232,18 +233,6 @@ pub struct SpencerResponse {
     pub slice_refinement: Option<Vec<SliceRefinementDto>>,
     /// The details `include` left out (returned empty, `grid` absent); empty by default.
     pub omitted: Vec<SlopeDetailDto>,
-}
-
-/// The accuracy of an answered F (model §6.2).
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct AccuracyOutDto {
-    /// The slices of the answer.
-    pub slices: usize,
-    /// The estimated |F(n) − F(∞)|/F: the true error (against 10,000 slices) is at most twice
-    /// it (+1e-9) and, where above 1e-7, at least a tenth of it. Null where F at other slice
-    /// counts cannot be had (no solution there, loads given per slice, or no time left).
-    #[schema(required = true)]
-    pub discretisation_error: Option<f64>,
 }
 
 /// One step of the slice refinement.

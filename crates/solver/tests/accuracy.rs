@@ -212,3 +212,53 @@ fn an_accuracy_asked_for_is_reached_with_the_fewest_doublings() {
         }
     }
 }
+
+#[test]
+fn each_methods_stated_error_is_honest_against_ten_thousand_slices() {
+    // The same measure for the methods beside Spencer's (their F on the same chords; Bishop's
+    // and the ordinary method's about a circle's centre, Janbu's and Morgenstern–Price's on
+    // every surface): the estimate from their own F at two more counts.
+    use thrustline_solver::slope::accuracy::accuracy_with;
+    use thrustline_solver::slope::spencer::methods::{
+        bishop, janbu, morgenstern_price, ordinary, InterSliceFunction,
+    };
+    type Method = fn(&SliceModel) -> Option<f64>;
+    let methods: [(&str, Method); 4] = [
+        ("Bishop", |m| bishop(m).factor_of_safety),
+        ("Janbu", |m| janbu(m).factor_of_safety),
+        ("ordinary", |m| ordinary(m).factor_of_safety),
+        ("Morgenstern-Price", |m| {
+            morgenstern_price(m, &InterSliceFunction::HalfSine, (1.5, 0.3)).factor_of_safety
+        }),
+    ];
+    let mut checked = 0;
+    for (name, problem) in surfaces() {
+        for (method, factor) in methods {
+            let at = |n: usize| {
+                let p = problem.with_slices(NonZeroUsize::new(n).unwrap()).unwrap();
+                factor(p.model())
+            };
+            let Some(reference) = at(10_000) else {
+                continue; // no centre of rotation (a polyline): the method answers nothing
+            };
+            for n in [7, 20, 50, 100, 300, 1000, 3000] {
+                let p = problem.with_slices(NonZeroUsize::new(n).unwrap()).unwrap();
+                let f = at(n).unwrap();
+                let stated = accuracy_with(&p, f, &factor, &Budget::unlimited());
+                let e = stated.discretisation_error.unwrap();
+                let truth = (f - reference).abs() / reference;
+                assert!(
+                    truth <= 2.0 * e + 1e-9,
+                    "{name}, {method}, {n}: true {truth:.3e} above twice the stated {e:.3e}"
+                );
+                assert!(
+                    truth <= 1e-7 || truth >= e / 10.0,
+                    "{name}, {method}, {n}: true {truth:.3e} below a tenth of the stated {e:.3e}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    // Six surfaces; the moment methods on the four circles only.
+    assert_eq!(checked, 7 * (6 * 2 + 4 * 2));
+}

@@ -65,7 +65,9 @@ fn one_circle_is_answered_as_spencers_method_answers_it() {
     let answer = answered(analyse(&plan, &Budget::unlimited()).unwrap());
     assert_eq!(answer.solution, alone);
     let bishop_alone = bishop(problem.model());
-    assert_eq!(answer.methods.unwrap().bishop, Some(bishop_alone));
+    let found = answer.methods.unwrap().bishop.unwrap();
+    assert_eq!(found.factor, bishop_alone);
+    assert!(found.accuracy.is_some_and(|a| a.slices == 100));
     // Nothing else was planned, so nothing else ran.
     assert!(answer.search.is_none() && answer.curves.is_none() && answer.refinement.is_none());
     // Spencer (1967): F = 1.0695 converged; 100 slices lie within 5e-4 of it (the thesis'

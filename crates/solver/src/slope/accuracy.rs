@@ -9,18 +9,22 @@
 //! under-estimates tenfold). r is taken within [1.1, 4]: at least 1.1 (a tail of at most
 //! 11 d₁), at most Spencer's asymptotic 4 (a larger ratio is a difference that cancelled by
 //! chance). Otherwise (the differences change sign or grow: a slicing that moves a kink of the
-//! ground within a slice from one count to the next) the estimate is |d₁| + |d₂|. Above 2,500
+//! ground within a slice from one count to the next, F swinging about its limit) the estimate
+//! is F(n)'s distance from F(4n) and half the last swing, |F(n) − F(4n)| + |d₂|/2 (|d₁| + |d₂|
+//! before: ten times the true error of the ordinary method's F at 20 slices on Spencer's 1967
+//! example, where F(n) swung close to its limit by chance). Above 2,500
 //! slices the three counts are n/4, n/2 and n, and the error of F(n) is the tail after d₂,
 //! max(|d₂|, |d₁|/r)/(r − 1).
 //!
 //! Measured against 10,000 slices on circles and polylines, simple slopes and layered sections
-//! with water and a crack (crates/solver/tests/accuracy.rs): the true error is at most twice the
-//! estimate (+1e-9), and at least a tenth of it wherever it exceeds 1e-7.
+//! with water and a crack (crates/solver/tests/accuracy.rs), for Spencer's F and for each
+//! method's beside it: the true error is at most twice the estimate (+1e-9), and at least a
+//! tenth of it wherever it exceeds 1e-7.
 
 use std::num::NonZeroUsize;
 
 use super::error::SlopeError;
-use super::slices::Sliced;
+use super::slices::{SliceModel, Sliced};
 use super::spencer::{solve_spencer, SpencerSettings};
 use crate::budget::Budget;
 
@@ -54,7 +58,7 @@ pub fn tail(levels: [f64; 3], coarse: bool) -> f64 {
     let monotone = d1 * d2 > 0.0 && d2.abs() < d1.abs();
     if !monotone {
         return if coarse {
-            d1.abs() + d2.abs()
+            (levels[0] - levels[2]).abs() + d2.abs() / 2.0
         } else {
             d2.abs() + d1.abs() / FASTEST_RATIO
         };
@@ -75,6 +79,22 @@ pub fn accuracy_of<P: Sliced>(
     settings: &SpencerSettings,
     budget: &Budget,
 ) -> Accuracy {
+    accuracy_with(
+        problem,
+        f,
+        &|model| solve_spencer(model, settings).factor_of_safety,
+        budget,
+    )
+}
+
+/// The accuracy of `f`, the F that `factor` gives `problem` at its slices (any method of
+/// slices: their F on chords converge alike), as [`accuracy_of`] estimates Spencer's.
+pub fn accuracy_with<P: Sliced>(
+    problem: &P,
+    f: f64,
+    factor: &dyn Fn(&SliceModel) -> Option<f64>,
+    budget: &Budget,
+) -> Accuracy {
     let n = problem.slice_count();
     let coarse = 4 * n <= MAX_SLICES;
     let counts = if coarse {
@@ -88,7 +108,7 @@ pub fn accuracy_of<P: Sliced>(
         }
         let slices = NonZeroUsize::new(count)?;
         let finer: Result<P, SlopeError> = problem.with_slices(slices);
-        solve_spencer(&finer.ok()?.model(), settings).factor_of_safety
+        factor(&finer.ok()?.model())
     };
     let estimate = (|| {
         let (a, b) = (at(counts[0])?, at(counts[1])?);

@@ -1,7 +1,9 @@
 //! The methods engineers compare with Spencer's, answered side by side on the same slices: what
 //! a plan asks for and what each method found.
 
-use crate::slope::slices::SliceModel;
+use crate::budget::Budget;
+use crate::slope::accuracy::{accuracy_with, Accuracy};
+use crate::slope::slices::{SliceModel, Sliced};
 use crate::slope::spencer::methods::{
     bishop, janbu, morgenstern_price, ordinary, InterSliceFunction, MethodFactor,
 };
@@ -20,17 +22,35 @@ pub enum Method {
     Ordinary,
 }
 
+/// One method's answer and its accuracy.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MethodAnswer {
+    /// What the method found.
+    pub factor: MethodFactor,
+    /// The accuracy of its F ([`with_accuracy`]; none until estimated, or without an F).
+    pub accuracy: Option<Accuracy>,
+}
+
+impl From<MethodFactor> for MethodAnswer {
+    fn from(factor: MethodFactor) -> Self {
+        Self {
+            factor,
+            accuracy: None,
+        }
+    }
+}
+
 /// Each method asked for, present only when asked.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct MethodFactors {
     /// Morgenstern–Price.
-    pub morgenstern_price: Option<MethodFactor>,
+    pub morgenstern_price: Option<MethodAnswer>,
     /// Bishop's simplified method.
-    pub bishop: Option<MethodFactor>,
+    pub bishop: Option<MethodAnswer>,
     /// Janbu's simplified method.
-    pub janbu: Option<MethodFactor>,
+    pub janbu: Option<MethodAnswer>,
     /// The ordinary method.
-    pub ordinary: Option<MethodFactor>,
+    pub ordinary: Option<MethodAnswer>,
 }
 
 /// Each method of `methods` on `model`; Morgenstern–Price starts from Spencer's (F, tan θ), then
@@ -57,16 +77,53 @@ pub fn side_by_side(
                     .flatten()
                     .map(|start| morgenstern_price(model, function, start))
                     .find(|m| m.factor_of_safety.is_some());
-                out.morgenstern_price = Some(found.unwrap_or(MethodFactor {
+                let found = found.unwrap_or(MethodFactor {
                     factor_of_safety: None,
                     lambda: None,
                     iterations: 0,
-                }));
+                });
+                out.morgenstern_price = Some(found.into());
             }
-            Method::Bishop => out.bishop = Some(bishop(model)),
-            Method::Janbu => out.janbu = Some(janbu(model)),
-            Method::Ordinary => out.ordinary = Some(ordinary(model)),
+            Method::Bishop => out.bishop = Some(bishop(model).into()),
+            Method::Janbu => out.janbu = Some(janbu(model).into()),
+            Method::Ordinary => out.ordinary = Some(ordinary(model).into()),
         }
     }
     out
+}
+
+/// Each answered method's accuracy on `problem` (model §6.2): its F at two more slice counts,
+/// each model made as the answer's was by `prepare` (strength dropped where Spencer's state has
+/// negative effective stress, as the plan says); Morgenstern–Price starts from its own (F, λ).
+pub fn with_accuracy<P: Sliced>(
+    found: &mut MethodFactors,
+    problem: &P,
+    function: &InterSliceFunction,
+    prepare: &dyn Fn(&SliceModel) -> SliceModel,
+    budget: &Budget,
+) {
+    let estimate = |answer: &mut Option<MethodAnswer>, method: Method| {
+        let Some(answer) = answer.as_mut() else {
+            return;
+        };
+        let Some(f) = answer.factor.factor_of_safety else {
+            return;
+        };
+        let start = (f, answer.factor.lambda.unwrap_or(0.0));
+        let factor = |model: &SliceModel| -> Option<f64> {
+            let model = prepare(model);
+            match method {
+                Method::MorgensternPrice => morgenstern_price(&model, function, start),
+                Method::Bishop => bishop(&model),
+                Method::Janbu => janbu(&model),
+                Method::Ordinary => ordinary(&model),
+            }
+            .factor_of_safety
+        };
+        answer.accuracy = Some(accuracy_with(problem, f, &factor, budget));
+    };
+    estimate(&mut found.morgenstern_price, Method::MorgensternPrice);
+    estimate(&mut found.bishop, Method::Bishop);
+    estimate(&mut found.janbu, Method::Janbu);
+    estimate(&mut found.ordinary, Method::Ordinary);
 }

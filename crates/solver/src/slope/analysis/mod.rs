@@ -20,14 +20,14 @@ use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStat
 use crate::slope::search::{SearchGrid, SearchProblem};
 use crate::slope::section::search::CircleRegion;
 use crate::slope::section::Section;
-use crate::slope::slices::Sliced;
+use crate::slope::slices::{SliceModel, Sliced};
 use crate::slope::spencer::methods::InterSliceFunction;
 use crate::slope::spencer::{
     factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress, Seismic,
     SpencerSettings, SpencerSolution,
 };
 use crate::slope::SlopeError;
-pub use methods::{Method, MethodFactors};
+pub use methods::{Method, MethodAnswer, MethodFactors};
 pub use report::{Refinement, SearchReport, SlopeAnswer, SlopeOutcome, SlopeStage};
 pub use surface::{Analysed, PlacedCircle};
 
@@ -183,7 +183,29 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
             &solution.tension_dropped_slices,
             plan.negative_effective_stress,
         );
-        methods::side_by_side(&plan.methods, &plan.interslice_function, &model, &solution)
+        let mut found =
+            methods::side_by_side(&plan.methods, &plan.interslice_function, &model, &solution);
+        // At other slice counts, strength is dropped where Spencer's state there drops it.
+        let dropping = !solution.tension_dropped_slices.is_empty();
+        let prepare = |m: &SliceModel| match dropping {
+            true => {
+                let at = solve_spencer(m, &spencer);
+                with_strength_dropped(
+                    m,
+                    &at.tension_dropped_slices,
+                    plan.negative_effective_stress,
+                )
+            }
+            false => m.clone(),
+        };
+        methods::with_accuracy(
+            &mut found,
+            &problem,
+            &plan.interslice_function,
+            &prepare,
+            budget,
+        );
+        found
     });
     Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
         problem,
