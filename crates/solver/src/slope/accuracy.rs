@@ -95,28 +95,55 @@ pub fn accuracy_with<P: Sliced>(
     factor: &dyn Fn(&SliceModel) -> Option<f64>,
     budget: &Budget,
 ) -> Accuracy {
-    let n = problem.slice_count();
-    let coarse = 4 * n <= MAX_SLICES;
-    let counts = if coarse {
-        [2 * n, 4 * n]
-    } else {
-        [n / 4, n / 2]
-    };
-    let at = |count: usize| -> Option<f64> {
-        if budget.is_spent() {
-            return None;
+    estimate(&Recut::of(problem, budget), f, factor)
+}
+
+/// A surface re-cut at the two other counts an estimate needs, once for every F estimated on it.
+pub struct Recut {
+    /// The answered surface's slices.
+    slices: usize,
+    /// Whether the other counts are 2n and 4n (else n/4 and n/2).
+    coarse: bool,
+    /// The models at the other counts; `None` where a cut failed or the budget was spent.
+    models: Option<[SliceModel; 2]>,
+}
+
+impl Recut {
+    /// `problem` at two more counts a doubling apart (up when 4n ≤ [`MAX_SLICES`], else
+    /// down), within `budget`.
+    pub fn of<P: Sliced>(problem: &P, budget: &Budget) -> Self {
+        let n = problem.slice_count();
+        let coarse = 4 * n <= MAX_SLICES;
+        let counts = if coarse {
+            [2 * n, 4 * n]
+        } else {
+            [n / 4, n / 2]
+        };
+        let at = |count: usize| -> Option<SliceModel> {
+            if budget.is_spent() {
+                return None;
+            }
+            let cut = problem.with_slices(NonZeroUsize::new(count)?).ok()?;
+            Some(cut.model().into_owned())
+        };
+        let models = (|| Some([at(counts[0])?, at(counts[1])?]))();
+        Self {
+            slices: n,
+            coarse,
+            models,
         }
-        let slices = NonZeroUsize::new(count)?;
-        let finer: Result<P, SlopeError> = problem.with_slices(slices);
-        factor(&finer.ok()?.model())
-    };
-    let estimate = (|| {
-        let (a, b) = (at(counts[0])?, at(counts[1])?);
-        let levels = if coarse { [f, a, b] } else { [a, b, f] };
-        Some(tail(levels, coarse) / f.abs())
-    })();
+    }
+}
+
+/// The accuracy of `f` (the answered surface's F by `factor`) from `factor` on the re-cuts.
+pub fn estimate(recut: &Recut, f: f64, factor: &dyn Fn(&SliceModel) -> Option<f64>) -> Accuracy {
+    let estimate = recut.models.as_ref().and_then(|[first, second]| {
+        let (a, b) = (factor(first)?, factor(second)?);
+        let levels = if recut.coarse { [f, a, b] } else { [a, b, f] };
+        Some(tail(levels, recut.coarse) / f.abs())
+    });
     Accuracy {
-        slices: n,
+        slices: recut.slices,
         discretisation_error: estimate.filter(|e| e.is_finite()),
     }
 }

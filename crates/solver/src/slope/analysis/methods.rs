@@ -2,7 +2,7 @@
 //! a plan asks for and what each method found.
 
 use crate::budget::Budget;
-use crate::slope::accuracy::{accuracy_with, Accuracy};
+use crate::slope::accuracy::{estimate, Accuracy, Recut};
 use crate::slope::slices::{SliceModel, Sliced};
 use crate::slope::spencer::methods::{
     bishop, janbu, morgenstern_price, ordinary, InterSliceFunction, MethodFactor,
@@ -102,7 +102,9 @@ pub fn with_accuracy<P: Sliced>(
     prepare: &dyn Fn(&SliceModel) -> SliceModel,
     budget: &Budget,
 ) {
-    let estimate = |answer: &mut Option<MethodAnswer>, method: Method| {
+    // The surface re-cut once for every method.
+    let mut recut: Option<Recut> = None;
+    let mut assess = |answer: &mut Option<MethodAnswer>, method: Method| {
         let Some(answer) = answer.as_mut() else {
             return;
         };
@@ -120,10 +122,11 @@ pub fn with_accuracy<P: Sliced>(
             }
             .factor_of_safety
         };
-        answer.accuracy = Some(accuracy_with(problem, f, &factor, budget));
+        let recut = recut.get_or_insert_with(|| Recut::of(problem, budget));
+        answer.accuracy = Some(estimate(recut, f, &factor));
     };
-    estimate(&mut found.morgenstern_price, Method::MorgensternPrice);
-    estimate(&mut found.bishop, Method::Bishop);
-    estimate(&mut found.janbu, Method::Janbu);
-    estimate(&mut found.ordinary, Method::Ordinary);
+    assess(&mut found.morgenstern_price, Method::MorgensternPrice);
+    assess(&mut found.bishop, Method::Bishop);
+    assess(&mut found.janbu, Method::Janbu);
+    assess(&mut found.ordinary, Method::Ordinary);
 }
