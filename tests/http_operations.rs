@@ -104,6 +104,41 @@ async fn cors_only_when_configured() {
         response.headers()["access-control-allow-origin"],
         "https://dash.example"
     );
+    // Issue 39: the dashboard can read Retry-After and the request id.
+    let exposed = response.headers()["access-control-expose-headers"]
+        .to_str()
+        .unwrap()
+        .to_ascii_lowercase();
+    assert!(
+        exposed.contains("retry-after") && exposed.contains("x-request-id"),
+        "{exposed}"
+    );
+    // A preflight allows sending its own request id, and is cached for 10 minutes.
+    let preflight = open
+        .client
+        .request(
+            reqwest::Method::OPTIONS,
+            format!("{}/slope/spencer", open.base),
+        )
+        .header("origin", "https://dash.example")
+        .header("access-control-request-method", "POST")
+        .header(
+            "access-control-request-headers",
+            "content-type, x-request-id",
+        )
+        .send()
+        .await
+        .unwrap();
+    assert!(preflight.status().is_success(), "{}", preflight.status());
+    let allowed = preflight.headers()["access-control-allow-headers"]
+        .to_str()
+        .unwrap()
+        .to_ascii_lowercase();
+    assert!(
+        allowed.contains("x-request-id") && allowed.contains("content-type"),
+        "{allowed}"
+    );
+    assert_eq!(preflight.headers()["access-control-max-age"], "600");
 }
 
 #[tokio::test]
@@ -601,4 +636,91 @@ async fn compressed_and_oversized_bodies_are_refused_before_they_are_read() {
     .await
     .unwrap();
     assert_eq!(first_line, "HTTP/1.1 413");
+}
+
+#[tokio::test]
+async fn answers_are_compressed_as_the_client_accepts() {
+    // Issue 39: a 3.26 MB JSON answer would be 0.84 MB gzipped. Answers of 1 KiB or more are
+    // compressed by Accept-Encoding (gzip, br, zstd), smaller ones and clients that accept none
+    // are not; the gzipped answer is the same JSON.
+    use std::io::{Read, Write};
+    let server = Server::start().await;
+    let addr = server.base.trim_start_matches("http://").to_owned();
+    let body = spencer_example().to_string();
+    let ask = |encoding: &'static str, body: String| {
+        let addr = addr.clone();
+        tokio::task::spawn_blocking(move || {
+            let mut socket = std::net::TcpStream::connect(addr).unwrap();
+            write!(
+                socket,
+                "POST /slope/spencer HTTP/1.1\r\nHost: x\r\ncontent-type: application/json\r\n\
+                 accept-encoding: {encoding}\r\nconnection: close\r\ncontent-length: {}\r\n\r\n{body}",
+                body.len()
+            )
+            .unwrap();
+            let mut answer = Vec::new();
+            socket.read_to_end(&mut answer).unwrap();
+            let split = answer.windows(4).position(|w| w == b"\r\n\r\n").unwrap();
+            let head = String::from_utf8_lossy(&answer[..split]).to_ascii_lowercase();
+            (head, answer[split + 4..].to_vec())
+        })
+    };
+    let (plain_head, plain) = ask("identity", body.clone()).await.unwrap();
+    assert!(!plain_head.contains("content-encoding"), "{plain_head}");
+    let plain: serde_json::Value = serde_json::from_slice(&dechunk(&plain_head, &plain)).unwrap();
+    assert!(plain.to_string().len() > 1024);
+    for encoding in ["gzip", "br", "zstd"] {
+        let (head, compressed) = ask(encoding, body.clone()).await.unwrap();
+        assert!(
+            head.contains(&format!("content-encoding: {encoding}")),
+            "{encoding}: {head}"
+        );
+        let compressed = dechunk(&head, &compressed);
+        assert!(compressed.len() < plain.to_string().len() / 2, "{encoding}");
+        if encoding == "gzip" {
+            let mut json = Vec::new();
+            flate2::read::GzDecoder::new(&compressed[..])
+                .read_to_end(&mut json)
+                .unwrap();
+            let json: serde_json::Value = serde_json::from_slice(&json).unwrap();
+            // The same answer but for its wall times.
+            assert_eq!(json["factor_of_safety"], plain["factor_of_safety"]);
+            assert_eq!(json["slices"], plain["slices"]);
+        }
+    }
+    // A small answer (/healthz) is left as it is.
+    let health = tokio::task::spawn_blocking({
+        let addr = addr.clone();
+        move || {
+            let mut socket = std::net::TcpStream::connect(addr).unwrap();
+            socket
+                .write_all(b"GET /healthz HTTP/1.1\r\nHost: x\r\naccept-encoding: gzip\r\nconnection: close\r\n\r\n")
+                .unwrap();
+            let mut answer = String::new();
+            socket.read_to_string(&mut answer).unwrap();
+            answer.to_ascii_lowercase()
+        }
+    })
+    .await
+    .unwrap();
+    assert!(health.starts_with("http/1.1 200") && !health.contains("content-encoding"));
+}
+
+/// A body as sent: chunked transfer coding removed when the head says so.
+fn dechunk(head: &str, body: &[u8]) -> Vec<u8> {
+    if !head.contains("transfer-encoding: chunked") {
+        return body.to_vec();
+    }
+    let mut out = Vec::new();
+    let mut rest = body;
+    loop {
+        let line = rest.windows(2).position(|w| w == b"\r\n").unwrap();
+        let size =
+            usize::from_str_radix(std::str::from_utf8(&rest[..line]).unwrap().trim(), 16).unwrap();
+        if size == 0 {
+            return out;
+        }
+        out.extend_from_slice(&rest[line + 2..line + 2 + size]);
+        rest = &rest[line + 2 + size + 2..];
+    }
 }
