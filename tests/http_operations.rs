@@ -714,9 +714,15 @@ fn dechunk(head: &str, body: &[u8]) -> Vec<u8> {
     let mut out = Vec::new();
     let mut rest = body;
     loop {
-        let line = rest.windows(2).position(|w| w == b"\r\n").unwrap();
-        let size =
-            usize::from_str_radix(std::str::from_utf8(&rest[..line]).unwrap().trim(), 16).unwrap();
+        let line = rest
+            .windows(2)
+            .position(|w| w == b"\r\n")
+            .expect("a chunk size line");
+        let size = usize::from_str_radix(
+            std::str::from_utf8(&rest[..line]).expect("ASCII").trim(),
+            16,
+        )
+        .expect("a hexadecimal chunk size");
         if size == 0 {
             return out;
         }
