@@ -5,11 +5,8 @@
 //! panic, a lost worker) are logged once here and answered with a bare 500 that says nothing of
 //! the internals.
 
-use axum::extract::rejection::JsonRejection;
-use axum::extract::FromRequest;
 use axum::http::{header, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
-use serde::de::DeserializeOwned;
 use serde::Serialize;
 use utoipa::ToSchema;
 
@@ -35,6 +32,50 @@ pub struct Problem {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[schema(examples("slices"))]
     pub field: Option<String>,
+    /// What kind of problem, for programs (the `detail` is for people).
+    pub code: ProblemCode,
+    /// The request's id (`x-request-id`), to find it in the service's log.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(examples("18c1f0a2b3d-42"))]
+    pub instance: Option<String>,
+}
+
+/// The kind of a problem (SPEC §6.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ProblemCode {
+    /// The body is not JSON.
+    InvalidJson,
+    /// An object has a key twice.
+    DuplicateKey,
+    /// A field the request type does not have.
+    UnknownField,
+    /// A required field is missing.
+    MissingField,
+    /// A value outside its stated range.
+    OutOfRange,
+    /// A value of the wrong type or not among the allowed ones.
+    InvalidValue,
+    /// Values each in range that together state no scene the service can build (a load on a
+    /// block that does not exist, a circle that misses the slope, a geometry that does not
+    /// close) or that the service will not take on (too much memory).
+    Unstateable,
+    /// The analysis asks for more work than one solve may do.
+    OverTimeLimit,
+    /// The service is busy: retry after `Retry-After`.
+    Busy,
+    /// The body is larger than the limit.
+    TooLarge,
+    /// The body is not `application/json` (or is compressed).
+    UnsupportedMediaType,
+    /// A bearer token is required.
+    Unauthorized,
+    /// No such route.
+    NotFound,
+    /// The route does not take this method.
+    MethodNotAllowed,
+    /// A fault of the server.
+    Internal,
 }
 
 /// The error answers every solving endpoint documents (problem+json bodies).
@@ -162,8 +203,38 @@ impl ApiError {
             r#type: "about:blank".to_owned(),
             title: status.canonical_reason().unwrap_or("Error").to_owned(),
             status: status.as_u16(),
+            code: self.code(&detail),
             detail,
             field,
+            instance: None,
+        }
+    }
+
+    /// The problem's code; `detail` as answered.
+    fn code(&self, detail: &str) -> ProblemCode {
+        match self {
+            Self::BadRequest { status, .. } => match *status {
+                StatusCode::BAD_REQUEST => ProblemCode::InvalidJson,
+                StatusCode::PAYLOAD_TOO_LARGE => ProblemCode::TooLarge,
+                StatusCode::UNSUPPORTED_MEDIA_TYPE => ProblemCode::UnsupportedMediaType,
+                StatusCode::NOT_FOUND => ProblemCode::NotFound,
+                StatusCode::METHOD_NOT_ALLOWED => ProblemCode::MethodNotAllowed,
+                _ if detail.contains(crate::json::DUPLICATE_KEY) => ProblemCode::DuplicateKey,
+                _ if detail.contains("unknown field") => ProblemCode::UnknownField,
+                _ if detail.contains("missing field") => ProblemCode::MissingField,
+                _ => ProblemCode::InvalidValue,
+            },
+            // The validation helpers state a range as "… is out of range: allowed is …".
+            Self::Invalid { detail, .. } if detail.contains("out of range") => {
+                ProblemCode::OutOfRange
+            }
+            Self::Invalid { .. } => ProblemCode::Unstateable,
+            Self::Unauthorized => ProblemCode::Unauthorized,
+            Self::Overloaded { .. }
+            | Self::TimedOut { .. }
+            | Self::OverTimeLimit { busy: Some(_), .. } => ProblemCode::Busy,
+            Self::OverTimeLimit { busy: None, .. } => ProblemCode::OverTimeLimit,
+            Self::Internal(_) => ProblemCode::Internal,
         }
     }
 }
@@ -197,209 +268,5 @@ impl IntoResponse for ApiError {
             headers.insert(header::WWW_AUTHENTICATE, HeaderValue::from_static("Bearer"));
         }
         response
-    }
-}
-
-impl From<JsonRejection> for ApiError {
-    fn from(rejection: JsonRejection) -> Self {
-        let status = match &rejection {
-            // Wrong types, missing or unknown fields: the body is JSON but not this request.
-            JsonRejection::JsonDataError(_) => StatusCode::UNPROCESSABLE_ENTITY,
-            JsonRejection::JsonSyntaxError(_) => StatusCode::BAD_REQUEST,
-            JsonRejection::MissingJsonContentType(_) => StatusCode::UNSUPPORTED_MEDIA_TYPE,
-            other => other.status(),
-        };
-        let detail = bounded(in_plain_words(&rejection.body_text()));
-        let field = (status == StatusCode::UNPROCESSABLE_ENTITY)
-            .then(|| data_error_field(&detail))
-            .flatten();
-        Self::BadRequest {
-            status,
-            detail,
-            field,
-        }
-    }
-}
-
-/// The field path serde reports in a data error ("…target type: slope.foo: unknown field…").
-/// A missing field, or a key given twice, is named by its full path ("…target type: slope:
-/// missing field `height`…").
-/// Paths a geometry object reports inside itself follow its own ("geometry: blocks[1].corners:
-/// …"): they are joined.
-fn data_error_field(detail: &str) -> Option<String> {
-    let rest = detail.split_once("target type: ")?.1;
-    let (segments, message) = path_segments(rest);
-    let path = (!segments.is_empty()).then(|| segments.join("."));
-    let missing = message
-        .strip_prefix("missing field `")
-        .or_else(|| message.strip_prefix(crate::json::DUPLICATE_KEY))
-        .and_then(|name| name.split_once('`'))
-        .map(|(name, _)| name);
-    match (path, missing) {
-        (Some(path), Some(name)) => Some(format!("{path}.{name}")),
-        (None, Some(name)) => Some(name.to_owned()),
-        (Some(path), None) => Some(path),
-        (None, None) => None,
-    }
-}
-
-/// The leading "path: " segments of serde's message (no spaces in a path), and the rest.
-fn path_segments(message: &str) -> (Vec<&str>, &str) {
-    let mut segments = Vec::new();
-    let mut rest = message;
-    while let Some((head, tail)) = rest.split_once(": ") {
-        if head.is_empty() || head.contains(' ') || head.contains('`') {
-            break;
-        }
-        segments.push(head);
-        rest = tail;
-    }
-    (segments, rest)
-}
-
-/// The detail with nested paths joined: "…target type: geometry.blocks[1].corners: …".
-fn joined_paths(detail: String) -> String {
-    let Some((head, rest)) = detail.split_once("target type: ") else {
-        return detail;
-    };
-    let (segments, message) = path_segments(rest);
-    if segments.len() < 2 {
-        return detail;
-    }
-    format!("{head}target type: {}: {message}", segments.join("."))
-}
-
-/// Longest `detail` echoed from a client's input, in characters.
-const MAX_DETAIL: usize = 600;
-
-/// The detail cut to [`MAX_DETAIL`] characters (it may quote a client's input, which can be
-/// megabytes long).
-fn bounded(detail: String) -> String {
-    match detail.char_indices().nth(MAX_DETAIL) {
-        Some((end, _)) => format!("{}… (cut)", &detail[..end]),
-        None => detail,
-    }
-}
-
-/// serde's words for the expected JSON, with Rust's type names replaced by JSON's.
-fn in_plain_words(detail: &str) -> String {
-    let mut text = detail
-        .replace("expected f64", "expected a number")
-        .replace("expected usize", "expected a non-negative integer")
-        .replace(
-            "expected variant identifier",
-            "expected an object with `kind`",
-        );
-    // "expected struct FooDto", "expected internally tagged enum FooDto": an object.
-    for kind in [
-        "expected internally tagged enum ",
-        "expected struct ",
-        "expected enum ",
-    ] {
-        while let Some(start) = text.find(kind) {
-            let name_start = start + kind.len();
-            let name_end = text[name_start..]
-                .find(|c: char| !c.is_alphanumeric() && c != '_')
-                .map_or(text.len(), |i| name_start + i);
-            text.replace_range(start..name_end, "expected an object");
-        }
-    }
-    text
-}
-
-/// `axum::Json` whose rejections are problem+json, and which takes an object only where the
-/// request type has one: serde reads a struct from a JSON array too (`"interface_limits":
-/// [null, null]` as q_min = null, tension allowed), which changes the physics. The body is read
-/// as JSON, deserialised with the path of any error, and compared with the request as it
-/// serialises back: an array where the request has an object is 422 naming it.
-#[derive(Debug)]
-pub struct ApiJson<T>(pub T);
-
-impl<T, S> FromRequest<S> for ApiJson<T>
-where
-    T: DeserializeOwned + Serialize,
-    S: Send + Sync,
-{
-    type Rejection = ApiError;
-
-    async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
-        // Read with every object's keys checked: a key given twice is 422 naming it.
-        let axum::Json(crate::json::UniqueKeys(value)) =
-            axum::Json::<crate::json::UniqueKeys>::from_request(request, state).await?;
-        if !value.is_object() {
-            return Err(ApiError::BadRequest {
-                status: StatusCode::UNPROCESSABLE_ENTITY,
-                detail: format!("body: expected a JSON object, found {}", json_kind(&value)),
-                field: Some("body".to_owned()),
-            });
-        }
-        let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
-            let detail = bounded(joined_paths(in_plain_words(&format!(
-                "Failed to deserialize the JSON body into the target type: {e}"
-            ))));
-            let field = data_error_field(&detail);
-            ApiError::BadRequest {
-                status: StatusCode::UNPROCESSABLE_ENTITY,
-                detail,
-                field,
-            }
-        })?;
-        if let Ok(back) = serde_json::to_value(&typed) {
-            // The body itself is an object (checked above): the path is never empty.
-            if let Some(field) = array_for_object(&value, &back, String::new()) {
-                return Err(ApiError::BadRequest {
-                    status: StatusCode::UNPROCESSABLE_ENTITY,
-                    detail: format!("{field}: expected an object, found an array"),
-                    field: Some(field),
-                });
-            }
-        }
-        Ok(Self(typed))
-    }
-}
-
-/// A JSON value's kind in words ("null", "an array", …), for messages.
-pub fn json_kind(value: &serde_json::Value) -> &'static str {
-    use serde_json::Value;
-    match value {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
-
-/// The path of the first array in `input` where `typed` (the request serialised back) has an
-/// object.
-fn array_for_object(
-    input: &serde_json::Value,
-    typed: &serde_json::Value,
-    path: String,
-) -> Option<String> {
-    use serde_json::Value;
-    match (input, typed) {
-        (Value::Array(_), Value::Object(_)) => Some(path),
-        (Value::Object(given), Value::Object(back)) => given.iter().find_map(|(key, v)| {
-            let inner = if path.is_empty() {
-                key.clone()
-            } else {
-                format!("{path}.{key}")
-            };
-            back.get(key).and_then(|w| array_for_object(v, w, inner))
-        }),
-        (Value::Array(given), Value::Array(back)) => given
-            .iter()
-            .zip(back)
-            .enumerate()
-            .find_map(|(i, (v, w))| array_for_object(v, w, format!("{path}[{i}]"))),
-        _ => None,
-    }
-}
-
-impl<T: Serialize> IntoResponse for ApiJson<T> {
-    fn into_response(self) -> Response {
-        axum::Json(self.0).into_response()
     }
 }

@@ -66,6 +66,7 @@ async fn at_connection_cap() -> impl IntoResponse {
         "title": "Service Unavailable",
         "status": 503,
         "detail": "the service is at its connection cap: retry, or reuse a connection",
+        "code": "busy",
     });
     (
         StatusCode::SERVICE_UNAVAILABLE,

@@ -20,6 +20,7 @@ pub mod auth;
 pub mod body;
 pub mod config;
 pub mod error;
+pub mod extract;
 pub mod fields;
 pub mod headers;
 pub mod health;
@@ -165,6 +166,8 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         )
         .layer(axum::middleware::from_fn(headers::security_headers))
         .layer(PropagateRequestIdLayer::new(request_id.clone()))
+        // Outside the propagation: it reads the id the response carries.
+        .layer(axum::middleware::from_fn(headers::problem_instance))
         .layer(SetRequestIdLayer::new(request_id, SequentialRequestId::default()))
         .layer(axum::middleware::from_fn(headers::bound_request_id));
     // gzip, Brotli or zstd as the client accepts, for answers of 1 KiB or more (a 3.26 MB search

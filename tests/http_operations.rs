@@ -207,6 +207,8 @@ async fn overload_is_503_with_retry_after_not_a_queue() {
         rejected.headers()["content-type"],
         "application/problem+json"
     );
+    let problem: serde_json::Value = rejected.json().await.unwrap();
+    assert_eq!(problem["code"], "busy", "{problem}");
 }
 
 #[tokio::test]
@@ -227,6 +229,7 @@ async fn a_search_over_its_time_limit_is_422() {
         "{body}"
     );
     assert!(body["detail"].as_str().unwrap().contains("did not finish"));
+    assert_eq!(body["code"], "over_time_limit", "{body}");
 }
 
 #[tokio::test]

@@ -9,7 +9,7 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 use super::assembly::{PolygonDto, RingJointsDto};
-use crate::error::json_kind;
+use crate::extract::json_kind;
 
 /// Shape of the voussoirs of a circular arch.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]

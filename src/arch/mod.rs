@@ -27,7 +27,8 @@ use thrustline_solver::arch::refine::refine_critical;
 use thrustline_solver::arch::{ArchError, ArchProblem};
 use thrustline_solver::budget::Budget;
 
-use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::error::{ApiError, ProblemResponses};
+use crate::extract::ApiJson;
 use crate::pool::Cost;
 use crate::stop::Work;
 use crate::svg::Svg;

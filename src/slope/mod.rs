@@ -23,7 +23,8 @@ use axum::extract::State;
 use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
 use thrustline_solver::slope::Sliced;
 
-use crate::error::{ApiError, ApiJson, ProblemResponses};
+use crate::error::{ApiError, ProblemResponses};
+use crate::extract::ApiJson;
 use crate::pool::Cost;
 use crate::stop::Work;
 use crate::svg::Svg;
