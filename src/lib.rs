@@ -36,6 +36,7 @@ pub mod stop;
 pub mod svg;
 pub mod table;
 pub mod validation;
+pub mod warning;
 
 use std::future::Future;
 use std::time::Duration;

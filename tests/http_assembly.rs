@@ -205,6 +205,15 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
     let (status, _, associative) = server.post("/arch/live-load", &wall).await;
     assert_eq!(status, 200, "{associative}");
     assert_eq!(associative["friction_may_overestimate"], true);
+    // The same as a warning (SPEC §6.1), with the sliding interfaces the answer lists.
+    let warning = associative["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "friction_may_overestimate")
+        .unwrap_or_else(|| panic!("{}", associative["warnings"]))
+        .clone();
+    assert_eq!(warning["interfaces"], associative["sliding_interfaces"]);
     let assoc = associative["load_factor"].as_f64().unwrap();
     let mut body = wall.clone();
     body["friction"] = json!("non_associative");
@@ -218,6 +227,9 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
         na
     );
     assert_eq!(answer["friction_may_overestimate"], false);
+    assert!(!answer["warnings"]
+        .to_string()
+        .contains("friction_may_overestimate"));
     assert!(answer["non_associative"]["mixing_from_step"].is_null());
     // Leaves 0.3 × 1 under a 0.6 × 0.5 cap, μ = 0.9: the paper's relaxation oscillates for
     // its 50 steps; the mixing settles it on the state worked out by hand in the solver's

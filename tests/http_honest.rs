@@ -23,7 +23,8 @@ async fn a_root_held_up_by_tension_is_unphysical_not_converged() {
     assert_eq!(answer["status"], "unphysical");
     assert_eq!(answer["converged"], false);
     assert!(answer["factor_of_safety"].is_null());
-    assert!(answer["warnings"][0]
+    assert_eq!(answer["warnings"][0]["code"], "unphysical");
+    assert!(answer["warnings"][0]["message"]
         .as_str()
         .unwrap()
         .contains("not physical"));
@@ -121,4 +122,46 @@ async fn given_search_bounds_are_hard() {
     assert!(answer["warnings"]
         .to_string()
         .contains("given search bounds"));
+}
+
+#[tokio::test]
+async fn warnings_are_data_with_the_slices_they_speak_of() {
+    // SPEC §6.1: each warning has a code, a message, and its slices as an array (from 1), the
+    // same as the answer's own slices show: here the bases whose effective normal force is
+    // negative (`tension`), each listed in the message too.
+    let server = Server::start().await;
+    let body = json!({"slope": {"height": 30.48, "length": 1e-9},
+        "circle": {"x": -62.509252886075785, "y": 62.071731840088276}, "slices": 50,
+        "soil": {"unit_weight": 10, "cohesion": 18.58, "friction_angle_deg": 40,
+                 "pore_pressure_ratio": 0.5},
+        "negative_effective_stress": "drop_friction", "include": ["slices"]});
+    let answer = spencer(&server, body).await;
+    let warnings = answer["warnings"].as_array().unwrap();
+    let tension = warnings
+        .iter()
+        .find(|w| w["code"] == "tension")
+        .unwrap_or_else(|| panic!("{warnings:?}"));
+    let listed: Vec<u64> = tension["slices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_u64().unwrap())
+        .collect();
+    let negative: Vec<u64> = answer["slices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["effective_normal_force"].as_f64().unwrap() < 0.0)
+        .map(|s| s["slice"].as_u64().unwrap())
+        .collect();
+    assert!(!negative.is_empty());
+    assert_eq!(listed, negative);
+    let message = tension["message"].as_str().unwrap();
+    assert!(
+        message.contains(&format!("slices {}", negative[0])),
+        "{message}"
+    );
+    for w in warnings {
+        assert!(w["code"].is_string() && w["message"].is_string(), "{w}");
+    }
 }

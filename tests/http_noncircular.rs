@@ -324,9 +324,11 @@ async fn a_time_budget_bounds_the_polyline_search() {
     let (status, _, hurried) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 200, "{hurried}");
     let warned = hurried["warnings"].as_array().unwrap().iter().any(|w| {
-        w.as_str()
-            .unwrap()
-            .contains("a budget ended the non-circular search")
+        w["code"] == "budget_exhausted"
+            && w["message"]
+                .as_str()
+                .unwrap()
+                .contains("a budget ended the non-circular search")
     });
     assert!(warned, "{}", hurried["warnings"]);
     let f = hurried["factor_of_safety"].as_f64().unwrap();

@@ -16,6 +16,7 @@ use super::mechanism::{
 };
 use super::request::{ArchDetailDto, FormulationDto};
 use super::rolling::RollingOutDto;
+use crate::warning::{one_based, Warning, WarningCode};
 
 /// The resultant at one interface.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -170,10 +171,10 @@ pub struct ArchOutcomeDto {
     pub reactions: Vec<ReactionDto>,
     /// How the solve ended.
     pub solver: SolverDto,
-    /// What to look at before trusting the answer, in words; `rings_locked:` — rings that
-    /// cannot slip on each other lock their staggered joints (an unbounded answer for that
-    /// reason).
-    pub warnings: Vec<String>,
+    /// What to look at before trusting the answer: `rings_locked` (rings that cannot slip on
+    /// each other lock their staggered joints: unbounded, or far above one ring of the whole
+    /// thickness), `friction_may_overestimate` (with the sliding interfaces), `not_settled`.
+    pub warnings: Vec<Warning>,
     /// The details `include` left out (returned empty, `mechanism` null); empty by default.
     pub omitted: Vec<ArchDetailDto>,
 }
@@ -298,27 +299,56 @@ fn passive(solved: &SolvedArch) -> Option<Vec<PassiveOutDto>> {
 }
 
 /// What to look at before trusting the answer: `rings_locked` where locked rings answer
-/// unbounded, or far above the bonded single ring.
-fn warnings(solved: &SolvedArch) -> Vec<String> {
+/// unbounded, or far above the bonded single ring; `friction_may_overestimate` and
+/// `not_settled` from the friction check.
+fn warnings(solved: &SolvedArch) -> Vec<Warning> {
     let mut warnings = Vec::new();
+    let advice = "the mortar between real rings shears — give ring_friction_coefficient (and \
+                  ring_interface_limits) for the ring joints";
     if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
-        warnings.push(
-            "rings_locked: the rings cannot slip on each other (no ring_friction_coefficient), \
-             so their staggered joints lock and no finite load forms a mechanism; the mortar \
-             between real rings shears — give ring_friction_coefficient (and \
-             ring_interface_limits) for the ring joints"
-                .to_owned(),
-        );
+        warnings.push(Warning::new(
+            WarningCode::RingsLocked,
+            format!(
+                "the rings cannot slip on each other (no ring_friction_coefficient), so their \
+                 staggered joints lock and no finite load forms a mechanism; {advice}"
+            ),
+        ));
     }
     let locked = solved.bonded_load_factor.zip(solved.solution.load_factor);
     if let Some((bonded, lambda)) = locked.filter(|(b, l)| *l > FAR_ABOVE_BONDED * b) {
-        warnings.push(format!(
-            "rings_locked: λ = {lambda:.6} is {:.2} times the {bonded:.6} of one ring of the \
-             whole thickness: the rings cannot slip on each other (no \
-             ring_friction_coefficient), so their staggered joints lock and hinges cannot \
-             cross them; the mortar between real rings shears — give \
-             ring_friction_coefficient (and ring_interface_limits) for the ring joints",
-            lambda / bonded
+        warnings.push(Warning::new(
+            WarningCode::RingsLocked,
+            format!(
+                "λ = {lambda:.6} is {:.2} times the {bonded:.6} of one ring of the whole \
+                 thickness: the rings cannot slip on each other (no \
+                 ring_friction_coefficient), so their staggered joints lock and hinges cannot \
+                 cross them; {advice}",
+                lambda / bonded
+            ),
+        ));
+    }
+    let friction = solved.friction.as_ref();
+    if !solved.input.non_associative && friction.is_some_and(|f| f.associative_may_overestimate()) {
+        let sliding = solved
+            .solution
+            .mechanism
+            .as_ref()
+            .map(|m| m.sliding.clone());
+        warnings.push(
+            Warning::new(
+                WarningCode::FrictionMayOverestimate,
+                "the mechanism slides, and without dilatancy the joints may not hold the \
+                 associative answer's state: λ may be over-estimated (friction: \
+                 non_associative answers without that assumption)",
+            )
+            .interfaces(one_based(&sliding.unwrap_or_default())),
+        );
+    }
+    if solved.status == ArchStatusDto::NotSettled {
+        warnings.push(Warning::new(
+            WarningCode::NotSettled,
+            "the non-associative friction iteration did not settle: no λ it can vouch for \
+             (its steps are in non_associative)",
         ));
     }
     warnings

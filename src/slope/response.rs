@@ -10,6 +10,7 @@ use super::options::AccuracyOutDto;
 use super::outputs::{CurvesDto, GridDto, SearchOutDto};
 use super::report::SolvedSlope;
 use super::warnings::warnings;
+use crate::warning::Warning;
 
 use utoipa::ToSchema;
 
@@ -208,9 +209,10 @@ pub struct SpencerResponse {
     /// Largest scaled residual of the two equations (force/ΣW, moment/(ΣW·R)).
     #[schema(required = true)]
     pub residual: Option<f64>,
-    /// Things the engineer should look at: small m_α, tension at the base, a thrust line
-    /// outside the mass, no solution.
-    pub warnings: Vec<String>,
+    /// Things the engineer should look at, each with a `code`, a `message` and the slices or
+    /// boundaries it speaks of: small m_α, tension at the base, a thrust line outside the mass,
+    /// no solution, a search's doubts.
+    pub warnings: Vec<Warning>,
     /// Wall time of the solve in milliseconds.
     pub solve_time_ms: f64,
     /// With `search`: how the search went.

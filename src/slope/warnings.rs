@@ -4,60 +4,63 @@ use thrustline_solver::slope::SpencerStatus;
 
 use super::report::SolvedSlope;
 use crate::limits::MAX_SLICES;
+use crate::warning::{listed, one_based, Warning, WarningCode as Code};
 use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 
-/// Every warning that applies to `solved`, in words.
-pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
+/// Every warning that applies to `solved`.
+pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
     let solution = &solved.solution;
     let mut warnings = Vec::new();
     match solution.status {
         SpencerStatus::Converged => {}
-        SpencerStatus::NoSolution => warnings.push(
+        SpencerStatus::NoSolution => warnings.push(Warning::new(
+            Code::NoSolution,
             "Spencer's equations have no root for this surface (none with every m_α positive, \
              and none past the poles of m_α with the slices there pressed onto their bases); no \
-             factor of safety is reported"
-                .to_owned(),
-        ),
-        SpencerStatus::MomentOnly => warnings.push(
+             factor of safety is reported",
+        )),
+        SpencerStatus::MomentOnly => warnings.push(Warning::new(
+            Code::MomentOnly,
             "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
              moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
-             slice forces are Bishop's (θ = 0)"
-                .to_owned(),
-        ),
-        SpencerStatus::Unphysical => warnings.push(format!(
-            "the equilibrium equations have a root F = {:e} that is not physical (F outside \
+             slice forces are Bishop's (θ = 0)",
+        )),
+        SpencerStatus::Unphysical => warnings.push(Warning::new(
+            Code::Unphysical,
+            format!(
+                "the equilibrium equations have a root F = {:e} that is not physical (F outside \
              1e-6…1e6, or the mass held up by tension at the base: Σ N'·tan φ' < 0); no factor \
              of safety is reported — negative_effective_stress: drop_friction solves such \
              surfaces without tension",
-            solution.unphysical_root.unwrap_or(f64::NAN)
+                solution.unphysical_root.unwrap_or(f64::NAN)
+            ),
         )),
     }
-    let one_based = |list: &[usize]| {
-        list.iter()
-            .map(|i| (i + 1).to_string())
-            .collect::<Vec<_>>()
-            .join(", ")
+    let at = |indices: &[usize], code: Code, words: &dyn Fn(&str) -> String| {
+        let slices = one_based(indices);
+        (!slices.is_empty()).then(|| Warning::new(code, words(&listed(&slices))).slices(slices))
     };
-    if !solution.small_m_alpha_slices.is_empty() {
-        warnings.push(format!(
-            "m_alpha < {} at slices {}: base forces there are sensitive to F",
-            thrustline_solver::slope::spencer::SMALL_DENOMINATOR,
-            one_based(&solution.small_m_alpha_slices)
-        ));
-    }
-    if !solution.tension_dropped_slices.is_empty() {
-        warnings.push(format!(
-            "bases in tension at slices {}: their strength in tension was dropped \
-             (negative_effective_stress) and the equations solved again",
-            one_based(&solution.tension_dropped_slices)
-        ));
-    }
-    if !solution.negative_effective_normal_slices.is_empty() {
-        warnings.push(format!(
-            "negative effective normal force (tension) at slices {}",
-            one_based(&solution.negative_effective_normal_slices)
-        ));
-    }
+    let small = thrustline_solver::slope::spencer::SMALL_DENOMINATOR;
+    warnings.extend(at(
+        &solution.small_m_alpha_slices,
+        Code::SmallMAlpha,
+        &|list| format!("m_alpha < {small} at slices {list}: base forces there are sensitive to F"),
+    ));
+    warnings.extend(at(
+        &solution.tension_dropped_slices,
+        Code::TensionDropped,
+        &|list| {
+            format!(
+                "bases in tension at slices {list}: their strength in tension was dropped \
+             (negative_effective_stress) and the equations solved again"
+            )
+        },
+    ));
+    warnings.extend(at(
+        &solution.negative_effective_normal_slices,
+        Code::Tension,
+        &|list| format!("negative effective normal force (tension) at slices {list}"),
+    ));
     let outside: Vec<usize> = solution
         .thrust_line
         .iter()
@@ -65,19 +68,19 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
         .map(|t| t.boundary)
         .collect();
     if !outside.is_empty() {
-        warnings.push(format!(
+        let message = format!(
             "the line of thrust leaves the sliding mass at boundaries {}",
-            outside
-                .iter()
-                .map(ToString::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ));
+            listed(&outside)
+        );
+        warnings.push(Warning::new(Code::ThrustLineOutside, message).boundaries(outside));
     }
     if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
-        warnings.push(format!(
-            "slice_tolerance {} not reached before {MAX_SLICES} slices",
-            refinement.tolerance
+        warnings.push(Warning::new(
+            Code::SliceToleranceNotReached,
+            format!(
+                "slice_tolerance {} not reached before {MAX_SLICES} slices",
+                refinement.tolerance
+            ),
         ));
     }
     if let Some(search) = &solved.search {
@@ -91,7 +94,7 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<String> {
 
 /// A surface that reaches beyond a section's ground as stated: the ground is taken level
 /// there, which the section did not say.
-fn beyond_the_ground(solved: &SolvedSlope) -> Option<String> {
+fn beyond_the_ground(solved: &SolvedSlope) -> Option<Warning> {
     let Analysed::Section(problem) = &solved.problem;
     let section = problem.section();
     if section.is_level_beyond_ends() {
@@ -108,10 +111,13 @@ fn beyond_the_ground(solved: &SolvedSlope) -> Option<String> {
         });
     let rounding = 1e-9 * (last - first).abs().max(1.0);
     (low < first - rounding || high > last + rounding).then(|| {
-        format!(
-            "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as stated \
-             (x = {first} … {last}): the ground is taken as level beyond its ends — extend \
-             section.ground if it is not"
+        Warning::new(
+            Code::BeyondGround,
+            format!(
+                "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as \
+                 stated (x = {first} … {last}): the ground is taken as level beyond its ends — \
+                 extend section.ground if it is not"
+            ),
         )
     })
 }
@@ -121,46 +127,48 @@ fn beyond_the_ground(solved: &SolvedSlope) -> Option<String> {
 fn search_warnings(
     search: &SearchReport,
     factor_of_safety: Option<f64>,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<Warning>,
 ) {
     if search.is_on_edge && search.hard {
-        warnings.push(
+        warnings.push(Warning::new(
+            Code::MinimumOnBound,
             "the critical centre lies on the edge of the given search bounds: F is the \
-                     least inside them, the true minimum may lie outside"
-                .to_owned(),
-        );
+                     least inside them, the true minimum may lie outside",
+        ));
     } else if search.is_on_edge {
-        warnings.push(
+        warnings.push(Warning::new(
+            Code::MinimumOnBound,
             "the critical centre lies on the edge of the search region even after moving \
-                     the grid: the true minimum may lie outside it"
-                .to_owned(),
-        );
+                     the grid: the true minimum may lie outside it",
+        ));
     }
     if search.timed_out {
-        warnings.push(
+        warnings.push(Warning::new(
+            Code::BudgetExhausted,
             "a budget ended the non-circular search (time_budget_ms, max_evaluations or the \
                  time limit): the surface is the best found so far, never above the critical \
-                 circle, and a lower F may exist (fewer vertices or slices, or a larger budget)"
-                .to_owned(),
-        );
+                 circle, and a lower F may exist (fewer vertices or slices, or a larger budget)",
+        ));
     }
     let below = search
         .unsolved_bishop_minimum
         .zip(factor_of_safety)
         .filter(|(b, f)| b < f);
     if let Some((bishop, f)) = below {
-        warnings.push(format!(
+        let message = format!(
             "{} circles of the search have no physical Spencer solution, and Bishop's F on \
                  them goes down to {bishop:.4}, below the F found ({f:.4}): the critical F may \
                  be lower than reported (on those circles F_f(θ) and F_m(θ) do not cross, on the \
                  classic domain nor past the poles of m_α)",
             search.unsolved
-        ));
+        );
+        warnings.push(Warning::new(Code::UnsolvedBelowMinimum, message));
     } else if search.unsolved_near_minimum {
-        warnings.push(format!(
+        let message = format!(
             "circles next to the critical one have no Spencer solution ({} in the search): \
                  the least F may lie among them",
             search.unsolved
-        ));
+        );
+        warnings.push(Warning::new(Code::UnsolvedNearMinimum, message));
     }
 }
