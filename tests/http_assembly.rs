@@ -195,6 +195,16 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
     let check = &answer["non_associative"];
     assert_eq!(check["settled"], true, "{check}");
     assert!(check["corrected_mechanism"].is_object());
+    // Issue 39: `include: []` leaves out every optional block, the nested mechanism too.
+    let mut lean = arch.clone();
+    lean["include"] = json!([]);
+    let (_, _, lean) = server.post("/arch/live-load", &lean).await;
+    assert_eq!(lean["non_associative"]["settled"], true, "{lean}");
+    assert!(
+        lean["non_associative"]["corrected_mechanism"].is_null(),
+        "{lean}"
+    );
+    assert!(lean["mechanism"].is_null());
     // Two leaves under a cap: the associative 0.25 over-estimates; non_associative answers less.
     let wall = json!({"geometry": {"kind": "assembly",
         "blocks": [{"polygon": [[0, 0], [0.5, 0], [0.5, 2], [0, 2]]},

@@ -122,14 +122,15 @@ pub struct NonAssociativeOutDto {
     /// after 10 that did not halve its inconsistency.
     pub settled: bool,
     /// The corrected mechanism (Livesley §2.7), the first step's: sliding joints slide and
-    /// open by only α·μ = 1 % of Coulomb's dilatancy; null when nothing slides.
+    /// open by only α·μ = 1 % of Coulomb's dilatancy; null when nothing slides, or when
+    /// `include` leaves out `mechanism`.
     #[schema(required = true)]
     pub corrected_mechanism: Option<MechanismDto>,
 }
 
 impl NonAssociativeOutDto {
-    /// The answer's account of the iteration.
-    pub fn new(outcome: &NonAssociative) -> Self {
+    /// The answer's account of the iteration (the corrected mechanism only with `mechanism`).
+    pub fn new(outcome: &NonAssociative, mechanism: bool) -> Self {
         Self {
             associative_load_factor: outcome.associative.load_factor,
             load_factor: outcome
@@ -139,7 +140,11 @@ impl NonAssociativeOutDto {
             load_factors: outcome.history.clone(),
             mixing_from_step: outcome.mixed_from,
             settled: outcome.settled,
-            corrected_mechanism: outcome.corrected.as_ref().map(MechanismDto::new),
+            corrected_mechanism: outcome
+                .corrected
+                .as_ref()
+                .filter(|_| mechanism)
+                .map(MechanismDto::new),
         }
     }
 }

@@ -393,7 +393,7 @@ impl ArchOutcomeDto {
                     .is_some_and(|f| f.associative_may_overestimate()),
             non_associative: solved.friction.as_ref().and_then(|f| {
                 (solved.input.non_associative || f.history.len() > 1)
-                    .then(|| NonAssociativeOutDto::new(f))
+                    .then(|| NonAssociativeOutDto::new(f, included(ArchDetailDto::Mechanism)))
             }),
             thrust_line: thrust_line
                 .iter()
