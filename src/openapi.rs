@@ -21,6 +21,7 @@ use crate::limits::Limit;
     servers((url = "/", description = "The service that serves this document")),
     modifiers(
         &SchemaLimits,
+        &PointPairs,
         &BearerToken,
         &DescriptionsOnProperties,
         &RequestIdHeader,
@@ -67,6 +68,52 @@ impl utoipa::Modify for SchemaLimits {
                 apply_limit(target, *limit);
             }
         }
+    }
+}
+
+/// Points `[x, y]` (and the inter-slice function's `[ξ, f]`) are pairs: the inner arrays of
+/// numbers in a list get `minItems` and `maxItems` 2, so that a generated client types them as
+/// pairs and `[1]` does not check (`[f64; 2]` is written without a length). A matrix of
+/// nullable numbers (a search's map of F) is not a list of points.
+struct PointPairs;
+
+impl utoipa::Modify for PointPairs {
+    fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        if let Some(components) = openapi.components.as_mut() {
+            components.schemas.values_mut().for_each(pairs_within);
+        }
+    }
+}
+
+/// [`PointPairs`] on a schema and everything inside it.
+fn pairs_within(schema: &mut utoipa::openapi::RefOr<utoipa::openapi::schema::Schema>) {
+    use utoipa::openapi::schema::{ArrayItems, Schema, SchemaType, Type};
+    use utoipa::openapi::RefOr;
+    let RefOr::T(schema) = schema else { return };
+    match schema {
+        Schema::Object(object) => object.properties.values_mut().for_each(pairs_within),
+        Schema::OneOf(one) => one.items.iter_mut().for_each(pairs_within),
+        Schema::AllOf(all) => all.items.iter_mut().for_each(pairs_within),
+        Schema::Array(list) => {
+            let ArrayItems::RefOrSchema(item) = &mut list.items else {
+                return;
+            };
+            if let RefOr::T(Schema::Array(pair)) = item.as_mut() {
+                let of_numbers = matches!(
+                    &pair.items,
+                    ArrayItems::RefOrSchema(inner) if matches!(
+                        inner.as_ref(),
+                        RefOr::T(Schema::Object(o)) if o.schema_type == SchemaType::Type(Type::Number)
+                    )
+                );
+                if of_numbers && pair.max_items.is_none() {
+                    pair.min_items = Some(2);
+                    pair.max_items = Some(2);
+                }
+            }
+            pairs_within(item);
+        }
+        _ => {}
     }
 }
 

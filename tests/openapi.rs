@@ -40,3 +40,66 @@ fn every_reference_resolves() {
         assert!(schemas.contains_key(name), "dangling $ref to {name}");
     }
 }
+
+#[test]
+fn points_are_pairs_and_codes_are_enums() {
+    // Issue 39: `[x, y]` had no length in the schema (`[1]` type-checked in a generated
+    // client); warnings' and problems' codes are enums a client can switch on.
+    let doc: serde_json::Value =
+        serde_json::from_str(&thrustline::openapi::openapi_json()).unwrap();
+    let schemas = &doc["components"]["schemas"];
+    for (schema, property) in [
+        ("SectionDto", "ground"),
+        ("SectionDto", "bedrock"),
+        ("SectionDto", "piezometric_line"),
+        ("LayerDto", "top"),
+        ("SpencerRequest", "surface"),
+        ("SpencerRequest", "interslice_function"),
+        ("PolygonDto", "polygon"),
+    ] {
+        let pair = &schemas[schema]["properties"][property]["items"];
+        assert_eq!(pair["minItems"], 2, "{schema}.{property}: {pair}");
+        assert_eq!(pair["maxItems"], 2, "{schema}.{property}: {pair}");
+    }
+    // The search's map of F is a matrix, not points.
+    let map = &schemas["GridDto"]["properties"]["factor_of_safety"]["items"];
+    assert!(map["maxItems"].is_null(), "{map}");
+    let codes = |name: &str| -> Vec<String> {
+        schemas[name]["enum"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{name}: {}", schemas[name]))
+            .iter()
+            .map(|c| c.as_str().unwrap().to_owned())
+            .collect()
+    };
+    let warnings = codes("WarningCode");
+    for code in [
+        "tension",
+        "thrust_line_outside",
+        "unsolved_below_minimum",
+        "minimum_on_bound",
+        "budget_exhausted",
+        "not_settled",
+        "friction_may_overestimate",
+        "rings_locked",
+    ] {
+        assert!(warnings.contains(&code.to_owned()), "{code}: {warnings:?}");
+    }
+    let problems = codes("ProblemCode");
+    for code in [
+        "invalid_json",
+        "duplicate_key",
+        "unknown_field",
+        "missing_field",
+        "out_of_range",
+        "invalid_value",
+        "unstateable",
+        "over_time_limit",
+        "busy",
+        "too_large",
+        "unauthorized",
+        "not_found",
+    ] {
+        assert!(problems.contains(&code.to_owned()), "{code}: {problems:?}");
+    }
+}
