@@ -2,7 +2,7 @@
 //! rollout needs from them, against the service's own settings (#18).
 #![allow(clippy::unwrap_used)]
 
-use serde_yaml::Value;
+use serde_norway::Value;
 
 fn read(path: &str) -> String {
     std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).unwrap()
@@ -131,7 +131,7 @@ fn env(container: &Value, name: &str) -> Option<f64> {
 #[test]
 fn the_kubernetes_deployment_rolls_without_dropping_requests_and_runs_restricted() {
     let text = read("deploy/kubernetes.yaml");
-    let documents: Vec<Value> = serde_yaml::Deserializer::from_str(&text)
+    let documents: Vec<Value> = serde_norway::Deserializer::from_str(&text)
         .map(|d| serde::Deserialize::deserialize(d).unwrap())
         .collect();
     let deployment = documents
