@@ -95,7 +95,7 @@ const FRAMEWORK_PREFIXES: [(&str, &str); 3] = [
 ];
 
 /// A rejection's text in the project's words: the framework's prefix replaced.
-fn without_prefix(text: &str) -> String {
+pub fn without_prefix(text: &str) -> String {
     FRAMEWORK_PREFIXES
         .iter()
         .find_map(|(theirs, ours)| {

@@ -10,7 +10,7 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 use crate::error::ApiError;
-use crate::extract::ApiJson;
+use crate::extract::{without_prefix, ApiJson};
 
 /// A row of a table: its serialised fields, in order, are the columns.
 pub trait Row: Serialize {
@@ -100,12 +100,9 @@ impl<S: Send + Sync, Q: TableQuery> FromRequestParts<S> for CsvTable<Q> {
             Query::<Q>::from_request_parts(parts, state)
                 .await
                 .map_err(|rejection| {
-                    let detail = rejection.body_text();
-                    let detail = detail
-                        .strip_prefix("Failed to deserialize query string: ")
-                        .unwrap_or(&detail);
+                    let detail = without_prefix(&rejection.body_text());
                     // serde names the parameter itself; the problem names it once.
-                    let detail = detail.strip_prefix("table: ").unwrap_or(detail);
+                    let detail = detail.strip_prefix("table: ").unwrap_or(&detail);
                     ApiError::invalid("table", detail.to_owned())
                 })?;
         Ok(Self(

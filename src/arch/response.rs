@@ -369,7 +369,6 @@ impl ArchOutcomeDto {
         } else {
             &[]
         };
-        let one_based = |list: &[usize]| list.iter().map(|k| k + 1).collect::<Vec<_>>();
         let warnings = warnings(solved);
         Self {
             warnings,

@@ -10,7 +10,7 @@
 //! programme), the chain formulation ≤ 3.2 KB per block. Each is taken with a third more.
 
 use super::analysis::{ArchPlan, Friction, Programme};
-use super::limit::{ArchProblem, Formulation};
+use super::limit::{self, ArchProblem};
 
 /// Bytes per interface of the general formulation without crushing or friction.
 const PLAIN_PER_INTERFACE: usize = 16 * 1024;
@@ -24,9 +24,7 @@ const BASE: usize = 2 * 1024 * 1024;
 /// Whether `plan` analyses `problem` on the chain's three redundants (a chain without passive
 /// forces, the chain formulation asked for): small programmes, whatever the options.
 pub fn on_chain(problem: &ArchProblem, plan: &ArchPlan) -> bool {
-    plan.settings.formulation == Formulation::Chain
-        && problem.passive().is_empty()
-        && problem.assembly().is_chain()
+    limit::on_chain(problem, &plan.settings)
 }
 
 /// An upper bound on the memory, in bytes, of an analysis on the chain formulation.

@@ -68,7 +68,7 @@ const STATE_CHECK: f64 = 1e-7;
 /// Whether `problem` is written on the chain's three redundants: asked for, and a chain
 /// (passive forces are variables of their own: only the general assembly has room for them,
 /// and only a chain has the chain's three redundants).
-pub(super) fn on_chain(problem: &ArchProblem, settings: &LimitSettings) -> bool {
+pub fn on_chain(problem: &ArchProblem, settings: &LimitSettings) -> bool {
     let chain = problem.passive.is_empty() && problem.assembly.is_chain();
     settings.formulation == Formulation::Chain && chain
 }

@@ -51,6 +51,7 @@ mod squeeze;
 mod state;
 mod warm;
 
+pub use context::on_chain;
 pub use problem::{
     ArchProblem, Crushing, Formulation, InterfaceLimits, LimitSettings, LimitSolution, LimitStatus,
     Relaxation,

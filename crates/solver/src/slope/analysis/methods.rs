@@ -95,15 +95,14 @@ pub fn side_by_side(
 /// Each answered method's accuracy on `problem` (model §6.2): its F at two more slice counts,
 /// each model made as the answer's was by `prepare` (strength dropped where Spencer's state has
 /// negative effective stress, as the plan says); Morgenstern–Price starts from its own (F, λ).
+/// The re-cut surface is the headline's when it has one (else made once here, within `budget`).
 pub fn with_accuracy<P: Sliced>(
     found: &mut MethodFactors,
     problem: &P,
     function: &InterSliceFunction,
     prepare: &dyn Fn(&SliceModel) -> SliceModel,
-    budget: &Budget,
+    (mut recut, budget): (Option<Recut>, &Budget),
 ) {
-    // The surface re-cut once for every method.
-    let mut recut: Option<Recut> = None;
     let mut assess = |answer: &mut Option<MethodAnswer>, method: Method| {
         let Some(answer) = answer.as_mut() else {
             return;

@@ -15,7 +15,7 @@ use std::num::NonZeroUsize;
 use std::time::Duration;
 
 use crate::budget::{Budget, Stop};
-use crate::slope::accuracy::{accuracy_of, to_accuracy, Accuracy};
+use crate::slope::accuracy::{estimate, to_accuracy, Accuracy, Recut};
 use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStatus};
 use crate::slope::search::{SearchGrid, SearchProblem};
 use crate::slope::section::search::CircleRegion;
@@ -169,6 +169,7 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         solution,
         refinement,
         accuracy,
+        recut,
     } = match at_slices(problem, plan, &spencer, budget)? {
         Ok(answered) => answered,
         Err(stop) => return Ok(stopped(SlopeStage::Refinement, stop)),
@@ -203,7 +204,7 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
             &problem,
             &plan.interslice_function,
             &prepare,
-            budget,
+            (recut, budget),
         );
         found
     });
@@ -224,6 +225,8 @@ struct Answered {
     solution: SpencerSolution,
     refinement: Option<Refinement>,
     accuracy: Accuracy,
+    /// The surface re-cut for the accuracy estimate, for the methods' estimates to share.
+    recut: Option<Recut>,
 }
 
 /// The surface at its own slices, refined to a slice tolerance, or re-cut to an accuracy;
@@ -242,6 +245,7 @@ fn at_slices(
                 solution: answered.solution,
                 refinement: None,
                 accuracy: answered.accuracy,
+                recut: None,
             }));
         }
         if budget.is_spent() {
@@ -273,18 +277,26 @@ fn at_slices(
             (refined.problem, refined.solution, Some(refinement))
         }
     };
-    let accuracy = match solution.factor_of_safety {
-        Some(f) => accuracy_of(&problem, f, spencer, budget),
-        None => Accuracy {
-            slices: problem.slice_count(),
-            discretisation_error: None,
-        },
+    let (accuracy, recut) = match solution.factor_of_safety {
+        Some(f) => {
+            let recut = Recut::of(&problem, budget);
+            let spencer_at = |m: &SliceModel| solve_spencer(m, spencer).factor_of_safety;
+            (estimate(&recut, f, &spencer_at), Some(recut))
+        }
+        None => (
+            Accuracy {
+                slices: problem.slice_count(),
+                discretisation_error: None,
+            },
+            None,
+        ),
     };
     Ok(Ok(Answered {
         problem,
         solution,
         refinement,
         accuracy,
+        recut,
     }))
 }
 
