@@ -13,14 +13,15 @@ sys.path.insert(0, generated)
 
 from thrustline_client import Client  # noqa: E402
 from thrustline_client.api.arch import (  # noqa: E402
-    dead_load, dead_load_svg, live_load, live_load_svg, minimum_thickness)
+    dead_load, dead_load_csv, dead_load_svg, live_load, live_load_csv, live_load_svg,
+    minimum_thickness, minimum_thickness_csv)
 from thrustline_client.api.service import healthz  # noqa: E402
-from thrustline_client.api.slope import spencer, spencer_svg  # noqa: E402
+from thrustline_client.api.slope import spencer, spencer_csv, spencer_svg  # noqa: E402
 from thrustline_client.models import (  # noqa: E402
     CircleDto, CircularGeometryDto, CircularKind,
-    DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
+    ArchTableDto, DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
     MinimumThicknessOutcomeDto, MinimumThicknessRequest, MinimumThicknessResponse, Problem,
-    ResultantDto, SearchDto, SlopeDto, SoilDto, SpencerRequest, SpencerResponse,
+    MinimumThicknessTableDto, ResultantDto, SearchDto, SlopeDto, SlopeTableDto, SoilDto, SpencerRequest, SpencerResponse,
     SpencerStatusDto)
 
 client = Client(base_url=base_url, raise_on_unexpected_status=True, timeout=60)
@@ -103,6 +104,25 @@ for name, route, body in [
         ("slope drawing", spencer_svg, SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416)))]:
     svg = route.sync(client=client, body=body)
     check(name, isinstance(svg, str) and "<svg" in svg, type(svg))
+
+# The tables come back as text, the table asked for by an enum.
+for name, route, body, table, header in [
+        ("dead-load hinges table", dead_load_csv, DeadLoadRequest(geometry=semicircle(1.0747, 1800)),
+         ArchTableDto.HINGES, "interface,angle_deg,location"),
+        ("live-load thrust-line table", live_load_csv, LiveLoadRequest(geometry=semicircle(1.5, 100), loads=[LoadDto(block=26, fy=-1.0)]),
+         ArchTableDto.THRUST_LINE, "interface,x,y"),
+        ("minimum-thickness hinges table", minimum_thickness_csv, MinimumThicknessRequest(geometry=semicircle(1.5, 60)),
+         MinimumThicknessTableDto.HINGES, "interface,angle_deg"),
+        ("slope slices table", spencer_csv, SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416), slices=100),
+         SlopeTableDto.SLICES, "slice,x_left,x_right")]:
+    text = route.sync(client=client, body=body, table=table)
+    lines = text.splitlines() if isinstance(text, str) else []
+    check(name, len(lines) > 1 and lines[0].startswith(header), text if not lines else lines[:2])
+# Milankovitch's five hinges, read from the CSV table as from the JSON answer.
+text = dead_load_csv.sync(client=client, body=DeadLoadRequest(geometry=semicircle(1.0747, 1800)),
+                          table=ArchTableDto.HINGES)
+interfaces = [int(line.split(",")[0]) for line in text.splitlines()[1:]] if isinstance(text, str) else []
+check("five hinges in the CSV table", interfaces == [1, 356, 901, 1446, 1801], interfaces)
 
 # What pydantic's model_dump(), Jackson and System.Text.Json send: every optional field the
 # client left unset as an explicit null, read from the spec's own schemas. Each route must

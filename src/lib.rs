@@ -106,13 +106,20 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .route("/metrics", get(metrics::metrics))
         .route("/slope/spencer", post(slope::spencer))
         .route("/slope/spencer/svg", post(slope::spencer_svg))
+        .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
         .route("/arch/dead-load", post(arch::dead_load))
         .route("/arch/dead-load/svg", post(arch::dead_load_svg))
+        .route("/arch/dead-load/csv", post(arch::tables::dead_load_csv))
         .route("/arch/live-load", post(arch::live_load))
         .route("/arch/live-load/svg", post(arch::live_load_svg))
+        .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
         .route(
             "/arch/minimum-thickness",
             post(arch::minimum_thickness::minimum_thickness),
+        )
+        .route(
+            "/arch/minimum-thickness/csv",
+            post(arch::minimum_thickness::minimum_thickness_csv),
         )
         .with_state(state.clone());
     let request_id = HeaderName::from_static("x-request-id");

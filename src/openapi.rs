@@ -33,11 +33,15 @@ use crate::limits::Limit;
         crate::metrics::metrics,
         crate::arch::dead_load,
         crate::arch::dead_load_svg,
+        crate::arch::tables::dead_load_csv,
         crate::arch::live_load,
         crate::arch::live_load_svg,
+        crate::arch::tables::live_load_csv,
         crate::arch::minimum_thickness::minimum_thickness,
+        crate::arch::minimum_thickness::minimum_thickness_csv,
         crate::slope::spencer,
-        crate::slope::spencer_svg
+        crate::slope::spencer_svg,
+        crate::slope::tables::spencer_csv
     ),
     components(schemas(
         crate::error::Problem,

@@ -1,4 +1,4 @@
-//! `Accept: text/csv`: every table of every solve route is the JSON answer's array, cell for
+//! The `…/csv` routes: every table of every solve route is the JSON answer's array, cell for
 //! cell — read here with a CSV reader written for the test, compared with the JSON answer of
 //! the same request.
 // Test helpers: a failed request or a malformed answer should fail the test loudly.
@@ -39,7 +39,7 @@ async fn check_table(
     rows: &[Value],
 ) -> usize {
     let (status, content_type, text) = server
-        .post_accept(&format!("{path}?table={table}"), "text/csv", body)
+        .post_accept(&format!("{path}/csv?table={table}"), "text/csv", body)
         .await;
     assert_eq!(status, 200, "{path} {table}: {text}");
     assert!(content_type.starts_with("text/csv"), "{content_type}");
@@ -131,12 +131,12 @@ async fn arch_tables_are_the_json_answer() {
     // No table asked: the thrust line. A structure that stands has no hinges: the header alone.
     let stands = milankovitch(1.5);
     let (_, _, text) = server
-        .post_accept("/arch/dead-load", "text/csv", &stands)
+        .post_accept("/arch/dead-load/csv", "*/*", &stands)
         .await;
     assert!(text.starts_with("interface,x,y,normal_force"), "{text}");
     assert_eq!(text.lines().count(), 1802);
     let (_, _, text) = server
-        .post_accept("/arch/dead-load?table=hinges", "text/csv", &stands)
+        .post_accept("/arch/dead-load/csv?table=hinges", "text/csv", &stands)
         .await;
     assert_eq!(
         text.trim_end(),
@@ -254,35 +254,37 @@ async fn slope_tables_are_the_json_answer() {
 async fn tables_are_asked_for_and_refused_clearly() {
     let server = Server::start().await;
     let example = spencer_example();
-    // JSON preferred by weight, or not asked for CSV at all: JSON.
-    for accept in [
-        "application/json, text/csv;q=0.5",
-        "*/*",
-        "application/json",
-    ] {
-        let (status, content_type, _) =
-            server.post_accept("/slope/spencer", accept, &example).await;
+    // A JSON route answers JSON whatever the client accepts (one type per route for typed
+    // clients), and a CSV route CSV: the route says what comes back, not Accept.
+    for accept in ["text/csv", "application/json, text/csv;q=0.5", "*/*"] {
+        let (status, content_type, text) = server
+            .post_accept("/slope/spencer?table=slices", accept, &example)
+            .await;
         assert_eq!(status, 200);
         assert!(
             content_type.starts_with("application/json"),
             "{accept}: {content_type}"
         );
+        assert!(text.starts_with('{'), "{text}");
+        let (status, content_type, text) = server
+            .post_accept("/slope/spencer/csv", accept, &example)
+            .await;
+        assert_eq!(status, 200);
+        assert_eq!(content_type, "text/csv; charset=utf-8; header=present");
+        assert!(text.starts_with("slice,x_left,x_right,layer"), "{text}");
     }
-    let (_, content_type, _) = server
-        .post_accept(
-            "/slope/spencer",
-            "application/json;q=0.2, text/csv",
-            &example,
-        )
-        .await;
-    assert!(content_type.starts_with("text/csv"), "{content_type}");
     // A table the route does not have, or that the answer does not have.
     for (path, body) in [
-        ("/slope/spencer?table=hinges", example.clone()),
-        ("/slope/spencer?table=grid", example.clone()),
-        ("/arch/dead-load?table=rolling", milankovitch(1.5)),
+        ("/slope/spencer/csv?table=hinges", example.clone()),
+        ("/slope/spencer/csv?table=grid", example.clone()),
+        ("/arch/dead-load/csv?table=rolling", milankovitch(1.5)),
+        ("/arch/live-load/csv?table=rolling", {
+            let mut live = milankovitch(1.5);
+            live["loads"] = json!([{"block": 26, "fy": -1.0}]);
+            live
+        }),
         (
-            "/arch/minimum-thickness?table=thrust_line",
+            "/arch/minimum-thickness/csv?table=thrust_line",
             milankovitch(1.5),
         ),
     ] {
@@ -299,7 +301,7 @@ async fn tables_are_asked_for_and_refused_clearly() {
     let mut lean = example.clone();
     lean["include"] = json!([]);
     let (status, _, text) = server
-        .post_accept("/slope/spencer?table=slices", "text/csv", &lean)
+        .post_accept("/slope/spencer/csv?table=slices", "text/csv", &lean)
         .await;
     assert_eq!(status, 422, "{text}");
     assert!(text.contains("include left out"), "{text}");

@@ -22,7 +22,7 @@ use crate::extract::ApiJson;
 use crate::limits::{LENGTH, THICKNESS_TOLERANCE};
 use crate::pool::Cost;
 use crate::stop::Work;
-use crate::table::{csv, Answer, CsvTable};
+use crate::table::{csv, Csv, Table};
 use crate::validation::within;
 use crate::AppState;
 use thrustline_solver::arch::memory::chain_memory_bound;
@@ -125,32 +125,49 @@ pub struct MinimumThicknessResponse {
         ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
     )),
-    params(MinimumThicknessTableQuery),
     responses(
-        (status = 200, description = "The minimum thickness, or the reason there is none; with `Accept: text/csv`, the `table` asked for", content(
-            (MinimumThicknessResponse = "application/json"),
-            (String = "text/csv")
-        )),
+        (status = 200, description = "The minimum thickness, or the reason there is none (its tables as CSV: `/arch/minimum-thickness/csv`)", body = MinimumThicknessResponse),
         ProblemResponses,
     )
 )]
 pub async fn minimum_thickness(
     State(state): State<AppState>,
-    CsvTable(table): CsvTable<MinimumThicknessTableQuery>,
     ApiJson(request): ApiJson<MinimumThicknessRequest>,
-) -> Result<Answer<MinimumThicknessResponse>, ApiError> {
+) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
+    let planned = plan(&request)?;
+    let given = planned.given;
+    let (arch, result) = solve(&state, planned).await?;
+    Ok(ApiJson(response(&arch, &result, given)))
+}
+
+/// A table of the minimum-thickness answer as CSV.
+///
+/// The same request and search as `/arch/minimum-thickness`; `table` chooses the table (a
+/// header row of the JSON field names, then one row per item).
+#[utoipa::path(
+    post,
+    path = "/arch/minimum-thickness/csv",
+    tag = "arch",
+    request_body = MinimumThicknessRequest,
+    params(MinimumThicknessTableQuery),
+    responses(
+        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+        ProblemResponses,
+    )
+)]
+pub async fn minimum_thickness_csv(
+    State(state): State<AppState>,
+    Table(table): Table<MinimumThicknessTableQuery>,
+    ApiJson(request): ApiJson<MinimumThicknessRequest>,
+) -> Result<Csv, ApiError> {
     let planned = plan(&request)?;
     let given = planned.given;
     let (arch, result) = solve(&state, planned).await?;
     let answer = response(&arch, &result, given);
-    if let Some(table) = table {
-        return match table {
-            MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
-            MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
-        }
-        .map(Answer::Csv);
+    match table {
+        MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
+        MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
     }
-    Ok(Answer::Json(answer))
 }
 
 /// A validated minimum-thickness request: the arch whose shape is searched, its material, the

@@ -18,27 +18,18 @@ pub mod minimum_thickness;
 pub mod request;
 pub mod response;
 pub mod rolling;
+pub mod solve;
 pub mod tables;
 
 use axum::extract::State;
-use thrustline_solver::arch::analysis::{analyse, ArchOutcome, ArchPlan, Friction, Programme};
-use thrustline_solver::arch::memory::{memory_bound, on_chain};
-use thrustline_solver::arch::refine::refine_critical;
-use thrustline_solver::arch::{ArchError, ArchProblem};
-use thrustline_solver::budget::Budget;
 
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
-use crate::pool::Cost;
-use crate::stop::Work;
 use crate::svg::Svg;
-use crate::table::{Answer, CsvTable};
 use crate::AppState;
-use input::ArchInput;
 use request::{DeadLoadRequest, LiveLoadRequest};
-use response::{ArchStatusDto, DeadLoadResponse, LiveLoadResponse, SolvedArch};
-use rolling::Axles;
-use tables::{arch_table, ArchTableQuery};
+use response::{DeadLoadResponse, LiveLoadResponse};
+use solve::{solve, Problem};
 
 /// Dead-load limit analysis (Livesley's λ₀).
 ///
@@ -56,31 +47,22 @@ use tables::{arch_table, ArchTableQuery};
         ("milankovitch_falls" = (summary = "The same, D = 1.0747: λ₀ = 0, five hinges",
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}})))
     )),
-    params(ArchTableQuery),
     responses(
-        (status = 200, description = "The dead-load factor, mechanism and thrust line; with `Accept: text/csv`, the `table` asked for", content(
-            (DeadLoadResponse = "application/json"),
-            (String = "text/csv")
-        )),
+        (status = 200, description = "The dead-load factor, mechanism and thrust line (its tables as CSV: `/arch/dead-load/csv`)", body = DeadLoadResponse),
         ProblemResponses,
     )
 )]
 pub async fn dead_load(
     State(state): State<AppState>,
-    CsvTable(table): CsvTable<ArchTableQuery>,
     ApiJson(request): ApiJson<DeadLoadRequest>,
-) -> Result<Answer<DeadLoadResponse>, ApiError> {
+) -> Result<ApiJson<DeadLoadResponse>, ApiError> {
     let solved = solve(
         &state,
         Problem::DeadLoad,
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    let answer = DeadLoadResponse::new(&solved);
-    if let Some(table) = table {
-        return arch_table(&answer.outcome, None, table).map(Answer::Csv);
-    }
-    Ok(Answer::Json(answer))
+    Ok(ApiJson(DeadLoadResponse::new(&solved)))
 }
 
 /// Dead-load limit analysis drawn: voussoirs, thrust line, hinges, mechanism.
@@ -143,31 +125,22 @@ pub async fn dead_load_svg(
                            "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],
                                        "x_start": -12.0, "x_end": 10.0, "positions": 101}})))
     )),
-    params(ArchTableQuery),
     responses(
-        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried; with `Accept: text/csv`, the `table` asked for", content(
-            (LiveLoadResponse = "application/json"),
-            (String = "text/csv")
-        )),
+        (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried (its tables as CSV: `/arch/live-load/csv`)", body = LiveLoadResponse),
         ProblemResponses,
     )
 )]
 pub async fn live_load(
     State(state): State<AppState>,
-    CsvTable(table): CsvTable<ArchTableQuery>,
     ApiJson(request): ApiJson<LiveLoadRequest>,
-) -> Result<Answer<LiveLoadResponse>, ApiError> {
+) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
     let solved = solve(
         &state,
         Problem::LiveLoad,
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    let answer = LiveLoadResponse::new(&solved);
-    if let Some(table) = table {
-        return arch_table(&answer.outcome, answer.rolling.as_ref(), table).map(Answer::Csv);
-    }
-    Ok(Answer::Json(answer))
+    Ok(ApiJson(LiveLoadResponse::new(&solved)))
 }
 
 /// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.
@@ -202,169 +175,4 @@ pub async fn live_load_svg(
         (None, _) => "Live load: no collapse load".to_owned(),
     };
     Ok(Svg(drawing::draw(&solved, &title)))
-}
-
-/// Which of Livesley's two programmes a route asks for.
-#[derive(Debug, Clone, Copy)]
-enum Problem {
-    DeadLoad,
-    LiveLoad,
-}
-
-/// The plan of a validated request: the programme (a rolling load's stops for a live load that
-/// rolls: moved out of the input, which keeps the positions; a thousand stops of a long chain's
-/// loads are tens of MB) and the treatment of friction.
-fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
-    let programme = match (which, input.rolling.as_mut()) {
-        (Problem::DeadLoad, _) => Programme::DeadLoad,
-        (Problem::LiveLoad, Some(rolling)) => {
-            Programme::Rolling(std::mem::take(&mut rolling.loads))
-        }
-        (Problem::LiveLoad, None) => Programme::LiveLoad,
-    };
-    let friction = if input.non_associative {
-        Friction::NonAssociative
-    } else {
-        Friction::Checked
-    };
-    ArchPlan {
-        programme,
-        friction,
-        settings: input.settings.clone(),
-    }
-}
-
-/// `refine_critical` narrows the critical position to this fraction of the stop spacing.
-const REFINED_TO: f64 = 1e-3;
-
-/// Chains of up to this many blocks, without a rolling load or the friction iteration, are
-/// light (a few milliseconds: docs/performance.md).
-const LIGHT_CHAIN_BLOCKS: usize = 1000;
-
-/// What the analysis will take; 422 naming the geometry when its memory bound is over what one
-/// solve may have (`THRUSTLINE_SOLVE_MEMORY_MIB`), with the most blocks that would fit.
-fn cost(state: &AppState, input: &ArchInput, plan: &ArchPlan) -> Result<Cost, ApiError> {
-    let problem = &input.problem;
-    let memory = memory_bound(problem, plan);
-    let limit = state.pool.memory_limit();
-    if memory > limit {
-        let blocks = problem.assembly().blocks.len();
-        // The bound is linear in the blocks' interfaces: the share that fits.
-        let fitting = (blocks as f64 * limit as f64 / memory as f64).floor();
-        return Err(ApiError::invalid(
-            "geometry",
-            format!(
-                "{blocks} blocks would take up to {} MiB to solve with these options, over the \
-                 {} MiB one solve may take: use about {fitting} blocks or fewer (fewer \
-                 voussoirs, rings or spans), or no crushing, rolling load or friction iteration",
-                memory.div_ceil(1 << 20),
-                limit >> 20,
-            ),
-        ));
-    }
-    let light = on_chain(problem, plan)
-        && problem.assembly().blocks.len() <= LIGHT_CHAIN_BLOCKS
-        && plan.friction != Friction::NonAssociative
-        && !matches!(plan.programme, Programme::Rolling(_));
-    Ok(Cost { light, memory })
-}
-
-/// Analyses the request on the pool within the solve time limit; a stop at the limit becomes
-/// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
-async fn solve(
-    state: &AppState,
-    which: Problem,
-    mut input: ArchInput,
-) -> Result<SolvedArch, ApiError> {
-    let plan = plan(which, &mut input);
-    let cost = cost(state, &input, &plan)?;
-    let problem = input.problem.clone();
-    let extra = Extra {
-        // With refine_critical: the axles and the stops, to search between them.
-        refine: input.rolling.as_ref().and_then(|r| {
-            let axles = r.refine.clone()?;
-            (r.positions.len() > 1).then(|| (axles, r.positions.clone()))
-        }),
-        bonded: input.bonded.take(),
-    };
-    let ran = state
-        .pool
-        .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            run(&problem, &plan, extra, budget)
-        })
-        .await?;
-    let (outcome, bonded_load_factor) = ran.value?;
-    tracing::info!(
-        problem = ?which,
-        blocks = outcome.problem.assembly().blocks.len(),
-        interfaces = outcome.problem.assembly().interfaces.len(),
-        iterations = outcome.solution.iterations,
-        solve_ms = ran.elapsed.as_secs_f64() * 1e3,
-        load_factor = outcome.solution.load_factor,
-        "arch solved"
-    );
-    let status = ArchStatusDto::try_from(outcome.status)
-        .ok()
-        .filter(|_| outcome.stop.is_finished());
-    let Some(status) = status else {
-        let work = Work {
-            field: "geometry",
-            advice: "use fewer blocks, the chain formulation or a larger solver_tolerance",
-            no_candidate: "",
-        };
-        return Err(state.refuse(outcome.stop, work, ran.shared));
-    };
-    let mut solved = SolvedArch::new(input, outcome, status);
-    solved.bonded_load_factor = bonded_load_factor;
-    Ok(solved)
-}
-
-/// What a request adds to its plan's analysis.
-struct Extra {
-    /// `refine_critical`: the axles and the stops.
-    refine: Option<(Axles, Vec<f64>)>,
-    /// Locked rings: the bonded single ring.
-    bonded: Option<ArchProblem>,
-}
-
-/// What runs on the pool: the plan's analysis; a rolling load's critical position narrowed
-/// when asked; where the rings lock, the bonded single ring's λ (associative) to compare.
-fn run(
-    problem: &ArchProblem,
-    plan: &ArchPlan,
-    extra: Extra,
-    budget: &Budget,
-) -> Result<(ArchOutcome, Option<f64>), ArchError> {
-    let mut outcome = analyse(problem, plan, budget)?;
-    if let Some((axles, positions)) = extra.refine {
-        let spacing =
-            (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
-        outcome = refine_critical(
-            outcome,
-            (problem, plan),
-            &positions,
-            REFINED_TO * spacing,
-            &|x| axles.loads_at(x),
-            budget,
-        )?;
-    }
-    let compare = outcome.stop.is_finished()
-        && outcome.solution.load_factor.is_some()
-        && plan.programme == Programme::LiveLoad;
-    let bonded = match extra.bonded.filter(|_| compare) {
-        Some(bonded) => {
-            let at = ArchPlan {
-                friction: Friction::Associative,
-                ..plan.clone()
-            };
-            let single = analyse(&bonded, &at, budget)?;
-            single
-                .stop
-                .is_finished()
-                .then_some(single.solution.load_factor)
-                .flatten()
-        }
-        None => None,
-    };
-    Ok((outcome, bonded))
 }

@@ -1,15 +1,72 @@
-//! The arch answers as CSV tables (`Accept: text/csv`, `?table=`): which tables there are and
-//! their columns.
+//! `POST /arch/dead-load/csv` and `/arch/live-load/csv`: the arch answers as CSV tables
+//! (`?table=`), which tables there are and their columns.
 
+use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
-use super::request::ArchDetailDto;
-use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
+use super::request::{ArchDetailDto, DeadLoadRequest, LiveLoadRequest};
+use super::response::{
+    ArchOutcomeDto, DeadLoadResponse, InterfaceThrustPointDto, LiveLoadResponse, ReactionDto,
+};
 use super::rolling::RollingOutDto;
-use crate::error::ApiError;
-use crate::table::{csv, Csv, Row, TableQuery};
+use super::solve::{solve, Problem};
+use crate::error::{ApiError, ProblemResponses};
+use crate::extract::ApiJson;
+use crate::table::{csv, Csv, Row, Table, TableQuery};
+use crate::AppState;
+
+/// A table of the dead-load answer as CSV.
+///
+/// The same request and solve as `/arch/dead-load`; `table` chooses the table (a header row of
+/// the JSON field names, then one row per item).
+#[utoipa::path(
+    post,
+    path = "/arch/dead-load/csv",
+    tag = "arch",
+    request_body = DeadLoadRequest,
+    params(ArchTableQuery),
+    responses(
+        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+        ProblemResponses,
+    )
+)]
+pub async fn dead_load_csv(
+    State(state): State<AppState>,
+    Table(table): Table<ArchTableQuery>,
+    ApiJson(request): ApiJson<DeadLoadRequest>,
+) -> Result<Csv, ApiError> {
+    let input = request.validate(state.solve_time_limit_secs())?;
+    let solved = solve(&state, Problem::DeadLoad, input).await?;
+    arch_table(&DeadLoadResponse::new(&solved).outcome, None, table)
+}
+
+/// A table of the live-load answer as CSV.
+///
+/// The same request and solve as `/arch/live-load`; `table` chooses the table (a header row of
+/// the JSON field names, then one row per item); `rolling` is λ at each stop of a rolling load.
+#[utoipa::path(
+    post,
+    path = "/arch/live-load/csv",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    params(ArchTableQuery),
+    responses(
+        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+        ProblemResponses,
+    )
+)]
+pub async fn live_load_csv(
+    State(state): State<AppState>,
+    Table(table): Table<ArchTableQuery>,
+    ApiJson(request): ApiJson<LiveLoadRequest>,
+) -> Result<Csv, ApiError> {
+    let input = request.validate(state.solve_time_limit_secs())?;
+    let solved = solve(&state, Problem::LiveLoad, input).await?;
+    let answer = LiveLoadResponse::new(&solved);
+    arch_table(&answer.outcome, answer.rolling.as_ref(), table)
+}
 
 /// A table of a dead- or live-load answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -34,9 +91,9 @@ pub enum ArchTableDto {
 #[derive(Debug, Clone, Copy, Deserialize, IntoParams)]
 #[into_params(parameter_in = Query)]
 pub struct ArchTableQuery {
-    /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names;
-    /// lengths, forces and moments in the request's units, angles in degrees, empty cells for
-    /// null). Defaults to `thrust_line`. Ignored for JSON.
+    /// The table to answer with (header row of the JSON field names; lengths, forces and
+    /// moments in the request's units, angles in degrees, empty cells for null). Defaults to
+    /// `thrust_line`.
     pub table: Option<ArchTableDto>,
 }
 
@@ -62,8 +119,7 @@ pub enum MinimumThicknessTableDto {
 #[derive(Debug, Clone, Copy, Deserialize, IntoParams)]
 #[into_params(parameter_in = Query)]
 pub struct MinimumThicknessTableQuery {
-    /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names).
-    /// Defaults to `hinges`. Ignored for JSON.
+    /// The table to answer with (header row of the JSON field names). Defaults to `hinges`.
     pub table: Option<MinimumThicknessTableDto>,
 }
 

@@ -16,24 +16,19 @@ pub mod report;
 pub mod request;
 pub mod response;
 pub mod section;
+pub mod solve;
 pub mod tables;
 pub mod warnings;
 
 use axum::extract::State;
-use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
-use thrustline_solver::slope::Sliced;
 
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
-use crate::pool::Cost;
-use crate::stop::Work;
 use crate::svg::Svg;
-use crate::table::{Answer, CsvTable};
 use crate::AppState;
-use report::SolvedSlope;
 use request::SpencerRequest;
 use response::SpencerResponse;
-use tables::{slope_table, SlopeTableQuery};
+use solve::solve;
 
 /// Spencer's method for one slip surface, or the critical circle.
 ///
@@ -77,26 +72,19 @@ use tables::{slope_table, SlopeTableQuery};
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
                                     "pore_pressure_ratio": 0.5}})))
     )),
-    params(SlopeTableQuery),
     responses(
-        (status = 200, description = "Solved, or an honest `converged: false`; with `Accept: text/csv`, the `table` asked for", content(
-            (SpencerResponse = "application/json"),
-            (String = "text/csv")
-        )),
+        (status = 200, description = "Solved, or an honest `converged: false` (its tables as CSV: `/slope/spencer/csv`)", body = SpencerResponse),
         ProblemResponses,
     )
 )]
 pub async fn spencer(
     State(state): State<AppState>,
-    CsvTable(table): CsvTable<SlopeTableQuery>,
     ApiJson(request): ApiJson<SpencerRequest>,
-) -> Result<Answer<SpencerResponse>, ApiError> {
+) -> Result<ApiJson<SpencerResponse>, ApiError> {
     let solved = solve(&state, request.validate()?).await?;
-    let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
-    if let Some(table) = table {
-        return slope_table(&answer, table).map(Answer::Csv);
-    }
-    Ok(Answer::Json(answer))
+    Ok(ApiJson(
+        SpencerResponse::new(&solved).with_details(request.include.as_deref()),
+    ))
 }
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and
@@ -125,69 +113,4 @@ pub async fn spencer_svg(
         (false, false) => "Spencer's method: one slip surface",
     };
     Ok(Svg(drawing::draw(&solved, title)))
-}
-
-/// Analyses the plan on the pool within the solve time limit; a stage that stopped without an
-/// answer becomes the outcome rule's 422 naming the field that sets the work (503 when other
-/// solves ran beside it, [`AppState::refuse`]).
-async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
-    let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
-    let by_accuracy = plan.relative_error.is_some();
-    // One surface at a stated slice count is milliseconds; searches and accuracy targets run
-    // in the heavy lane. Neither takes much memory (slices are capped at 10,000).
-    let cost = match (&plan.target, by_accuracy) {
-        (Target::Surface(_), false) => Cost::LIGHT,
-        _ => Cost::HEAVY,
-    };
-    let ran = state
-        .pool
-        .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            analyse(&plan, budget)
-        })
-        .await?;
-    let answer = match ran.value? {
-        SlopeOutcome::Answered(answer) => *answer,
-        SlopeOutcome::Stopped { stage, stop } => {
-            let work = match stage {
-                SlopeStage::Search if is_simple_search => Work {
-                    field: "search",
-                    advice: "use a smaller grid, fewer slices or no lower_end_factor_max",
-                    no_candidate: "no centre in the region searched gives a circle with a \
-                                   solution: widen or move the bounds (or leave them out for \
-                                   automatic ones)",
-                },
-                SlopeStage::Search => Work {
-                    field: "search",
-                    advice: "use a smaller grid, fewer radii or fewer slices",
-                    no_candidate: "no circle in the region searched cuts a sliding mass with a \
-                                   solution: widen or move the bounds or the radii (or leave \
-                                   them out)",
-                },
-                SlopeStage::Refinement if by_accuracy => Work {
-                    field: "accuracy.relative_error",
-                    advice: "ask for a larger relative_error",
-                    no_candidate: "",
-                },
-                SlopeStage::Refinement => Work {
-                    field: "slice_tolerance",
-                    advice: "use a larger slice_tolerance",
-                    no_candidate: "",
-                },
-            };
-            return Err(state.refuse(stop, work, ran.shared));
-        }
-    };
-    let solved = SolvedSlope {
-        answer,
-        solve_time_ms: ran.elapsed.as_secs_f64() * 1e3,
-    };
-    tracing::info!(
-        slices = solved.problem.slice_count(),
-        iterations = solved.solution.iterations,
-        evaluations = solved.search.as_ref().map(|s| s.evaluations),
-        solve_ms = solved.solve_time_ms,
-        factor_of_safety = solved.solution.factor_of_safety,
-        "spencer solved"
-    );
-    Ok(solved)
 }

@@ -1,14 +1,45 @@
-//! The Spencer answer as CSV tables (`Accept: text/csv`, `?table=`): which tables there are and
-//! their columns.
+//! `POST /slope/spencer/csv`: the Spencer answer as CSV tables (`?table=`), which tables there
+//! are and their columns.
 
+use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
+use super::request::SpencerRequest;
 use super::response::{
     BoundaryThrustPointDto, PointDto, SliceDto, SlopeDetailDto, SpencerResponse,
 };
-use crate::error::ApiError;
-use crate::table::{csv, Csv, Row, TableQuery};
+use super::solve::solve;
+use crate::error::{ApiError, ProblemResponses};
+use crate::extract::ApiJson;
+use crate::table::{csv, Csv, Row, Table, TableQuery};
+use crate::AppState;
+
+/// A table of the Spencer answer as CSV.
+///
+/// The same request and solve as `/slope/spencer`; `table` chooses the table (a header row of
+/// the JSON field names, then one row per item): the slices, a line of thrust, the surface or
+/// a search's grid of F.
+#[utoipa::path(
+    post,
+    path = "/slope/spencer/csv",
+    tag = "slope",
+    request_body = SpencerRequest,
+    params(SlopeTableQuery),
+    responses(
+        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+        ProblemResponses,
+    )
+)]
+pub async fn spencer_csv(
+    State(state): State<AppState>,
+    Table(table): Table<SlopeTableQuery>,
+    ApiJson(request): ApiJson<SpencerRequest>,
+) -> Result<Csv, ApiError> {
+    let solved = solve(&state, request.validate()?).await?;
+    let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
+    slope_table(&answer, table)
+}
 
 /// A table of a Spencer answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
@@ -31,9 +62,9 @@ pub enum SlopeTableDto {
 #[derive(Debug, Clone, Copy, Deserialize, IntoParams)]
 #[into_params(parameter_in = Query)]
 pub struct SlopeTableQuery {
-    /// With `Accept: text/csv`: the table to answer with (header row of the JSON field names;
-    /// lengths, forces and stresses in the request's units, angles in degrees, empty cells for
-    /// null). Defaults to `slices`. Ignored for JSON.
+    /// The table to answer with (header row of the JSON field names; lengths, forces and
+    /// stresses in the request's units, angles in degrees, empty cells for null). Defaults to
+    /// `slices`.
     pub table: Option<SlopeTableDto>,
 }
 
