@@ -61,6 +61,43 @@ if [ "$drawings" -eq 7 ]; then echo "ok: seven drawings"; else echo "FAILED: $dr
 decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
 if [ "$decoded" -eq 7 ]; then echo "ok: seven drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 7" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
-passed=$((12 - failures))
+
+# The calculation reports (SPEC §11): each route's report of an example renders (its headline in
+# the DOM), its drawing decodes as an image, and it prints to PDF; screenshots and PDFs are kept
+# in target/ci-artifacts/.
+report_check() {
+    local name=$1 route=$2 body=$3 headline=$4
+    local html="$profile/$name.html"
+    curl -fsS -X POST "http://127.0.0.1:$port$route" -H 'content-type: application/json' \
+        -d "$body" -o "$html"
+    local shown
+    shown=$(timeout 120 chromium "${flags[@]}" --dump-dom "file://$html" 2> /dev/null)
+    if grep -qF -- "$headline" <<< "$shown"; then echo "ok: $name report shows $headline"; else echo "FAILED: $name report does not show $headline" >&2; failures=$((failures + 1)); fi
+    # The report's drawing as an image on a page of its own: decoded when naturalWidth > 0.
+    python3 - "$html" "$profile/$name-drawing.html" <<'PY'
+import base64, sys
+page = open(sys.argv[1], encoding="utf-8").read()
+svg = page[page.index("<svg"):page.index("</svg>") + len("</svg>")]
+data = base64.b64encode(svg.encode()).decode()
+open(sys.argv[2], "w").write(f'<img src="data:image/svg+xml;base64,{data}" '
+                             'onload="document.body.dataset.width = this.naturalWidth">')
+PY
+    local decoded
+    decoded=$(timeout 120 chromium "${flags[@]}" --dump-dom "file://$profile/$name-drawing.html" 2> /dev/null)
+    if grep -qE 'data-width="[1-9][0-9]*"' <<< "$decoded"; then echo "ok: $name report's drawing decodes"; else echo "FAILED: $name report's drawing does not decode" >&2; failures=$((failures + 1)); fi
+    timeout 120 chromium "${flags[@]}" --no-pdf-header-footer --print-to-pdf="target/ci-artifacts/$name-report.pdf" "file://$html" > /dev/null 2>&1 || true
+    if head -c 5 "target/ci-artifacts/$name-report.pdf" 2> /dev/null | grep -q '%PDF-'; then echo "ok: $name report prints to PDF"; else echo "FAILED: $name report does not print to PDF" >&2; failures=$((failures + 1)); fi
+    timeout 120 chromium "${flags[@]}" --window-size=1000,2400 --screenshot="target/ci-artifacts/$name-report.png" "file://$html" > /dev/null 2>&1 || true
+}
+report_check spencer /slope/spencer/report \
+    '{"slope": {"height": 30.48, "length": 60.96}, "circle": {"x": 9.63168, "y": 63.76416}, "slices": 100, "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}}' \
+    "F = 1.0696, θ = 22.43°"
+report_check dead-load /arch/dead-load/report \
+    '{"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0747, "voussoirs": 1800}}' \
+    "Dead load: λ₀ = 0 (collapses)"
+report_check live-load /arch/live-load/report \
+    '{"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100}, "fill": {"unit_weight": 1.8, "surface": 11.5}, "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}], "x_start": -12.0, "x_end": 10.0, "positions": 101}}' \
+    "Live load: λ = 0.6413"
+passed=$((21 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -31,6 +31,7 @@ pub mod nullable;
 pub mod openapi;
 pub mod page;
 pub mod pool;
+pub mod report;
 pub mod slope;
 pub mod stop;
 pub mod svg;
@@ -104,23 +105,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .route("/", get(page::index))
         .route("/healthz", get(health::healthz))
         .route("/metrics", get(metrics::metrics))
-        .route("/slope/spencer", post(slope::spencer))
-        .route("/slope/spencer/svg", post(slope::spencer_svg))
-        .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
-        .route("/arch/dead-load", post(arch::dead_load))
-        .route("/arch/dead-load/svg", post(arch::dead_load_svg))
-        .route("/arch/dead-load/csv", post(arch::tables::dead_load_csv))
-        .route("/arch/live-load", post(arch::live_load))
-        .route("/arch/live-load/svg", post(arch::live_load_svg))
-        .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
-        .route(
-            "/arch/minimum-thickness",
-            post(arch::minimum_thickness::minimum_thickness),
-        )
-        .route(
-            "/arch/minimum-thickness/csv",
-            post(arch::minimum_thickness::minimum_thickness_csv),
-        )
+        .merge(solve_routes())
         .with_state(state.clone());
     let request_id = HeaderName::from_static("x-request-id");
     let router = Router::new()
@@ -191,6 +176,37 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         Some(cors) => router.layer(cors),
         None => router,
     }
+}
+
+/// The solve routes: each problem's JSON answer and its `/svg`, `/csv` and `/report` twins.
+fn solve_routes() -> Router<AppState> {
+    Router::new()
+        .route("/slope/spencer", post(slope::spencer))
+        .route("/slope/spencer/svg", post(slope::spencer_svg))
+        .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
+        .route("/slope/spencer/report", post(slope::report::spencer_report))
+        .route("/arch/dead-load", post(arch::dead_load))
+        .route("/arch/dead-load/svg", post(arch::dead_load_svg))
+        .route("/arch/dead-load/csv", post(arch::tables::dead_load_csv))
+        .route(
+            "/arch/dead-load/report",
+            post(arch::report::dead_load_report),
+        )
+        .route("/arch/live-load", post(arch::live_load))
+        .route("/arch/live-load/svg", post(arch::live_load_svg))
+        .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
+        .route(
+            "/arch/live-load/report",
+            post(arch::report::live_load_report),
+        )
+        .route(
+            "/arch/minimum-thickness",
+            post(arch::minimum_thickness::minimum_thickness),
+        )
+        .route(
+            "/arch/minimum-thickness/csv",
+            post(arch::minimum_thickness::minimum_thickness_csv),
+        )
 }
 
 /// CORS for the configured origins (`*` for any); `None` when none are configured.

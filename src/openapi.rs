@@ -34,14 +34,17 @@ use crate::limits::Limit;
         crate::arch::dead_load,
         crate::arch::dead_load_svg,
         crate::arch::tables::dead_load_csv,
+        crate::arch::report::dead_load_report,
         crate::arch::live_load,
         crate::arch::live_load_svg,
         crate::arch::tables::live_load_csv,
+        crate::arch::report::live_load_report,
         crate::arch::minimum_thickness::minimum_thickness,
         crate::arch::minimum_thickness::minimum_thickness_csv,
         crate::slope::spencer,
         crate::slope::spencer_svg,
-        crate::slope::tables::spencer_csv
+        crate::slope::tables::spencer_csv,
+        crate::slope::report::spencer_report
     ),
     components(schemas(
         crate::error::Problem,

@@ -281,11 +281,26 @@ async fn run(server: &Server, example: &Example) -> Result<(), Vec<String>> {
         request = request.header("accept", accept);
     }
     let response = request.send().await.unwrap();
+    let content_type = response
+        .headers()
+        .get("content-type")
+        .and_then(|v| v.to_str().ok())
+        .unwrap_or_default()
+        .to_owned();
     let text = response.text().await.unwrap();
     let mut failures = Vec::new();
     let place = &example.place;
+    let route = example.path.split('?').next().unwrap_or_default();
+    if route.ends_with("/report") && !content_type.starts_with("text/html") {
+        failures.push(format!(
+            "{place}: a report answered {content_type}: {text:.300}"
+        ));
+    }
     match &example.answer {
-        Some((language, shown)) if language.is_empty() && example.accept.is_some() => {
+        Some((language, shown)) if language.is_empty() && route.ends_with("/csv") => {
+            if !content_type.starts_with("text/csv") {
+                failures.push(format!("{place}: a table answered {content_type}"));
+            }
             check_csv(place, shown, &text, &mut failures);
         }
         Some((language, shown)) if language == "json" => {

@@ -15,6 +15,7 @@ pub mod input;
 pub mod material;
 pub mod mechanism;
 pub mod minimum_thickness;
+pub mod report;
 pub mod request;
 pub mod response;
 pub mod rolling;
@@ -88,18 +89,10 @@ pub async fn dead_load_svg(
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    let title = match solved.solution.load_factor {
-        Some(f) => format!(
-            "Dead load: λ₀ = {f}{}",
-            if f >= 1.0 {
-                " (stands)"
-            } else {
-                " (collapses)"
-            }
-        ),
-        None => "Dead load: no answer".to_owned(),
-    };
-    Ok(Svg(drawing::draw(&solved, &title)))
+    Ok(Svg(drawing::draw(
+        &solved,
+        &drawing::dead_load_title(&solved),
+    )))
 }
 
 /// Live-load limit analysis (Livesley's λ).
@@ -166,13 +159,8 @@ pub async fn live_load_svg(
         request.validate(state.solve_time_limit_secs())?,
     )
     .await?;
-    let title = match (
-        solved.solution.load_factor,
-        solved.solution.dead_load_carried,
-    ) {
-        (Some(f), _) => format!("Live load: λ = {f:.4}"),
-        (None, Some(false)) => "Live load: the dead load is not carried".to_owned(),
-        (None, _) => "Live load: no collapse load".to_owned(),
-    };
-    Ok(Svg(drawing::draw(&solved, &title)))
+    Ok(Svg(drawing::draw(
+        &solved,
+        &drawing::live_load_title(&solved),
+    )))
 }

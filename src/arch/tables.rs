@@ -14,6 +14,7 @@ use super::rolling::RollingOutDto;
 use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
+use crate::report::{table, ReportTable};
 use crate::table::{csv, Csv, Row, Table, TableQuery};
 use crate::AppState;
 
@@ -186,6 +187,24 @@ impl Row for RollingRow {
     const COLUMNS: &'static [&'static str] = &["position", "load_factor"];
 }
 
+/// λ at each stop of a rolling load.
+fn rolling_rows(rolling: &RollingOutDto) -> Vec<RollingRow> {
+    rolling
+        .positions
+        .iter()
+        .zip(&rolling.load_factor)
+        .map(|(&position, &load_factor)| RollingRow {
+            position,
+            load_factor,
+        })
+        .collect()
+}
+
+/// The rolling table of a report.
+pub fn rolling_table(rolling: &RollingOutDto) -> ReportTable {
+    table("λ at each stop of the rolling load", &rolling_rows(rolling))
+}
+
 /// The table of a dead- or live-load answer.
 pub fn arch_table(
     outcome: &ArchOutcomeDto,
@@ -219,16 +238,7 @@ pub fn arch_table(
             let rolling = rolling.ok_or_else(|| {
                 ApiError::invalid("table", "rolling is the table of a live load with rolling")
             })?;
-            let rows: Vec<RollingRow> = rolling
-                .positions
-                .iter()
-                .zip(&rolling.load_factor)
-                .map(|(&position, &load_factor)| RollingRow {
-                    position,
-                    load_factor,
-                })
-                .collect();
-            csv(&rows)
+            csv(&rolling_rows(rolling))
         }
     }
 }

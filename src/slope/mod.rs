@@ -17,6 +17,7 @@ pub mod request;
 pub mod response;
 pub mod section;
 pub mod solve;
+pub mod solved;
 pub mod tables;
 pub mod warnings;
 
@@ -106,11 +107,5 @@ pub async fn spencer_svg(
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Svg, ApiError> {
     let solved = solve(&state, request.validate()?).await?;
-    let is_circle = solved.problem.circle().is_some();
-    let title = match (solved.search.is_some(), is_circle) {
-        (true, _) => "Spencer's method: the critical slip circle",
-        (false, true) => "Spencer's method: one slip circle",
-        (false, false) => "Spencer's method: one slip surface",
-    };
-    Ok(Svg(drawing::draw(&solved, title)))
+    Ok(Svg(drawing::draw(&solved, drawing::title(&solved))))
 }

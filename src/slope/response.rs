@@ -8,7 +8,7 @@ use thrustline_solver::slope::{SliceModel, Sliced, SpencerSolution, SpencerStatu
 use super::methods::MethodsDto;
 use super::options::AccuracyOutDto;
 use super::outputs::{CurvesDto, GridDto, SearchOutDto};
-use super::report::SolvedSlope;
+use super::solved::SolvedSlope;
 use super::warnings::warnings;
 use crate::warning::Warning;
 

@@ -5,7 +5,7 @@
 use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
 use thrustline_solver::slope::Sliced;
 
-use super::report::SolvedSlope;
+use super::solved::SolvedSlope;
 use crate::error::ApiError;
 use crate::pool::Cost;
 use crate::stop::Work;

@@ -2,7 +2,7 @@
 
 use thrustline_solver::slope::SpencerStatus;
 
-use super::report::SolvedSlope;
+use super::solved::SolvedSlope;
 use crate::limits::MAX_SLICES;
 use crate::warning::{listed, one_based, Warning, WarningCode as Code};
 use thrustline_solver::slope::analysis::{Analysed, SearchReport};

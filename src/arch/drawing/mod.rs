@@ -49,6 +49,27 @@ fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
     points
 }
 
+/// The dead-load drawing's title: λ₀ and whether the arch stands.
+pub fn dead_load_title(solved: &SolvedArch) -> String {
+    match solved.solution.load_factor {
+        Some(f) if f >= 1.0 => format!("Dead load: λ₀ = {f} (stands)"),
+        Some(f) => format!("Dead load: λ₀ = {f} (collapses)"),
+        None => "Dead load: no answer".to_owned(),
+    }
+}
+
+/// The live-load drawing's title: λ, or why there is none.
+pub fn live_load_title(solved: &SolvedArch) -> String {
+    match (
+        solved.solution.load_factor,
+        solved.solution.dead_load_carried,
+    ) {
+        (Some(f), _) => format!("Live load: λ = {f:.4}"),
+        (None, Some(false)) => "Live load: the dead load is not carried".to_owned(),
+        (None, _) => "Live load: no collapse load".to_owned(),
+    }
+}
+
 /// The drawing of a solved arch (with arcs for annular-sector voussoirs).
 pub fn draw(solved: &SolvedArch, title: &str) -> String {
     let assembly = solved.input.problem.assembly();

@@ -8,7 +8,7 @@ mod thrust;
 use thrustline_solver::slope::Sliced;
 
 use super::fills::LAYER_COLOURS;
-use super::report::SolvedSlope;
+use super::solved::SolvedSlope;
 use crate::svg::Canvas;
 use thrustline_solver::slope::analysis::{Analysed, PlacedCircle};
 
@@ -81,6 +81,15 @@ fn scene(problem: &Analysed) -> Scene {
                 loads,
             }
         }
+    }
+}
+
+/// The drawing's title: which surface it shows.
+pub fn title(solved: &SolvedSlope) -> &'static str {
+    match (solved.search.is_some(), solved.problem.circle().is_some()) {
+        (true, _) => "Spencer's method: the critical slip circle",
+        (false, true) => "Spencer's method: one slip circle",
+        (false, false) => "Spencer's method: one slip surface",
     }
 }
 

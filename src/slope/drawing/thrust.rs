@@ -4,7 +4,7 @@
 use thrustline_solver::slope::analysis::PlacedCircle;
 use thrustline_solver::slope::ThrustPoint;
 
-use super::super::report::SolvedSlope;
+use super::super::solved::SolvedSlope;
 use super::Scene;
 use crate::svg::Canvas;
 
