@@ -15,11 +15,11 @@ from thrustline_client import Client  # noqa: E402
 from thrustline_client.api.arch import (  # noqa: E402
     dead_load, dead_load_csv, dead_load_svg, live_load, live_load_csv, live_load_svg,
     minimum_thickness, minimum_thickness_csv)
-from thrustline_client.api.service import healthz  # noqa: E402
+from thrustline_client.api.service import batch, healthz  # noqa: E402
 from thrustline_client.api.slope import spencer, spencer_csv, spencer_svg  # noqa: E402
 from thrustline_client.models import (  # noqa: E402
     CircleDto, CircularGeometryDto, CircularKind,
-    ArchTableDto, DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
+    ArchTableDto, BatchAnswer, BatchLine, BatchLineBody, BatchRoute, DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
     MinimumThicknessOutcomeDto, MinimumThicknessRequest, MinimumThicknessResponse, Problem,
     MinimumThicknessTableDto, ResultantDto, SearchDto, SlopeDto, SlopeTableDto, SoilDto, SpencerRequest, SpencerResponse,
     SpencerStatusDto)
@@ -123,6 +123,26 @@ text = dead_load_csv.sync(client=client, body=DeadLoadRequest(geometry=semicircl
                           table=ArchTableDto.HINGES)
 interfaces = [int(line.split(",")[0]) for line in text.splitlines()[1:]] if isinstance(text, str) else []
 check("five hinges in the CSV table", interfaces == [1, 356, 901, 1446, 1801], interfaces)
+
+# A batch of one line is typed (BatchLine in, BatchAnswer out); a fleet is NDJSON through the
+# client's own httpx client, answered line by line in order.
+answer = batch.sync(client=client, body=BatchLine(
+    route=BatchRoute("/arch/dead-load"),
+    body=BatchLineBody.from_dict(DeadLoadRequest(geometry=semicircle(1.0747, 1800)).to_dict())))
+check("a one-line batch is typed", isinstance(answer, BatchAnswer) and answer.status == 200
+      and answer.body["dead_load_factor"] == 0.0, answer)
+fleet = [{"route": "/arch/dead-load", "body": {"geometry": semicircle(d, 1800).to_dict()}}
+         for d in (1.0747, 1.0748)] + [{"route": "/slope/spencer", "body": {"slope": slope.to_dict(),
+         "soil": soil.to_dict(), "circle": {"x": 9.63168, "y": 63.76416}, "slices": 100}}]
+reply = client.get_httpx_client().post(
+    "/batch", content="".join(json.dumps(line) + "\n" for line in fleet),
+    headers={"content-type": "application/x-ndjson"})
+lines = [BatchAnswer.from_dict(json.loads(text)) for text in reply.text.split("\n") if text]
+check("a fleet in one batch: Milankovitch falls then stands, Spencer's F",
+      [a.line for a in lines] == [1, 2, 3] and [a.status for a in lines] == [200, 200, 200]
+      and lines[0].body["dead_load_factor"] == 0.0 and lines[1].body["dead_load_factor"] == 1.0
+      and abs(lines[2].body["factor_of_safety"] - 1.06958) <= 5e-6,
+      [(a.line, a.status) for a in lines])
 
 # What pydantic's model_dump(), Jackson and System.Text.Json send: every optional field the
 # client left unset as an explicit null, read from the spec's own schemas. Each route must

@@ -19,6 +19,10 @@ pub struct Settings {
     /// Time a request may wait for its solve before a 503. Defaults to 30 s
     /// (`THRUSTLINE_SOLVE_TIMEOUT_SECS`).
     pub solve_timeout: Duration,
+    /// Time limit of a whole `POST /batch`, from when its body is read: lines not answered by
+    /// then are answered 503 `over_time_limit` (each line also has the solve time limit).
+    /// Defaults to 600 s (`THRUSTLINE_BATCH_TIMEOUT_SECS`, 0 < s ≤ 86400).
+    pub batch_timeout: Duration,
     /// Bearer token required by every endpoint but /healthz; none by default
     /// (`THRUSTLINE_TOKEN`).
     pub token: Option<String>,
@@ -52,6 +56,7 @@ impl Default for Settings {
             max_queued: 64,
             body_limit: 4 * 1024 * 1024,
             solve_timeout: Duration::from_secs(30),
+            batch_timeout: Duration::from_secs(600),
             token: None,
             cors_origins: Vec::new(),
             drain_timeout: Duration::from_secs(10),
@@ -88,14 +93,16 @@ impl Settings {
         if let Some(n) = read("THRUSTLINE_BODY_LIMIT")? {
             settings.body_limit = n;
         }
-        if let Some(seconds) = read::<f64>("THRUSTLINE_SOLVE_TIMEOUT_SECS")? {
-            if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
-                return Err(
-                    "THRUSTLINE_SOLVE_TIMEOUT_SECS must be a number of seconds, 0 < s ≤ 86400"
-                        .to_owned(),
-                );
+        for (name, target) in [
+            ("THRUSTLINE_SOLVE_TIMEOUT_SECS", &mut settings.solve_timeout),
+            ("THRUSTLINE_BATCH_TIMEOUT_SECS", &mut settings.batch_timeout),
+        ] {
+            if let Some(seconds) = read::<f64>(name)? {
+                if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
+                    return Err(format!("{name} must be a number of seconds, 0 < s ≤ 86400"));
+                }
+                *target = Duration::from_secs_f64(seconds);
             }
-            settings.solve_timeout = Duration::from_secs_f64(seconds);
         }
         if let Some(seconds) = read::<f64>("THRUSTLINE_DRAIN_SECS")? {
             if !(seconds.is_finite() && (0.0..=3600.0).contains(&seconds)) {

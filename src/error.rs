@@ -160,6 +160,13 @@ pub enum ApiError {
         /// Seconds until a retry is likely to run alone, when other solves ran beside it.
         busy: Option<u64>,
     },
+    /// A batch's time limit ran out before a line was answered (503: send the lines left
+    /// again).
+    #[error("the batch's time limit of {seconds} s (THRUSTLINE_BATCH_TIMEOUT_SECS) ran out before this line was answered: send the lines left in a batch of their own")]
+    BatchOverTime {
+        /// The batch's time limit.
+        seconds: f64,
+    },
     /// A fault of the server (a panic in a solve, a lost worker).
     #[error("internal error: {0}")]
     Internal(String),
@@ -174,6 +181,12 @@ impl ApiError {
         }
     }
 
+    /// The problem body as raw JSON (for answers that embed it, like a batch's lines).
+    pub fn problem_raw(&self) -> Box<serde_json::value::RawValue> {
+        serde_json::value::to_raw_value(&self.problem())
+            .unwrap_or_else(|_| serde_json::value::RawValue::NULL.to_owned())
+    }
+
     /// The HTTP status of this error.
     pub fn status(&self) -> StatusCode {
         match self {
@@ -182,7 +195,7 @@ impl ApiError {
             Self::Invalid { .. } | Self::OverTimeLimit { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             Self::Unauthorized => StatusCode::UNAUTHORIZED,
             Self::Overloaded { .. } => StatusCode::SERVICE_UNAVAILABLE,
-            Self::TimedOut { .. } => StatusCode::SERVICE_UNAVAILABLE,
+            Self::TimedOut { .. } | Self::BatchOverTime { .. } => StatusCode::SERVICE_UNAVAILABLE,
             Self::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
         }
     }
@@ -233,7 +246,9 @@ impl ApiError {
             Self::Overloaded { .. }
             | Self::TimedOut { .. }
             | Self::OverTimeLimit { busy: Some(_), .. } => ProblemCode::Busy,
-            Self::OverTimeLimit { busy: None, .. } => ProblemCode::OverTimeLimit,
+            Self::OverTimeLimit { busy: None, .. } | Self::BatchOverTime { .. } => {
+                ProblemCode::OverTimeLimit
+            }
             Self::Internal(_) => ProblemCode::Internal,
         }
     }
@@ -245,7 +260,10 @@ impl IntoResponse for ApiError {
         if status.is_server_error()
             && !matches!(
                 self,
-                Self::Overloaded { .. } | Self::TimedOut { .. } | Self::OverTimeLimit { .. }
+                Self::Overloaded { .. }
+                    | Self::TimedOut { .. }
+                    | Self::OverTimeLimit { .. }
+                    | Self::BatchOverTime { .. }
             )
         {
             // The one place a 5xx is logged; the client gets no internals.

@@ -17,6 +17,7 @@
 
 pub mod arch;
 pub mod auth;
+pub mod batch;
 pub mod body;
 pub mod config;
 pub mod error;
@@ -67,6 +68,8 @@ pub struct AppState {
     pub pool: pool::SolvePool,
     /// Time limit of one solve (the solvers' own limit: `spawn_blocking` cannot be cancelled).
     pub solve_time_limit: std::time::Duration,
+    /// Time limit of a whole batch.
+    pub batch_time_limit: std::time::Duration,
     /// Counters for /metrics.
     pub metrics: std::sync::Arc<metrics::Metrics>,
     /// The bearer token every endpoint but /healthz requires, if any.
@@ -88,6 +91,7 @@ impl AppState {
                 metrics.clone(),
             ),
             solve_time_limit: settings.solve_timeout,
+            batch_time_limit: settings.batch_timeout,
             metrics,
             token: settings.token.as_deref().map(std::sync::Arc::from),
         }
@@ -105,6 +109,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         .route("/", get(page::index))
         .route("/healthz", get(health::healthz))
         .route("/metrics", get(metrics::metrics))
+        .route("/batch", post(batch::batch))
         .merge(solve_routes())
         .with_state(state.clone());
     let request_id = HeaderName::from_static("x-request-id");
@@ -169,7 +174,9 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         SizeAbove::new(1024)
             .and(NotForContentType::GRPC)
             .and(NotForContentType::IMAGES)
-            .and(NotForContentType::SSE),
+            .and(NotForContentType::SSE)
+            // A batch's lines stream as they finish: a compressor would hold them back.
+            .and(NotForContentType::const_new(batch::NDJSON)),
     );
     let router = router.layer(compression);
     match cors(&settings.cors_origins) {
@@ -178,8 +185,9 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
     }
 }
 
-/// The solve routes: each problem's JSON answer and its `/svg`, `/csv` and `/report` twins.
-fn solve_routes() -> Router<AppState> {
+/// The solve routes: each problem's JSON answer and its `/svg`, `/csv` and `/report` twins
+/// (also what a batch's lines are sent through).
+pub fn solve_routes() -> Router<AppState> {
     Router::new()
         .route("/slope/spencer", post(slope::spencer))
         .route("/slope/spencer/svg", post(slope::spencer_svg))

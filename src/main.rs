@@ -17,6 +17,7 @@ Environment (read by `serve`):
   THRUSTLINE_MAX_QUEUED           solves waiting for a worker before 503 (default 64)
   THRUSTLINE_BODY_LIMIT           largest request body in bytes (default 4194304)
   THRUSTLINE_SOLVE_TIMEOUT_SECS   time limit of a whole solve in seconds, up to 86400 (default 30)
+  THRUSTLINE_BATCH_TIMEOUT_SECS   time limit of a whole POST /batch in seconds, up to 86400 (default 600)
   THRUSTLINE_DRAIN_SECS           after SIGTERM, time open connections get, 0..3600 (default 10)
   THRUSTLINE_HEADER_TIMEOUT_SECS  time to send a request head (and idle keep-alive), default 10
   THRUSTLINE_BODY_TIMEOUT_SECS    time to send a request body, 0.1..3600 (default 30)

@@ -31,6 +31,7 @@ use crate::limits::Limit;
     paths(
         crate::health::healthz,
         crate::metrics::metrics,
+        crate::batch::batch,
         crate::arch::dead_load,
         crate::arch::dead_load_svg,
         crate::arch::tables::dead_load_csv,

@@ -120,6 +120,11 @@ impl SolvePool {
         (self.memory_mib as usize) << 20
     }
 
+    /// Solves that run at once in each lane.
+    pub fn max_running(&self) -> usize {
+        self.max_running
+    }
+
     /// Solves admitted but waiting for a worker right now.
     pub fn queue_depth(&self) -> usize {
         [&self.heavy, &self.light]

@@ -7,8 +7,6 @@
 use std::fmt::Write as _;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use axum::extract::FromRequestParts;
-use axum::http::request::Parts;
 use axum::http::{header, HeaderValue};
 use axum::response::{IntoResponse, Response};
 use serde_json::Value;
@@ -18,23 +16,6 @@ use crate::warning::Warning;
 
 /// Rows a report prints of one table; the rest are counted and left to the `…/csv` route.
 pub const MAX_REPORT_ROWS: usize = 200;
-
-/// The request's id (`x-request-id`, set or kept by the service before any handler runs).
-#[derive(Debug)]
-pub struct RequestId(pub String);
-
-impl<S: Send + Sync> FromRequestParts<S> for RequestId {
-    type Rejection = std::convert::Infallible;
-
-    async fn from_request_parts(parts: &mut Parts, _: &S) -> Result<Self, Self::Rejection> {
-        let id = parts
-            .headers
-            .get("x-request-id")
-            .and_then(|v| v.to_str().ok())
-            .unwrap_or("-");
-        Ok(Self(id.to_owned()))
-    }
-}
 
 /// A table of the report: its columns and rows as text, and how many rows were left out.
 #[derive(Debug)]

@@ -173,6 +173,9 @@ fn the_kubernetes_deployment_rolls_without_dropping_requests_and_runs_restricted
         drain >= 2.0 * timeout + 1.0,
         "drain {drain} s < the longest wait"
     );
+    // A batch ends within the drain (its default, 600 s, would not).
+    let batch = env(container, "THRUSTLINE_BATCH_TIMEOUT_SECS").unwrap_or(600.0);
+    assert!(batch <= drain, "batch {batch} s > drain {drain} s");
     let grace = pod["terminationGracePeriodSeconds"].as_f64().unwrap();
     assert!(
         grace > pause + drain,
@@ -207,4 +210,39 @@ fn the_kubernetes_deployment_rolls_without_dropping_requests_and_runs_restricted
             .all(|e| e["name"] != "THRUSTLINE_TOKEN")
             || !scraped
     );
+}
+
+#[test]
+fn the_autoscaler_owns_the_replica_count_and_scales_on_cpu() {
+    let text = read("deploy/kubernetes.yaml");
+    let documents: Vec<Value> = serde_norway::Deserializer::from_str(&text)
+        .map(|d| serde::Deserialize::deserialize(d).unwrap())
+        .collect();
+    let deployment = documents
+        .iter()
+        .find(|d| d["kind"] == "Deployment")
+        .unwrap();
+    let hpa = documents
+        .iter()
+        .find(|d| d["kind"] == "HorizontalPodAutoscaler")
+        .expect("a HorizontalPodAutoscaler");
+    assert_eq!(hpa["apiVersion"], "autoscaling/v2");
+    // It scales this Deployment, which leaves the count to it.
+    let target = &hpa["spec"]["scaleTargetRef"];
+    assert_eq!(target["kind"], "Deployment");
+    assert_eq!(target["name"], deployment["metadata"]["name"]);
+    assert!(deployment["spec"].get("replicas").is_none());
+    // At least two replicas (one can restart while another serves), a bounded maximum.
+    let min = hpa["spec"]["minReplicas"].as_u64().unwrap();
+    let max = hpa["spec"]["maxReplicas"].as_u64().unwrap();
+    assert!(2 <= min && min <= max, "{min}..{max}");
+    // On CPU utilisation, which is a share of the request: the container must request CPU.
+    let metric = &hpa["spec"]["metrics"][0];
+    assert_eq!(metric["resource"]["name"], "cpu");
+    let utilisation = metric["resource"]["target"]["averageUtilization"]
+        .as_u64()
+        .unwrap();
+    assert!((1..=100).contains(&utilisation), "{utilisation}");
+    let container = &deployment["spec"]["template"]["spec"]["containers"][0];
+    assert!(container["resources"]["requests"]["cpu"].as_str().is_some());
 }

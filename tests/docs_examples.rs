@@ -32,6 +32,9 @@ struct Example {
     place: String,
     path: String,
     accept: Option<String>,
+    /// The headers the example sends besides `accept` (`content-type` is JSON unless it says
+    /// otherwise).
+    headers: Vec<(String, String)>,
     body: String,
     /// The fenced block after it (its language and text), if any.
     answer: Option<(String, String)>,
@@ -97,15 +100,28 @@ fn examples(file: &Path) -> Vec<Example> {
             .chars()
             .take_while(|c| !c.is_whitespace() && *c != '\'')
             .collect();
-        let accept = command
+        let mut headers: Vec<(String, String)> = command
             .split("-H '")
             .skip(1)
             .filter_map(|h| h.split('\'').next())
-            .find_map(|h| h.strip_prefix("accept: ").map(str::to_owned));
-        let Some(start) = command.find("-d '") else {
+            .filter_map(|h| h.split_once(": "))
+            .map(|(name, value)| (name.to_ascii_lowercase(), value.to_owned()))
+            .collect();
+        let accept = headers
+            .iter()
+            .find(|(name, _)| name == "accept")
+            .map(|(_, value)| value.clone());
+        headers.retain(|(name, _)| name != "accept");
+        if headers.iter().all(|(name, _)| name != "content-type") {
+            headers.push(("content-type".to_owned(), "application/json".to_owned()));
+        }
+        let Some((start, flag)) = ["-d '", "--data-binary '"]
+            .iter()
+            .find_map(|flag| command.find(flag).map(|at| (at, flag.len())))
+        else {
             continue;
         };
-        let body = &command[start + 4..];
+        let body = &command[start + flag..];
         let body = body[..body.rfind('\'').unwrap()].to_owned();
         // The prose and the answer block that follow, up to the next example.
         let mut prose = String::new();
@@ -124,6 +140,7 @@ fn examples(file: &Path) -> Vec<Example> {
             place: format!("{} ({})", file.display(), path),
             path,
             accept,
+            headers,
             body,
             answer,
             prose,
@@ -275,8 +292,10 @@ async fn run(server: &Server, example: &Example) -> Result<(), Vec<String>> {
     let mut request = server
         .client
         .post(format!("{}{}", server.base, example.path))
-        .header("content-type", "application/json")
         .body(example.body.clone());
+    for (name, value) in &example.headers {
+        request = request.header(name, value);
+    }
     if let Some(accept) = &example.accept {
         request = request.header("accept", accept);
     }
@@ -302,6 +321,19 @@ async fn run(server: &Server, example: &Example) -> Result<(), Vec<String>> {
                 failures.push(format!("{place}: a table answered {content_type}"));
             }
             check_csv(place, shown, &text, &mut failures);
+        }
+        Some((language, shown)) if language == "ndjson" => {
+            // Line i shown against line i answered.
+            let answered: Vec<Value> = text
+                .lines()
+                .map(|l| serde_json::from_str(l).unwrap_or(Value::Null))
+                .collect();
+            for (i, line) in shown.lines().enumerate() {
+                match answered.get(i) {
+                    Some(answer) => check_fields(place, answer, &shown_fields(line), &mut failures),
+                    None => failures.push(format!("{place}: NDJSON line {i} shown, not answered")),
+                }
+            }
         }
         Some((language, shown)) if language == "json" => {
             let answer: Value = serde_json::from_str(&text)

@@ -9,7 +9,8 @@ use super::response::{ArchOutcomeDto, DeadLoadResponse, LiveLoadResponse};
 use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
-use crate::report::{table, without_nulls, Html, Report, ReportTable, RequestId};
+use crate::headers::RequestId;
+use crate::report::{table, without_nulls, Html, Report, ReportTable};
 use crate::AppState;
 
 /// The tables an arch report prints: hinges, reactions and the line of thrust.

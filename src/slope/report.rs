@@ -8,7 +8,8 @@ use super::response::SpencerResponse;
 use super::solve::solve;
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
-use crate::report::{table, without_nulls, Html, Report, RequestId};
+use crate::headers::RequestId;
+use crate::report::{table, without_nulls, Html, Report};
 use crate::AppState;
 
 /// The Spencer answer as a printable calculation report.

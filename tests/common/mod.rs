@@ -90,7 +90,7 @@ impl Server {
         Self::parts(response).await
     }
 
-    fn content_type(response: &reqwest::Response) -> String {
+    pub fn content_type(response: &reqwest::Response) -> String {
         response
             .headers()
             .get("content-type")
