@@ -62,7 +62,7 @@ pub struct BatchLine {
     /// The route to answer the line as.
     pub route: BatchRoute,
     /// The request body, as the route takes it.
-    #[schema(value_type = Object)]
+    #[schema(value_type = std::collections::HashMap<String, serde_json::Value>)]
     pub body: Box<RawValue>,
 }
 
@@ -75,7 +75,7 @@ pub struct BatchAnswer {
     pub status: u16,
     /// The route's answer (2xx) or its problem (4xx, 5xx; `instance` is the batch's request id
     /// and the line: `id:line`).
-    #[schema(value_type = Object)]
+    #[schema(value_type = std::collections::HashMap<String, serde_json::Value>)]
     pub body: Box<RawValue>,
 }
 

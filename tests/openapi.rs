@@ -103,3 +103,43 @@ fn points_are_pairs_and_codes_are_enums() {
         assert!(problems.contains(&code.to_owned()), "{code}: {problems:?}");
     }
 }
+
+#[test]
+fn no_property_declares_a_default_and_every_option_states_its_own() {
+    // Issue 39: openapi-typescript (7.x, by default) makes a property with a `default` required
+    // in the type of a component schema, so the README's own bodies, which leave options out,
+    // failed `tsc --strict`. Defaults are stated in the descriptions instead ("Defaults to …"),
+    // where people read them; the service applies them.
+    let text = thrustline::openapi::openapi_json();
+    assert!(
+        !text.contains("\"default\":"),
+        "a schema declares a default"
+    );
+    let doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let schemas = &doc["components"]["schemas"];
+    for (schema, property, default) in [
+        ("SpencerRequest", "slices", "100"),
+        ("SearchDto", "nx", "21"),
+        ("SectionDto", "water_unit_weight", "9.81"),
+        ("DeadLoadRequest", "unit_weight", "1"),
+        ("DeadLoadRequest", "solver_tolerance", "1e-10"),
+        ("FillDto", "dispersal_angle_deg", "30"),
+        ("RollingDto", "positions", "101"),
+        ("CircularGeometryDto", "rings", "1"),
+        ("MinimumThicknessRequest", "tolerance", "1e-6"),
+    ] {
+        let description = schemas[schema]["properties"][property]["description"]
+            .as_str()
+            .unwrap_or_default()
+            .replace('\n', " ");
+        assert!(
+            description.contains(&format!("Defaults to {default}")),
+            "{schema}.{property}: {description:?}"
+        );
+        let required = schemas[schema]["required"].as_array();
+        assert!(
+            required.is_none_or(|r| !r.iter().any(|n| n == property)),
+            "{schema}.{property} is required"
+        );
+    }
+}

@@ -30,7 +30,7 @@ pub struct FillDto {
     pub surface: f64,
     /// Dispersal angle of road loads from the vertical, 0 ≤ δ ≤ 60 degrees. Defaults to 30.
     #[serde(default)]
-    #[schema(default = 30.0, examples(30.0))]
+    #[schema(examples(30.0))]
     pub dispersal_angle_deg: Option<f64>,
     /// Passive restraint: where the arch sways into the fill, horizontal pressure on the
     /// extrados of up to `mobilisation`·K_p·σ_v. Without it the fill gives no horizontal

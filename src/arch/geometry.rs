@@ -88,7 +88,6 @@ pub struct CircularGeometryDto {
     /// Defaults to 1.
     #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
     #[schema(nullable)]
-    #[schema(default = 1)]
     pub rings: usize,
     /// How the joints of neighbouring rings lie. Defaults to `staggered`.
     #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
@@ -98,7 +97,6 @@ pub struct CircularGeometryDto {
     /// on the minimum-thickness route. Defaults to 1.
     #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
     #[schema(nullable)]
-    #[schema(default = 1)]
     pub spans: usize,
     /// With `spans` > 1: each pier's width between the intrados springings of its two spans
     /// (more than D·(cos B + cos C), so the springings do not overlap).

@@ -45,7 +45,6 @@ arch_request! {
         /// to 1e-6.
         #[serde(default = "default_tolerance", deserialize_with = "crate::nullable::thickness_tolerance")]
         #[schema(nullable)]
-        #[schema(default = 1e-6)]
         pub tolerance: f64,
     }
 }

@@ -208,7 +208,7 @@ macro_rules! arch_request {
             /// Unit weight γ (> 0): block weight = γ·area. Defaults to 1.
             #[serde(default = "unit", deserialize_with = "crate::nullable::unit_weight")]
             #[schema(nullable)]
-            #[schema(default = 1.0, examples(1.0))]
+            #[schema(examples(1.0))]
             pub unit_weight: f64,
             /// Limits on the interface resultants. Defaults to Heyman's (no tension, no
             /// crushing).
@@ -268,7 +268,6 @@ macro_rules! limit_request {
                 /// still right to 1e-7 (see the accuracy tables of docs/accuracy.md).
                 #[serde(default = "default_solver_tolerance", deserialize_with = "crate::nullable::solver_tolerance")]
                 #[schema(nullable)]
-                #[schema(default = 1e-10)]
                 pub solver_tolerance: f64,
                 /// Compressive strength σ_c of the masonry (force per unit area, per unit
                 /// depth), 0 < σ_c ≤ 1e12: a joint of thickness t carries N ≤ σ_c·t and

@@ -41,12 +41,11 @@ pub struct RollingDto {
     pub x_end: f64,
     /// Stops, evenly from x_start to x_end, 1 ≤ positions ≤ 1001. Defaults to 101.
     #[serde(default)]
-    #[schema(default = 101)]
     pub positions: Option<usize>,
     /// Narrow the critical position between the critical stop's neighbours (golden section)
     /// to 1e-3 of the stop spacing, and answer there. Defaults to false.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable, default = false)]
+    #[schema(nullable)]
     pub refine_critical: bool,
 }
 

@@ -189,7 +189,7 @@ pub struct SpencerRequest {
         deserialize_with = "crate::nullable::slices"
     )]
     #[schema(nullable)]
-    #[schema(default = 100, examples(100))]
+    #[schema(examples(100))]
     pub slices: usize,
     /// The soil of the simple `slope`.
     #[serde(default)]
@@ -265,7 +265,6 @@ pub struct SearchDto {
         deserialize_with = "crate::nullable::grid_points"
     )]
     #[schema(nullable)]
-    #[schema(default = 21)]
     pub nx: usize,
     /// Grid points along Y, 2 ≤ ny ≤ 101. Defaults to 21.
     #[serde(
@@ -273,7 +272,6 @@ pub struct SearchDto {
         deserialize_with = "crate::nullable::grid_points"
     )]
     #[schema(nullable)]
-    #[schema(default = 21)]
     pub ny: usize,
     /// Simple slope only: lower-end position factor F_e of the circles, 0 ≤ F_e ≤ 100.
     /// Defaults to 0 (toe).
@@ -326,7 +324,7 @@ pub struct SectionDto {
     /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
     /// (kN/m³); give 62.4 for pcf.
     #[serde(default)]
-    #[schema(default = 9.81, examples(9.81))]
+    #[schema(examples(9.81))]
     pub water_unit_weight: Option<f64>,
     /// Vertical pressures on the ground.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
