@@ -264,9 +264,9 @@ struct RequestIdHeader;
 impl utoipa::Modify for RequestIdHeader {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
         use utoipa::openapi::schema::{ObjectBuilder, Type};
-        use utoipa::openapi::HeaderBuilder;
+        use utoipa::openapi::{HeaderBuilder, RefOr};
         let header = HeaderBuilder::new()
-            .schema(ObjectBuilder::new().schema_type(Type::String))
+            .schema(Some(ObjectBuilder::new().schema_type(Type::String)))
             .description(Some(
                 "The request's id: the one the client sent, or one the service made",
             ))
@@ -274,34 +274,43 @@ impl utoipa::Modify for RequestIdHeader {
         for response in responses_mut(openapi) {
             response
                 .headers
-                .insert("x-request-id".to_owned(), header.clone());
+                .insert("x-request-id".to_owned(), RefOr::T(header.clone()));
         }
     }
 }
 
-/// A `/svg` route takes the request of its JSON twin: it gets the twin's named examples (written
-/// once, on the JSON route).
+/// A `/svg`, `/csv` or `/report` route takes the request of its JSON twin: it gets the twin's
+/// named examples (written once, on the JSON route).
 struct DrawingExamples;
 
 impl utoipa::Modify for DrawingExamples {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::RefOr;
         let examples = |path: &str| {
-            let body = openapi
+            let RefOr::T(body) = openapi
                 .paths
                 .paths
                 .get(path)?
                 .post
                 .as_ref()?
                 .request_body
-                .as_ref()?;
-            Some(body.content.get("application/json")?.examples.clone())
+                .as_ref()?
+            else {
+                return None;
+            };
+            match body.content.get("application/json")? {
+                RefOr::T(content) => Some(content.examples.clone()),
+                RefOr::Ref(_) => None,
+            }
         };
         let twins: Vec<(String, _)> = openapi
             .paths
             .paths
             .keys()
             .filter_map(|path| {
-                let twin = path.strip_suffix("/svg")?;
+                let twin = ["/svg", "/csv", "/report"]
+                    .iter()
+                    .find_map(|suffix| path.strip_suffix(suffix))?;
                 Some((path.clone(), examples(twin)?))
             })
             .collect();
@@ -311,9 +320,12 @@ impl utoipa::Modify for DrawingExamples {
                 .paths
                 .get_mut(&path)
                 .and_then(|item| item.post.as_mut())
-                .and_then(|operation| operation.request_body.as_mut())
+                .and_then(|operation| match operation.request_body.as_mut() {
+                    Some(RefOr::T(body)) => Some(body),
+                    _ => None,
+                })
                 .and_then(|body| body.content.get_mut("application/json"));
-            if let Some(content) = content {
+            if let Some(RefOr::T(content)) = content {
                 content.examples = examples;
             }
         }
@@ -329,7 +341,7 @@ impl utoipa::Modify for SvgMediaType {
         use utoipa::openapi::schema::{ObjectBuilder, Type};
         const SVG: &str = "image/svg+xml";
         for response in responses_mut(openapi) {
-            if let Some(content) = response.content.get_mut(SVG) {
+            if let Some(utoipa::openapi::RefOr::T(content)) = response.content.get_mut(SVG) {
                 content.schema = Some(
                     ObjectBuilder::new()
                         .schema_type(Type::String)
