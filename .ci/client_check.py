@@ -13,10 +13,11 @@ sys.path.insert(0, generated)
 
 from thrustline_client import Client  # noqa: E402
 from thrustline_client.api.arch import (  # noqa: E402
-    dead_load, dead_load_csv, dead_load_svg, live_load, live_load_csv, live_load_svg,
-    minimum_thickness, minimum_thickness_csv)
-from thrustline_client.api.service import batch, healthz  # noqa: E402
-from thrustline_client.api.slope import spencer, spencer_csv, spencer_svg  # noqa: E402
+    dead_load, dead_load_csv, dead_load_report, dead_load_svg, live_load, live_load_csv,
+    live_load_report, live_load_svg, minimum_thickness, minimum_thickness_csv)
+from thrustline_client.api.service import batch, healthz, metrics  # noqa: E402
+from thrustline_client.api.slope import (  # noqa: E402
+    spencer, spencer_csv, spencer_report, spencer_svg)
 from thrustline_client.models import (  # noqa: E402
     CircleDto, CircularGeometryDto, CircularKind,
     ArchTableDto, BatchAnswer, BatchLine, BatchLineBody, BatchRoute, DeadLoadRequest, DeadLoadResponse, HingeSideDto, LiveLoadRequest, LiveLoadResponse, LoadDto,
@@ -104,6 +105,20 @@ for name, route, body in [
         ("slope drawing", spencer_svg, SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416)))]:
     svg = route.sync(client=client, body=body)
     check(name, isinstance(svg, str) and "<svg" in svg, type(svg))
+
+# The reports come back as text: one HTML page with the published number in its headline.
+for name, route, body, headline in [
+        ("dead-load report", dead_load_report, DeadLoadRequest(geometry=semicircle(1.0747, 1800)),
+         "Dead load: λ₀ = 0 (collapses)"),
+        ("live-load report", live_load_report, LiveLoadRequest(geometry=semicircle(1.5, 100), loads=[LoadDto(block=26, fy=-1.0)]),
+         "Live load: λ = 22.9969"),
+        ("slope report", spencer_report, SpencerRequest(slope=slope, soil=soil, circle=CircleDto(x=9.63168, y=63.76416), slices=100),
+         "F = 1.0696, θ = 22.43°")]:
+    page = route.sync(client=client, body=body)
+    check(name, isinstance(page, str) and page.startswith("<!DOCTYPE html>") and headline in page,
+          page[:200] if isinstance(page, str) else page)
+text = metrics.sync(client=client)
+check("metrics as text", isinstance(text, str) and "thrustline_solves_running" in text, type(text))
 
 # The tables come back as text, the table asked for by an enum.
 for name, route, body, table, header in [
