@@ -34,6 +34,8 @@ pub const MAX_POLYLINE_POINTS: usize = 1000;
 pub const MAX_LAYERS: usize = 50;
 /// Most surcharges, and most line loads, in a section.
 pub const MAX_SECTION_LOADS: usize = 1000;
+/// Most supports in a section.
+pub const MAX_SUPPORTS: usize = 1000;
 /// Most lines in one `POST /batch`.
 pub const MAX_BATCH_LINES: usize = 10_000;
 /// The unit weight of water when none is given (kN/m³).

@@ -115,6 +115,7 @@ mod tests {
             surcharges: Vec::new(),
             line_loads: Vec::new(),
             tension_crack: None,
+            supports: Vec::new(),
         };
         let section = Section::new(parts).unwrap();
         let fills = layer_fills(&section, -10.0, 30.0, -10.0);

@@ -200,6 +200,7 @@ impl SpencerRequest {
                     fx: force("fx", load.fx)?,
                     fy: force("fy", load.fy)?,
                     moment: force("moment", load.moment)?,
+                    passive: false,
                 })
             })
             .collect::<Result<Vec<_>, ApiError>>()?;

@@ -18,6 +18,7 @@ pub mod response;
 pub mod section;
 pub mod solve;
 pub mod solved;
+pub mod supports;
 pub mod tables;
 pub mod warnings;
 

@@ -337,6 +337,11 @@ pub struct SectionDto {
     /// A tension crack at the upper end of the slip surface.
     #[serde(default)]
     pub tension_crack: Option<TensionCrackDto>,
+    /// Reinforcement (up to 1000): end-anchored bars, grouted tiebacks, soil nails,
+    /// geosynthetics and piles; each holds the sliding mass where the slip surface crosses it.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub supports: Vec<super::supports::SupportDto>,
 }
 
 /// One soil layer.

@@ -2,7 +2,7 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::slope::analysis::SearchReport;
+use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 use thrustline_solver::slope::{SliceModel, Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
@@ -235,6 +235,10 @@ pub struct SpencerResponse {
     pub slice_refinement: Option<Vec<SliceRefinementDto>>,
     /// The details `include` left out (returned empty, `grid` absent); empty by default.
     pub omitted: Vec<SlopeDetailDto>,
+    /// With `section.supports`: each support against the answered slip surface (where it
+    /// crosses, its force per unit width, what limits it).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub supports: Vec<super::supports::SupportOutDto>,
 }
 
 /// One step of the slice refinement.
@@ -361,6 +365,10 @@ impl SpencerResponse {
                     .collect()
             }),
             omitted: Vec::new(),
+            supports: {
+                let Analysed::Section(section) = problem;
+                super::supports::supports_out(&section.supports(), section.section().supports())
+            },
         }
     }
 }

@@ -344,6 +344,7 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         surcharges,
         line_loads,
         tension_crack,
+        supports: super::supports::supports(&dto.supports)?,
     })?)
 }
 

@@ -43,6 +43,7 @@ fn main() {
         surcharges: Vec::new(),
         line_loads: Vec::new(),
         tension_crack: None,
+        supports: Vec::new(),
     })
     .unwrap();
     for _ in 0..repeats {

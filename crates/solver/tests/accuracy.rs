@@ -61,6 +61,7 @@ fn layered() -> Section {
             depth: 2.5,
             water_depth: 2.5,
         }),
+        supports: Vec::new(),
     })
     .unwrap()
 }

@@ -39,6 +39,7 @@ fn weak_layer_section() -> Section {
         surcharges: Vec::new(),
         line_loads: Vec::new(),
         tension_crack: None,
+        supports: Vec::new(),
     })
     .unwrap()
 }

@@ -183,12 +183,14 @@ fn self_equilibrated_loads_change_nothing_and_a_surcharge_lowers_f() {
                 fx,
                 fy,
                 moment,
+                passive: false,
             },
             ExternalLoad {
                 slice,
                 fx: -fx,
                 fy: -fy,
                 moment: -moment,
+                passive: false,
             },
         ]
     };
@@ -204,6 +206,7 @@ fn self_equilibrated_loads_change_nothing_and_a_surcharge_lowers_f() {
             fx: 0.0,
             fy: -200.0,
             moment: 0.0,
+            passive: false,
         })
         .collect();
     assert!(f_of(&spencer_example(Seismic::default(), surcharge)) < base);

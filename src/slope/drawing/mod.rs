@@ -3,6 +3,7 @@
 
 mod ground;
 mod map;
+mod supports;
 mod thrust;
 
 use thrustline_solver::slope::Sliced;
@@ -117,6 +118,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     let (left, right) = (x_lo - 0.3 * size, x_hi + 0.3 * size);
     let bottom = y_lo - 0.2 * size;
     let mut extent = vec![(left, bottom), (right, y_hi + 0.2 * size)];
+    extent.extend(supports::ends(&solved.problem));
     if let Some(c) = scene.circle {
         // The centre with room above it for its label and the map around it.
         extent.push((c.centre.0, c.centre.1 + 0.15 * size));
@@ -162,6 +164,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
         size,
     );
     thrust::surface(&mut canvas, &scene, solved, size, &mut legend);
+    let supports = supports::supports(&mut canvas, &solved.problem, size);
     let caption = match (solution.factor_of_safety, solution.theta_rad) {
         (Some(f), Some(theta)) => {
             let bishop = solution
@@ -183,6 +186,9 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     );
     for (colour, label) in legend {
         canvas.key(&format!("— {label}"), colour, 11.0, true);
+    }
+    if let Some(label) = supports {
+        canvas.key(&format!("— {label}"), supports::COLOUR, 11.0, true);
     }
     canvas.finish(title)
 }

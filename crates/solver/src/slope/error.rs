@@ -85,6 +85,53 @@ pub enum SlopeParameter {
     MomentCentre,
     /// A search (what it found could not be analysed).
     Search,
+    /// A field of support `index` (0-based).
+    Support {
+        /// Index of the support.
+        index: usize,
+        /// The field.
+        field: SupportField,
+    },
+}
+
+/// A field of a support (model §7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SupportField {
+    /// Its head.
+    Head,
+    /// Its end.
+    End,
+    /// Its out-of-plane spacing.
+    Spacing,
+    /// A tendon's tensile capacity.
+    TensileCapacity,
+    /// A head plate's capacity.
+    PlateCapacity,
+    /// A bond strength.
+    BondStrength,
+    /// A tieback's bonded length.
+    BondLength,
+    /// A geosynthetic's tensile strength.
+    TensileStrength,
+    /// A pile's shear strength.
+    ShearStrength,
+}
+
+impl SupportField {
+    /// The field's name (as requests spell it).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Head => "head",
+            Self::End => "end",
+            Self::Spacing => "spacing",
+            Self::TensileCapacity => "tensile_capacity",
+            Self::PlateCapacity => "plate_capacity",
+            Self::BondStrength => "bond_strength",
+            Self::BondLength => "bond_length",
+            Self::TensileStrength => "tensile_strength",
+            Self::ShearStrength => "shear_strength",
+        }
+    }
 }
 
 impl std::fmt::Display for SlopeParameter {
@@ -118,6 +165,9 @@ impl std::fmt::Display for SlopeParameter {
             Self::CircleRadius => write!(f, "circle radius"),
             Self::Surface => write!(f, "slip surface"),
             Self::SurfaceVertex { index } => write!(f, "slip surface vertex {index}"),
+            Self::Support { index, field } => {
+                write!(f, "{} of support {}", field.name(), index + 1)
+            }
             Self::MomentCentre => write!(f, "moment centre"),
             Self::Search => write!(f, "search"),
         }

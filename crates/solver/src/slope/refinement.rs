@@ -173,6 +173,7 @@ mod tests {
             fx: 0.0,
             fy: -1.0,
             moment: 0.0,
+            passive: false,
         });
         assert!(refine_slices(
             problem,

@@ -191,4 +191,8 @@ pub struct ExternalLoad {
     pub fy: f64,
     /// Moment of the load about the middle of the base, counter-clockwise positive.
     pub moment: f64,
+    /// Whether its component along the base is mobilised like strength (a passive support:
+    /// added to the resisting force, divided by F) rather than known (reducing the driving
+    /// force); its component across the base presses the base either way.
+    pub passive: bool,
 }

@@ -30,6 +30,8 @@ pub(super) struct Cut {
     pub crack: Option<(f64, f64, f64)>,
     /// Whether the solver frame is the section mirrored.
     pub mirrored: bool,
+    /// Each support of the section against this surface (solver frame).
+    pub supports: Vec<super::SupportForce>,
 }
 
 /// y of the slip surface (before bedrock) at x.
@@ -182,13 +184,16 @@ impl Cut {
             &points,
             (tolerance, still_water_level(section, xa, xb)),
         );
-        let loads = loads(section, &slices, ponded, crack);
+        let mut loads = loads(section, &slices, ponded, crack);
         let surface: Vec<(f64, f64)> = boundaries
             .iter()
             .copied()
             .zip(base_ys.iter().copied())
             .chain(crack.map(|c| (c.0, c.2)))
             .collect();
+        let (supports, support_loads) =
+            super::supports::forces(&section.supports, &surface, &slices);
+        loads.extend(support_loads);
         let (reference, moment_centre, circular) = match shape {
             SlipShape::Circle { centre, .. } => (*centre, Some(*centre), true),
             SlipShape::Polyline(_) => {
@@ -225,6 +230,7 @@ impl Cut {
             surface,
             crack,
             mirrored,
+            supports,
         })
     }
 }
@@ -471,6 +477,7 @@ fn loads(
             fx,
             fy,
             moment,
+            passive: false,
         })
         .collect()
 }

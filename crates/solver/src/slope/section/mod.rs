@@ -20,6 +20,7 @@ pub mod polyline;
 pub mod search;
 mod simple;
 mod slicing;
+pub mod supports;
 #[cfg(test)]
 mod tests;
 
@@ -30,6 +31,7 @@ use std::num::NonZeroUsize;
 use super::slices::{SliceModel, Sliced};
 use super::spencer::{ExternalLoad, Seismic, Soil};
 pub use polyline::{Polyline, PolylineError};
+pub use supports::{Support, SupportForce};
 
 /// Largest magnitude of a pressure, force or unit weight (as for the simple form).
 const MAX_MAGNITUDE: f64 = 1e12;
@@ -90,6 +92,7 @@ pub struct Section {
     pub(crate) surcharges: Vec<Surcharge>,
     pub(crate) line_loads: Vec<LineLoad>,
     pub(crate) tension_crack: Option<TensionCrack>,
+    pub(crate) supports: Vec<Support>,
     /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
     bends: Vec<f64>,
     /// The lines above the bases between the bends.
@@ -121,6 +124,8 @@ pub struct SectionParts {
     pub line_loads: Vec<LineLoad>,
     /// Tension crack.
     pub tension_crack: Option<TensionCrack>,
+    /// Reinforcement (model §7).
+    pub supports: Vec<Support>,
 }
 
 impl Section {
@@ -255,6 +260,7 @@ impl Section {
                 });
             }
         }
+        supports::check(&parts.supports, &parts.ground)?;
         if let Some(line) = &parts.piezometric_line {
             let p = line.points();
             if g1 > g0 && (p[p.len() - 1].0 < g0 || p[0].0 > g1) {
@@ -296,6 +302,7 @@ impl Section {
             surcharges: parts.surcharges,
             line_loads: parts.line_loads,
             tension_crack: parts.tension_crack,
+            supports: parts.supports,
             bends: Vec::new(),
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
@@ -357,6 +364,11 @@ impl Section {
     /// The tension crack.
     pub fn tension_crack(&self) -> Option<TensionCrack> {
         self.tension_crack
+    }
+
+    /// The supports.
+    pub fn supports(&self) -> &[Support] {
+        &self.supports
     }
 
     /// Where the ground, layer tops and water line bend or cross, and the surcharge edges,
@@ -547,6 +559,11 @@ impl SectionProblem {
     /// The slices and loads in the solver's frame.
     pub fn model(&self) -> &SliceModel {
         &self.cut.model
+    }
+
+    /// Each support against this surface, in section coordinates (as the section lists them).
+    pub fn supports(&self) -> Vec<SupportForce> {
+        supports::in_section(&self.cut.supports, self.cut.mirrored)
     }
 }
 

@@ -56,6 +56,7 @@ impl Section {
                     pressure_end: s.pressure,
                 })
                 .collect(),
+            supports: self.supports.iter().map(|s| s.mirrored()).collect(),
             line_loads: self
                 .line_loads
                 .iter()
@@ -90,5 +91,6 @@ fn one_soil(ground: Polyline, soil: Soil, pore_pressure_ratio: Option<f64>) -> S
         surcharges: Vec::new(),
         line_loads: Vec::new(),
         tension_crack: None,
+        supports: Vec::new(),
     }
 }

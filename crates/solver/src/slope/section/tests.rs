@@ -44,6 +44,7 @@ pub(super) fn one_soil(ground: &[(f64, f64)], gamma: f64, c: f64, phi: f64) -> S
         surcharges: Vec::new(),
         line_loads: Vec::new(),
         tension_crack: None,
+        supports: Vec::new(),
     }
 }
 

@@ -88,7 +88,14 @@ impl Equations {
             let t = &mut terms[load.slice];
             let (sin_a, cos_a) = (t.sin_alpha, t.cos_alpha);
             let a_n = load.fx * sin_a - load.fy * cos_a;
-            t.a_t += -load.fx * cos_a - load.fy * sin_a;
+            let a_t = -load.fx * cos_a - load.fy * sin_a;
+            if load.passive {
+                // Mobilised like strength: R/F gains −A_t/F (a force against the sliding has
+                // A_t < 0).
+                t.resistance -= a_t;
+            } else {
+                t.a_t += a_t;
+            }
             t.a_n += a_n;
             t.resistance += a_n * t.tan_phi;
             t.moment += load.moment;
