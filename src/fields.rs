@@ -87,6 +87,7 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::SurfaceVertex { index } => format!("surface[{index}]"),
         SlopeParameter::MomentCentre => "moment_centre".to_owned(),
         SlopeParameter::Search => "search".to_owned(),
+        SlopeParameter::DesignFactor { name } => format!("design.factors.{name}"),
         SlopeParameter::Support { index, field } => {
             format!("section.supports[{index}].{}", field.name())
         }

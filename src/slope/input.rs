@@ -19,11 +19,12 @@ use super::section::{
 use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
-    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, RELATIVE_ERROR, SEARCH_LOWER_END_FACTOR,
-    SEISMIC_KH, SEISMIC_KV, SLICES, SLICE_TOLERANCE,
+    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
+    SEISMIC_KV, SLICES,
 };
 use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, Candidates, SectionSearch, SlopePlan, Target};
+use thrustline_solver::slope::design::{Action, Design};
 
 /// The ground and soil: a section, or the simple slope with its soil.
 enum Ground {
@@ -31,9 +32,11 @@ enum Ground {
     Section(Box<Section>),
 }
 
-/// The validated parts of a request that do not depend on the slip surface.
+/// The validated parts of a request that do not depend on the slip surface (in design values
+/// with a design check).
 struct Parts {
     ground: Ground,
+    design: Option<Design>,
     slices: NonZeroUsize,
     seismic: Seismic,
     external_loads: Vec<ExternalLoad>,
@@ -43,57 +46,10 @@ impl SpencerRequest {
     /// Validates the request into the analysis' plan.
     pub fn validate(&self) -> Result<SlopePlan, ApiError> {
         let parts = self.parts()?;
-        let slice_tolerance = self
-            .slice_tolerance
-            .map(|t| within("slice_tolerance", t, SLICE_TOLERANCE))
-            .transpose()?;
-        if slice_tolerance.is_some() && !parts.external_loads.is_empty() {
-            return Err(ApiError::invalid(
-                "slice_tolerance",
-                "cannot be combined with external_loads: loads are given per slice, and refining \
-                 changes the slices",
-            ));
-        }
-        let relative_error = self
-            .accuracy
-            .as_ref()
-            .map(|a| within("accuracy.relative_error", a.relative_error, RELATIVE_ERROR))
-            .transpose()?;
-        if relative_error.is_some() && slice_tolerance.is_some() {
-            return Err(ApiError::invalid(
-                "accuracy",
-                "give one of slice_tolerance (a change of F between doublings) and \
-                 accuracy.relative_error (an estimated error), not both",
-            ));
-        }
-        if relative_error.is_some() && !parts.external_loads.is_empty() {
-            return Err(ApiError::invalid(
-                "accuracy",
-                "cannot be combined with external_loads: loads are given per slice, and the \
-                 slices change",
-            ));
-        }
-        let given = [
-            self.circle.is_some(),
-            self.surface.is_some(),
-            self.search.is_some(),
-        ];
-        if given.iter().filter(|g| **g).count() > 1 {
-            return Err(ApiError::invalid(
-                if self.search.is_some() {
-                    "search"
-                } else {
-                    "surface"
-                },
-                "give one of circle, surface and search",
-            ));
-        }
-        if self.moment_centre.is_some() && self.surface.is_none() {
-            return Err(ApiError::invalid(
-                "moment_centre",
-                "is for a polyline surface only (a circle uses its centre)",
-            ));
-        }
+        let design = parts.design;
+        let (slice_tolerance, relative_error) =
+            super::checks::refinement(self, !parts.external_loads.is_empty())?;
+        super::checks::one_surface(self)?;
         let mut candidates = Candidates::default();
         let target = if let Some(circle) = &self.circle {
             circle_target(circle, parts)?
@@ -138,14 +94,22 @@ impl SpencerRequest {
             interslice_function: interslice_function(self.interslice_function.as_deref())?,
             negative_effective_stress: self.negative_effective_stress.into(),
             candidates,
+            design,
         })
     }
 
     /// Validates everything but the slip surface.
     fn parts(&self) -> Result<Parts, ApiError> {
         let slices = count_within("slices", self.slices, SLICES)?;
+        let design = self
+            .design
+            .as_ref()
+            .map(super::design::design)
+            .transpose()?;
         let ground = match (&self.section, &self.slope, &self.soil) {
-            (Some(section), None, None) => Ground::Section(Box::new(section_from(section)?)),
+            (Some(section), None, None) => {
+                Ground::Section(Box::new(section_from(section, design.as_ref())?))
+            }
             (Some(_), _, _) => {
                 return Err(ApiError::invalid(
                     if self.slope.is_some() {
@@ -161,6 +125,10 @@ impl SpencerRequest {
                 let height = length("slope.height", slope.height)?;
                 let slope_length = length("slope.length", slope.length)?;
                 let soil = soil_from("soil", soil, soil.pore_pressure_ratio.unwrap_or(0.0))?;
+                let soil = match &design {
+                    Some(d) => d.soil(soil)?,
+                    None => soil,
+                };
                 Ground::Simple(Embankment::new(height, slope_length)?, soil)
             }
             (None, None, _) => {
@@ -194,7 +162,9 @@ impl SpencerRequest {
             .enumerate()
             .map(|(i, load)| {
                 let field = |name: &str| format!("external_loads[{i}].{name}");
-                let force = |name: &str, v: f64| within(&field(name), v, FORCE);
+                // Per-slice loads are permanent and unfavourable in a design check.
+                let k = design.map_or(1.0, |d| d.load_factor(Action::default()));
+                let force = |name: &str, v: f64| within(&field(name), v, FORCE).map(|v| v * k);
                 Ok(ExternalLoad {
                     slice: count(&field("slice"), load.slice, 1, slices)? - 1,
                     fx: force("fx", load.fx)?,
@@ -208,6 +178,7 @@ impl SpencerRequest {
             .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
         Ok(Parts {
             ground,
+            design,
             slices,
             seismic,
             external_loads,

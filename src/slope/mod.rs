@@ -5,10 +5,13 @@
 //! and [`drawing`] the picture, both from the solver's results. Slices are numbered from 1 at
 //! the lower end of the slip surface, as the thesis prints them.
 
+pub mod checks;
 pub mod contours;
+pub mod design;
 pub mod drawing;
 pub mod fills;
 pub mod input;
+pub mod loads;
 pub mod methods;
 pub mod options;
 pub mod outputs;

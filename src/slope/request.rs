@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+pub use super::loads::{LineLoadDto, SurchargeDto};
 pub use super::options::{AccuracyDto, CompositeDto};
 
 /// The embankment: toe at the origin, slope face up to (length, height), level crest beyond.
@@ -167,6 +168,11 @@ pub struct SpencerRequest {
     /// all of them. Drawings ignore it.
     #[serde(default)]
     pub include: Option<Vec<super::response::SlopeDetailDto>>,
+    /// A partial-factor check (EN 1997-1): `{"approach": "DA1-2"}` or `{"factors": {...}}`.
+    /// The analysis (and a search) runs on the design values; the answer adds `design` with the
+    /// over-design factor and whether it is verified.
+    #[serde(default)]
+    pub design: Option<super::design::DesignDto>,
     /// Also return Spencer's curves F_f(θ) and F_m(θ) around the solution. Defaults to false.
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
@@ -354,37 +360,6 @@ pub struct LayerDto {
     pub top: Option<Vec<Coordinates>>,
     /// The layer's soil.
     pub soil: SoilDto,
-}
-
-/// A vertical pressure on the ground over [x_start, x_end], downward.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct SurchargeDto {
-    /// Left end.
-    pub x_start: f64,
-    /// Right end (> x_start).
-    pub x_end: f64,
-    /// Pressure at x_start, 0 ≤ p ≤ 1e12.
-    pub pressure: f64,
-    /// Pressure at x_end (linear in between). Defaults to `pressure`.
-    #[serde(default)]
-    pub pressure_end: Option<f64>,
-}
-
-/// A force on the ground point above x.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct LineLoadDto {
-    /// Where it acts.
-    pub x: f64,
-    /// Horizontal component, positive towards +x. Defaults to 0.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
-    pub fx: f64,
-    /// Vertical component, positive upwards (a weight is negative). Defaults to 0.
-    #[serde(default, deserialize_with = "crate::nullable::or_default")]
-    #[schema(nullable)]
-    pub fy: f64,
 }
 
 /// A tension crack: where the slip surface rises through the ground moved down by `depth`, it

@@ -239,6 +239,10 @@ pub struct SpencerResponse {
     /// crosses, its force per unit width, what limits it).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub supports: Vec<super::supports::SupportOutDto>,
+    /// With `design`: the partial factors applied, F on the design values, the over-design
+    /// factor and whether it is verified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub design: Option<super::design::DesignOutDto>,
 }
 
 /// One step of the slice refinement.
@@ -369,6 +373,7 @@ impl SpencerResponse {
                 let Analysed::Section(section) = problem;
                 super::supports::supports_out(&section.supports(), section.section().supports())
             },
+            design: solved.design.as_ref().map(super::design::design_out),
         }
     }
 }

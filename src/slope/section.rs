@@ -10,6 +10,7 @@ use thrustline_solver::slope::section::{
 };
 use thrustline_solver::slope::Soil;
 
+use super::design::action;
 use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto, SoilDto};
 use crate::error::ApiError;
 use crate::limits::{
@@ -19,6 +20,7 @@ use crate::limits::{
     VERTICES,
 };
 use crate::validation::{count_within, number, within};
+use thrustline_solver::slope::design::Design;
 
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
@@ -264,7 +266,7 @@ pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
 }
 
 /// The section as the solver takes it.
-pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
+pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section, ApiError> {
     let ground = polyline("section.ground", &dto.ground)?;
     count_within("section.layers", dto.layers.len(), LAYERS)?;
     let layers = dto
@@ -335,7 +337,7 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
             Ok::<_, ApiError>(TensionCrack { depth, water_depth })
         })
         .transpose()?;
-    Ok(Section::new(SectionParts {
+    let parts = SectionParts {
         ground,
         layers,
         bedrock: line("section.bedrock", &dto.bedrock)?,
@@ -345,7 +347,32 @@ pub fn section_from(dto: &SectionDto) -> Result<Section, ApiError> {
         line_loads,
         tension_crack,
         supports: super::supports::supports(&dto.supports)?,
-    })?)
+    };
+    // The design values, once: soils and loads by their actions.
+    let parts = match design {
+        Some(design) => in_design_values(parts, dto, design)?,
+        None => parts,
+    };
+    Ok(Section::new(parts)?)
+}
+
+/// The section's parts in a design check's values (each load by its action).
+fn in_design_values(
+    parts: SectionParts,
+    dto: &SectionDto,
+    design: &Design,
+) -> Result<SectionParts, ApiError> {
+    let surcharges: Vec<_> = dto
+        .surcharges
+        .iter()
+        .map(|s| action(s.action, s.favourable))
+        .collect();
+    let line_loads: Vec<_> = dto
+        .line_loads
+        .iter()
+        .map(|l| action(l.action, l.favourable))
+        .collect();
+    Ok(design.section(parts, (&surcharges, &line_loads))?)
 }
 
 /// The surcharges on a section's ground, each over x_start < x_end.

@@ -85,6 +85,11 @@ pub enum SlopeParameter {
     MomentCentre,
     /// A search (what it found could not be analysed).
     Search,
+    /// A partial factor of a design check (its name as requests spell it).
+    DesignFactor {
+        /// The factor's name.
+        name: &'static str,
+    },
     /// A field of support `index` (0-based).
     Support {
         /// Index of the support.
@@ -165,6 +170,7 @@ impl std::fmt::Display for SlopeParameter {
             Self::CircleRadius => write!(f, "circle radius"),
             Self::Surface => write!(f, "slip surface"),
             Self::SurfaceVertex { index } => write!(f, "slip surface vertex {index}"),
+            Self::DesignFactor { name } => write!(f, "partial factor {name}"),
             Self::Support { index, field } => {
                 write!(f, "{} of support {}", field.name(), index + 1)
             }

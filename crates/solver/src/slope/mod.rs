@@ -12,9 +12,11 @@
 //! - [`search`]: the critical slip circle over a grid of centres, refined.
 //! - [`section`]: any cross-section, any slip surface, and their searches.
 //! - [`analysis`]: one analysis of a plan within a budget — what runs after what.
+//! - [`design`]: partial factors (EN 1997-1): the scene in design values and the verdict.
 
 pub mod accuracy;
 pub mod analysis;
+pub mod design;
 mod error;
 pub mod geometry;
 pub mod refinement;
@@ -24,7 +26,7 @@ pub mod slices;
 pub mod spencer;
 
 pub use crate::outcome::SolverFailure;
-pub use error::{SlopeError, SlopeParameter};
+pub use error::{SlopeError, SlopeParameter, SupportField};
 pub use geometry::{Embankment, Slice, SlipCircle, SlopeGeometry};
 pub use refinement::{
     refine_slices, RefinedSolution, RefinementSettings, RefinementStatus, RefinementStep,

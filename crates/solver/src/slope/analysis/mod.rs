@@ -104,6 +104,9 @@ pub struct SlopePlan {
     pub negative_effective_stress: NegativeEffectiveStress,
     /// What a search may answer.
     pub candidates: Candidates,
+    /// A design check: the target is already in its design values; the answer gets the
+    /// verdict.
+    pub design: Option<crate::slope::design::Design>,
 }
 
 /// The surfaces a search may answer (model §6.4).
@@ -129,6 +132,7 @@ impl SlopePlan {
             interslice_function: InterSliceFunction::HalfSine,
             negative_effective_stress: NegativeEffectiveStress::Keep,
             candidates: Candidates::default(),
+            design: None,
         }
     }
 }
@@ -208,8 +212,10 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         );
         found
     });
+    let design = plan.design.map(|d| d.verdict(solution.factor_of_safety));
     Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
         problem,
+        design,
         solution,
         search,
         curves,

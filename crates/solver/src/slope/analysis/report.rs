@@ -111,6 +111,8 @@ pub struct SlopeAnswer {
     pub refinement: Option<Refinement>,
     /// The estimated discretisation error of F at the slices answered.
     pub accuracy: crate::slope::accuracy::Accuracy,
+    /// With a design check: its verdict on F.
+    pub design: Option<crate::slope::design::Verdict>,
 }
 
 /// Which stage of a slope plan a stop ended.
