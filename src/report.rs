@@ -150,8 +150,9 @@ pub fn escape(text: &str) -> String {
 }
 
 /// The answer's scalars by their dotted path, in alphabetical order: top-level numbers, strings
-/// and booleans, those of objects one level down (`accuracy.discretisation_error`), and short
-/// lists of scalars; tables, nulls and the warnings (printed on their own) are left out.
+/// and booleans, those of objects up to two levels down (`accuracy.discretisation_error`,
+/// `design.factors.friction`), and short lists of scalars; tables, nulls and the warnings
+/// (printed on their own) are left out.
 pub fn scalars(answer: &Value) -> Vec<(String, String)> {
     fn short_list(items: &[Value]) -> Option<String> {
         (!items.is_empty()
@@ -159,26 +160,33 @@ pub fn scalars(answer: &Value) -> Vec<(String, String)> {
             && items.iter().all(|v| !v.is_object() && !v.is_array()))
         .then(|| items.iter().map(cell).collect::<Vec<_>>().join(", "))
     }
+    /// The scalars of `value` under `path`, objects `depth` levels deep at most.
+    fn walk(path: String, value: &Value, depth: usize, out: &mut Vec<(String, String)>) {
+        match value {
+            Value::Null => {}
+            Value::Array(items) => out.extend(short_list(items).map(|v| (path, v))),
+            Value::Object(inner) if depth > 0 => {
+                for (name, v) in inner {
+                    let inner_path = if path.is_empty() {
+                        name.clone()
+                    } else {
+                        format!("{path}.{name}")
+                    };
+                    walk(inner_path, v, depth - 1, out);
+                }
+            }
+            Value::Object(_) => {}
+            scalar => out.push((path, cell(scalar))),
+        }
+    }
     let mut out = Vec::new();
     let Some(object) = answer.as_object() else {
         return out;
     };
+    // The answer's own fields, those of its blocks and of their blocks (a design check's
+    // factors); the warnings are printed on their own.
     for (key, value) in object.iter().filter(|(k, _)| k.as_str() != "warnings") {
-        match value {
-            Value::Null => {}
-            Value::Array(items) => out.extend(short_list(items).map(|v| (key.clone(), v))),
-            Value::Object(inner) => {
-                for (name, v) in inner {
-                    let text = match v {
-                        Value::Null | Value::Object(_) => None,
-                        Value::Array(items) => short_list(items),
-                        scalar => Some(cell(scalar)),
-                    };
-                    out.extend(text.map(|t| (format!("{key}.{name}"), t)));
-                }
-            }
-            scalar => out.push((key.clone(), cell(scalar))),
-        }
+        walk(key.clone(), value, 2, &mut out);
     }
     out
 }
@@ -373,9 +381,10 @@ mod tests {
             "&lt;a href=&#39;x&#39;&gt;&amp;&quot;&lt;/a&gt;"
         );
         let answer = serde_json::json!({"f": 1.5, "none": null, "ok": true, "status": "converged",
-            "accuracy": {"slices": 100, "e": 1e-7, "deep": {"x": 1}}, "rows": [{"a": 1}],
+            "accuracy": {"slices": 100, "e": 1e-7, "deep": {"x": 1, "deeper": {"y": 2}}}, "rows": [{"a": 1}],
             "omitted": ["slices", "grid"], "warnings": [{"code": "tension"}]});
         let expected = [
+            ("accuracy.deep.x", "1"),
             ("accuracy.e", "1e-7"),
             ("accuracy.slices", "100"),
             ("f", "1.5"),

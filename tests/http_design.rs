@@ -275,3 +275,158 @@ async fn the_characteristic_factor_docs_slopes_states_for_its_design_example() {
     assert_eq!(status, 200, "{answer}");
     assert!((f(&answer) - 1.6858).abs() < 5e-5, "{}", f(&answer));
 }
+
+#[tokio::test]
+async fn the_drawing_and_the_report_show_the_approach_and_its_factors() {
+    let server = Server::start().await;
+    let body = request(
+        section(None, 1.0, 1.0, true),
+        Some(json!({"approach": "DA2"})),
+    );
+    let (_, _, answer) = server.post("/slope/spencer", &body).await;
+    let odf = answer["design"]["over_design_factor"].as_f64().unwrap();
+    let text = |path: &'static str| {
+        let server = &server;
+        let body = body.clone();
+        async move {
+            server
+                .client
+                .post(format!("{}{path}", server.base))
+                .json(&body)
+                .send()
+                .await
+                .unwrap()
+                .text()
+                .await
+                .unwrap()
+        }
+    };
+    let svg = text("/slope/spencer/svg").await;
+    roxmltree::Document::parse(&svg).unwrap();
+    assert!(
+        svg.contains(
+            "EN 1997-1 DA2, on design values: γ_φ 1 γ_c 1 γ_cu 1 γ_γ 1 γ_G 1.35 γ_Q 1.5 γ_R 1.1"
+        ),
+        "no design key"
+    );
+    assert!(svg.contains(&format!("over-design factor {odf:.3}")));
+    let page = text("/slope/spencer/report").await;
+    for (field, value) in [
+        ("design.approach", "DA2".to_owned()),
+        ("design.factors.permanent", "1.35".to_owned()),
+        ("design.factors.resistance", "1.1".to_owned()),
+        ("design.over_design_factor", odf.to_string()),
+    ] {
+        let row = format!("<tr><th>{field}</th><td class=\"n\">{value}</td></tr>");
+        assert!(page.contains(&row), "the report lacks {row}");
+    }
+}
+
+/// A filled bridge with crushing and a road load, its inputs factored by hand: (γ_d, γ_f, γ_l,
+/// γ_m).
+fn bridge(factors: (f64, f64, f64, f64), design: Option<Value>) -> Value {
+    let (dead, fill, live, strength) = factors;
+    let mut body = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 60},
+        "unit_weight": 2.0 * dead,
+        "compressive_strength": 2000.0 / strength,
+        "fill": {"unit_weight": 1.8 * fill, "surface": 11.5},
+        "road_loads": [{"x": -4.0, "fy": -10.0 * live, "length": 0.3}],
+        "include": []
+    });
+    if let Some(d) = design {
+        body["design"] = d;
+    }
+    body
+}
+
+#[tokio::test]
+async fn an_arch_s_adequacy_is_the_hand_factored_request_s_load_factor() {
+    let server = Server::start().await;
+    let (status, _, plain) = server
+        .post("/arch/live-load", &bridge((1.0, 1.0, 1.0, 1.0), None))
+        .await;
+    assert_eq!(status, 200, "{plain}");
+    assert!(plain.get("design").is_none());
+    let mut answered = 0;
+    for factors in [
+        (1.2, 1.2, 1.5, 1.0),
+        (1.0, 1.0, 1.0, 2.0),
+        (1.35, 1.1, 1.7, 1.2),
+        (1.0, 1.0, 0.05, 1.0),
+    ] {
+        let design = json!({"factors": {"dead": factors.0, "fill": factors.1,
+                                        "live": factors.2, "strength": factors.3}});
+        let (status, _, answer) = server
+            .post(
+                "/arch/live-load",
+                &bridge((1.0, 1.0, 1.0, 1.0), Some(design)),
+            )
+            .await;
+        assert_eq!(status, 200, "{answer}");
+        let (_, _, hand) = server.post("/arch/live-load", &bridge(factors, None)).await;
+        // λ of the hand-factored request, or none where its dead load is not carried (the
+        // strength halved): the adequacy is the same, and not verified without one.
+        let lambda = hand["load_factor"].as_f64();
+        let adequacy = answer["design"]["adequacy_factor"].as_f64();
+        match (adequacy, lambda) {
+            (Some(a), Some(l)) => {
+                close(a, l, &format!("{factors:?}"));
+                close(answer["load_factor"].as_f64().unwrap(), l, "λ");
+                answered += 1;
+            }
+            (None, None) => assert_eq!(hand["stable"], answer["stable"]),
+            other => panic!("{factors:?}: {other:?}"),
+        }
+        assert_eq!(
+            answer["design"]["verified"],
+            lambda.is_some_and(|l| l >= 1.0)
+        );
+        assert_eq!(answer["design"]["factors"]["live"], factors.2);
+    }
+    assert!(answered >= 3, "only {answered} cases with a λ");
+    // The live-load factor alone divides λ exactly (λ is linear in the live load).
+    let (_, _, live) = server
+        .post(
+            "/arch/live-load",
+            &bridge(
+                (1.0, 1.0, 1.0, 1.0),
+                Some(json!({"factors": {"live": 2.0}})),
+            ),
+        )
+        .await;
+    close(
+        live["design"]["adequacy_factor"].as_f64().unwrap(),
+        plain["load_factor"].as_f64().unwrap() / 2.0,
+        "γ_l = 2",
+    );
+    for (factors, field) in [
+        (json!({"dead": 0}), "design.factors.dead"),
+        (json!({"strength": -1}), "design.factors.strength"),
+        (json!({"live": 101}), "design.factors.live"),
+    ] {
+        let body = bridge((1.0, 1.0, 1.0, 1.0), Some(json!({"factors": factors})));
+        let (status, content_type, problem) = server.post("/arch/live-load", &body).await;
+        assert_problem(status, &content_type, &problem, 422, field);
+    }
+    let body = bridge(
+        (1.0, 1.0, 1.0, 1.0),
+        Some(json!({"factors": {"wind": 1.2}})),
+    );
+    let (status, _, _) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 422);
+}
+
+#[tokio::test]
+async fn the_unfactored_lambda_docs_arches_states_for_its_assessment_example() {
+    // docs/arches.md's assessment example without its check: λ = 1.3761 as its prose says.
+    let server = Server::start().await;
+    let body = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
+        "unit_weight": 2.0, "compressive_strength": 2000,
+        "fill": {"unit_weight": 1.8, "surface": 11.5},
+        "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}], "include": []});
+    let (_, _, answer) = server.post("/arch/live-load", &body).await;
+    let lambda = answer["load_factor"].as_f64().unwrap();
+    assert!((lambda - 1.3761).abs() < 5e-5, "{lambda}");
+}

@@ -53,6 +53,8 @@ pub struct ArchInput {
     /// Rings that cannot slip on each other (one span, no rolling load): the same request on
     /// one ring of the whole thickness, whose λ the answer is compared with (`rings_locked`).
     pub bonded: Option<ArchProblem>,
+    /// A partial-factor check: the problem is in its design values.
+    pub design: Option<super::design::ArchFactors>,
 }
 
 /// What a request adds to the blocks' own loads: fill, road loads, rolling axles.
@@ -90,7 +92,22 @@ impl DeadLoadRequest {
 impl LiveLoadRequest {
     /// Validates the request into the solver's input.
     pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
+        if let Some(design) = &self.design {
+            // The design values, once; the input remembers the check for the answer.
+            let factors = super::design::factors(design)?;
+            let mut input =
+                super::design::in_design_values(self, &factors).validate(time_limit_secs)?;
+            input.design = Some(factors);
+            return Ok(input);
+        }
         count_within("loads", self.loads.len(), LOADS)?;
+        if self.friction == FrictionDto::NonAssociative && self.rolling.is_some() {
+            return Err(ApiError::invalid(
+                "friction",
+                "non_associative is not available with rolling (each stop would iterate): roll \
+                 with the associative rule, then check the critical stop with loads",
+            ));
+        }
         if self.loads.is_empty() && self.road_loads.is_empty() && self.rolling.is_none() {
             return Err(ApiError::invalid(
                 "loads",
@@ -169,13 +186,6 @@ fn input(
     )?
     .with_dead_loads(filled.dead.clone())?
     .with_passive(filled.passive.clone().unwrap_or_default())?;
-    if fields.friction == FrictionDto::NonAssociative && extras.rolling.is_some() {
-        return Err(ApiError::invalid(
-            "friction",
-            "non_associative is not available with rolling (each stop would iterate): roll with \
-             the associative rule, then check the critical stop with loads",
-        ));
-    }
     let problem = with_rings_and_crushing(problem, &fields)?;
     // Passive forces are variables of their own: the general assembly carries them.
     // So do assemblies that are not chains: the answer names what was used.
@@ -198,6 +208,7 @@ fn input(
     let bonded = bonded(&fields, &problem, loads, extras, time_limit_secs);
     Ok(ArchInput {
         bonded,
+        design: None,
         problem,
         settings,
         is_curved,

@@ -8,6 +8,7 @@
 
 pub mod assembly;
 pub mod codes;
+pub mod design;
 pub mod drawing;
 pub mod fill;
 pub mod geometry;

@@ -372,6 +372,11 @@ limit_request! {
         /// load factor at each stop in `rolling`, the answer at the critical stop.
         #[serde(default)]
         pub rolling: Option<super::rolling::RollingDto>,
+        /// A partial-factor assessment: `{"factors": {"dead", "fill", "live", "strength"}}`.
+        /// The analysis runs on the design values; the answer adds `design` with the adequacy
+        /// factor (λ on the factored live load) and whether it is at least 1.
+        #[serde(default)]
+        pub design: Option<super::design::ArchDesignDto>,
     }
 }
 
@@ -382,4 +387,14 @@ pub(crate) fn unit() -> f64 {
 
 fn default_solver_tolerance() -> f64 {
     1e-10
+}
+
+/// How the answer names the formulation the solver used.
+impl From<thrustline_solver::arch::Formulation> for FormulationDto {
+    fn from(formulation: thrustline_solver::arch::Formulation) -> Self {
+        match formulation {
+            thrustline_solver::arch::Formulation::Chain => Self::Chain,
+            thrustline_solver::arch::Formulation::Assembly => Self::Assembly,
+        }
+    }
 }

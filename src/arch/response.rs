@@ -214,6 +214,10 @@ pub struct LiveLoadResponse {
     /// With `rolling`: λ at each stop; the rest of the answer is the critical stop's.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rolling: Option<RollingOutDto>,
+    /// With `design`: the factors applied, the adequacy factor (λ on the design values) and
+    /// whether it is at least 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub design: Option<super::design::ArchDesignOutDto>,
     /// Details.
     #[serde(flatten)]
     pub outcome: ArchOutcomeDto,
@@ -284,6 +288,10 @@ impl LiveLoadResponse {
             fill_weight: solved.input.fill_weight,
             passive: passive(solved),
             rolling: solved.rolling.clone(),
+            design: solved
+                .input
+                .design
+                .map(|f| super::design::verdict(f, solved.solution.load_factor)),
             outcome: ArchOutcomeDto::new(solved),
         }
     }
@@ -434,15 +442,6 @@ impl ArchOutcomeDto {
                 tolerance: solved.input.settings.tolerance,
             },
             omitted,
-        }
-    }
-}
-
-impl From<thrustline_solver::arch::Formulation> for FormulationDto {
-    fn from(formulation: thrustline_solver::arch::Formulation) -> Self {
-        match formulation {
-            thrustline_solver::arch::Formulation::Chain => Self::Chain,
-            thrustline_solver::arch::Formulation::Assembly => Self::Assembly,
         }
     }
 }

@@ -190,5 +190,36 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     if let Some(label) = supports {
         canvas.key(&format!("— {label}"), supports::COLOUR, 11.0, true);
     }
+    if let Some(verdict) = &solved.design {
+        canvas.key(&design_caption(verdict), "#37474f", 11.0, true);
+    }
     canvas.finish(title)
+}
+
+/// A design check in the key: the approach, its factors, the over-design factor.
+fn design_caption(verdict: &thrustline_solver::slope::design::Verdict) -> String {
+    use thrustline_solver::slope::design::Approach;
+    let f = &verdict.design.factors;
+    let approach = match verdict.design.approach {
+        Approach::Da1Combination1 => "EN 1997-1 DA1-1",
+        Approach::Da1Combination2 => "EN 1997-1 DA1-2",
+        Approach::Da2 => "EN 1997-1 DA2",
+        Approach::Da3 => "EN 1997-1 DA3",
+        Approach::Custom => "partial factors",
+    };
+    let odf = verdict.over_design_factor.map_or("none".to_owned(), |v| {
+        format!(
+            "{v:.3} ({})",
+            if verdict.verified {
+                "verified"
+            } else {
+                "not verified"
+            }
+        )
+    });
+    format!(
+        "{approach}, on design values: γ_φ {} γ_c {} γ_cu {} γ_γ {} γ_G {} γ_Q {} γ_R {}; \
+         over-design factor {odf}",
+        f.friction, f.cohesion, f.undrained, f.unit_weight, f.permanent, f.variable, f.resistance
+    )
 }
