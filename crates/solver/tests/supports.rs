@@ -36,19 +36,8 @@ fn plane() -> ((f64, f64), (f64, f64)) {
 
 fn section(supports: Vec<Support>) -> Section {
     Section::new(SectionParts {
-        ground: Polyline::new(ground()).unwrap(),
-        layers: vec![Layer {
-            top: None,
-            soil: Soil::new(GAMMA, COHESION, PHI_DEG, 0.0).unwrap(),
-            pore_pressure_ratio: None,
-        }],
-        bedrock: None,
-        piezometric_line: None,
-        water_unit_weight: 9.81,
-        surcharges: Vec::new(),
-        line_loads: Vec::new(),
-        tension_crack: None,
         supports,
+        ..section_parts()
     })
     .unwrap()
 }
