@@ -44,6 +44,8 @@ pub struct Canvas {
     scale_bar: String,
     /// Items of the key: (text, colour, font size, whether it starts a new line).
     key: Vec<(String, String, f64, bool)>,
+    /// Arrowheads in colours of their own ([`Canvas::arrow_in`]), as `#rrggbb`.
+    heads: std::collections::BTreeSet<String>,
 }
 
 /// Baseline of the key's first line, and the distance between its lines (pixels).
@@ -88,6 +90,7 @@ impl Canvas {
             body: String::new(),
             scale_bar: String::new(),
             key: Vec::new(),
+            heads: std::collections::BTreeSet::new(),
         };
         let (a, b) = (canvas.px((x0, y1)), canvas.px((x1, y0)));
         canvas.plot = [a.0, a.1, b.0, b.1];
@@ -270,6 +273,18 @@ impl Canvas {
         ));
     }
 
+    /// An arrow from `from` to `to` in `colour` (`#rrggbb`), its head in the same colour: a
+    /// force of its own kind, told apart from the live loads' blue arrows.
+    pub fn arrow_in(&mut self, from: (f64, f64), to: (f64, f64), colour: &str, width: f64) {
+        let id = colour.trim_start_matches('#').to_owned();
+        let (a, b) = (self.px(from), self.px(to));
+        self.raw(&format!(
+            "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" marker-end=\"url(#arrow-{id})\" stroke=\"{colour}\" stroke-width=\"{width}\"/>",
+            a.0, a.1, b.0, b.1
+        ));
+        self.heads.insert(colour.to_owned());
+    }
+
     /// An arrow from `from` to `to` (section coordinates).
     pub fn arrow(&mut self, from: (f64, f64), to: (f64, f64), style: &str) {
         let (a, b) = (self.px(from), self.px(to));
@@ -359,11 +374,19 @@ impl Canvas {
         format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\" \
              data-frame=\"{x0} {top} {y1} {scale}\">\n\
-             <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker>\
+             <defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#1565c0\"/></marker>{heads}\
              <clipPath id=\"plot\"><rect x=\"{px0:.2}\" y=\"{py0:.2}\" width=\"{pw:.2}\" height=\"{ph:.2}\"/></clipPath></defs>\n\
              <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
              <text x=\"{m}\" y=\"22\" font-size=\"15\" font-family=\"sans-serif\" fill=\"#222\">{t}</text>\n{bar}\n{key}\
              <g transform=\"translate(0 {shift:.0})\">\n{b}</g>\n</svg>\n",
+            heads = self
+                .heads
+                .iter()
+                .map(|c| format!(
+                    "<marker id=\"arrow-{}\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"{c}\"/></marker>",
+                    c.trim_start_matches('#')
+                ))
+                .collect::<String>(),
             w = WIDTH,
             h = self.height + shift,
             x0 = self.x0,

@@ -93,10 +93,11 @@ async fn a_search_gives_each_trial_surface_its_own_forces_and_the_drawing_shows_
         f(&unreinforced)
     );
     assert_eq!(answer["supports"].as_array().unwrap().len(), 1);
+    // Drawn on the plane, which the nail crosses.
     let response = server
         .client
         .post(format!("{}/slope/spencer/svg", server.base))
-        .json(&search)
+        .json(&nailed("active"))
         .send()
         .await
         .unwrap();
@@ -107,6 +108,15 @@ async fn a_search_gives_each_trial_surface_its_own_forces_and_the_drawing_shows_
         "no key entry"
     );
     assert!(svg.contains("stroke=\"#2e7d32\""), "no support drawn");
+    // The support forces' arrowheads are green, not the live loads' blue ones.
+    assert!(
+        svg.contains("marker-end=\"url(#arrow-2e7d32)\""),
+        "no green arrow"
+    );
+    assert!(
+        svg.contains("<marker id=\"arrow-2e7d32\""),
+        "no green arrowhead defined"
+    );
 }
 
 #[tokio::test]

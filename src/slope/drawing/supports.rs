@@ -43,11 +43,7 @@ pub fn supports(canvas: &mut Canvas, problem: &Analysed, size: f64) -> Option<St
         if f.force > 0.0 && largest > 0.0 {
             let length = 0.12 * size * f.force / largest;
             let tip = (at.0 + length * f.direction.0, at.1 + length * f.direction.1);
-            canvas.arrow(
-                at,
-                tip,
-                &format!("stroke=\"{COLOUR}\" stroke-width=\"1.6\""),
-            );
+            canvas.arrow_in(at, tip, COLOUR, 1.6);
             if k < MAX_LABELS {
                 canvas.text(
                     tip,
