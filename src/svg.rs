@@ -6,6 +6,10 @@
 use std::fmt::Write;
 
 mod labels;
+mod numbers;
+
+pub use numbers::{escape, heat};
+use numbers::{nice_step, tick};
 
 pub use labels::Labels;
 
@@ -403,63 +407,9 @@ impl Canvas {
     }
 }
 
-/// 1, 2 or 5 times a power of ten, at least `raw`.
-fn nice_step(raw: f64) -> f64 {
-    if !(raw > 0.0 && raw.is_finite()) {
-        return 1.0;
-    }
-    let power = 10f64.powf(raw.log10().floor());
-    [1.0, 2.0, 5.0, 10.0]
-        .iter()
-        .map(|m| m * power)
-        .find(|s| *s >= raw)
-        .unwrap_or(10.0 * power)
-}
-
-fn tick(v: f64) -> String {
-    let s = format!("{v:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_owned()
-    } else {
-        s.to_owned()
-    }
-}
-
-/// Escapes text for SVG.
-pub fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
-
-/// A colour from blue (t = 0) through yellow to red (t = 1).
-pub fn heat(t: f64) -> String {
-    let t = t.clamp(0.0, 1.0);
-    let (r, g, b) = if t < 0.5 {
-        let u = t / 0.5;
-        (40.0 + u * 215.0, 90.0 + u * 150.0, 200.0 - u * 160.0)
-    } else {
-        let u = (t - 0.5) / 0.5;
-        (255.0, 240.0 - u * 180.0, 40.0)
-    };
-    format!("rgb({:.0},{:.0},{:.0})", r, g, b)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn steps_and_ticks() {
-        assert_eq!(nice_step(0.7), 1.0);
-        assert_eq!(nice_step(13.0), 20.0);
-        assert_eq!(nice_step(0.03), 0.05);
-        assert_eq!(tick(2.50), "2.5");
-        assert_eq!(tick(-0.0), "0");
-        assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
-    }
 
     #[test]
     fn canvas_maps_y_up_and_fits_the_width() {
