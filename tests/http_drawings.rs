@@ -408,3 +408,40 @@ async fn multi_ring_drawings_stay_small_and_draw_every_block() {
         assert_eq!(stated, expected > 1000, "{what}");
     }
 }
+
+#[tokio::test]
+async fn drawn_loads_are_in_the_key() {
+    // Issue 46: a surcharge was drawn but missing from the key. The key is the text above the
+    // plot: each item's text in the colour of what it names.
+    let server = Server::start().await;
+    let section = |surcharges: Value| {
+        json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+                           "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}}],
+                           "surcharges": surcharges},
+               "circle": {"centre": [12, 28], "radius": 26}, "slices": 40})
+    };
+    let loaded = svg(
+        &server,
+        "/slope/spencer/svg",
+        &section(json!([{"x_start": 25, "x_end": 35, "pressure": 20}])),
+    )
+    .await;
+    let document = roxmltree::Document::parse(&loaded).unwrap();
+    let key = document
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .find(|n| {
+            n.text()
+                .is_some_and(|t| t.contains("surcharges and line loads"))
+        })
+        .expect("the surcharge's key item");
+    assert_eq!(
+        key.attribute("fill"),
+        Some("#e65100"),
+        "the key item's colour"
+    );
+    assert!(loaded.contains("stroke=\"#e65100\""), "the surcharge drawn");
+    // Without loads, no such key item.
+    let bare = svg(&server, "/slope/spencer/svg", &section(json!([]))).await;
+    assert!(!bare.contains("surcharges and line loads"));
+}

@@ -437,3 +437,38 @@ async fn an_evaluation_budget_gives_the_same_answer_every_time() {
         assert_problem(status, &content_type, &answer, 422, field);
     }
 }
+
+#[tokio::test]
+async fn the_drawing_of_a_non_circular_answer_is_titled_by_its_surface() {
+    // Issue 46: a non-circular search's answer was titled "the critical slip circle".
+    let server = Server::start().await;
+    let body =
+        json!({"section": yamagami_ueta(), "search": {"shape": "noncircular"}, "slices": 50});
+    let response = server
+        .client
+        .post(format!("{}/slope/spencer/svg", server.base))
+        .json(&body)
+        .send()
+        .await
+        .unwrap();
+    let svg = response.text().await.unwrap();
+    let document = roxmltree::Document::parse(&svg).unwrap();
+    let title = document
+        .descendants()
+        .find(|n| n.has_tag_name("text"))
+        .and_then(|n| n.text())
+        .unwrap()
+        .to_owned();
+    let (_, _, answer) = server.post("/slope/spencer", &body).await;
+    let circular = answer["circle"].is_object();
+    let expected = if circular {
+        "Spencer's method: the critical slip circle"
+    } else {
+        "Spencer's method: the critical slip surface"
+    };
+    assert_eq!(title, expected);
+    assert!(
+        !circular,
+        "the published non-circular minimum is below the circle's"
+    );
+}

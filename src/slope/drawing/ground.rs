@@ -60,6 +60,10 @@ pub fn ground(
             legend.push((*colour, label.clone()));
         }
     }
+    if !scene.loads.is_empty() {
+        // Surcharges are drawn as boxes on the ground, line loads as their thin edge.
+        legend.push(("#e65100", "surcharges and line loads".to_owned()));
+    }
     for (a, b) in &scene.loads {
         let y = |x: f64| {
             let i = scene.ground.partition_point(|p| p.0 < x);

@@ -85,10 +85,12 @@ fn scene(problem: &Analysed) -> Scene {
     }
 }
 
-/// The drawing's title: which surface it shows.
+/// The drawing's title: which surface it shows (a search's critical one is a circle, or a
+/// non-circular surface).
 pub fn title(solved: &SolvedSlope) -> &'static str {
     match (solved.search.is_some(), solved.problem.circle().is_some()) {
-        (true, _) => "Spencer's method: the critical slip circle",
+        (true, true) => "Spencer's method: the critical slip circle",
+        (true, false) => "Spencer's method: the critical slip surface",
         (false, true) => "Spencer's method: one slip circle",
         (false, false) => "Spencer's method: one slip surface",
     }
