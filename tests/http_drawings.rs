@@ -445,3 +445,27 @@ async fn drawn_loads_are_in_the_key() {
     let bare = svg(&server, "/slope/spencer/svg", &section(json!([]))).await;
     assert!(!bare.contains("surcharges and line loads"));
 }
+
+#[tokio::test]
+async fn a_dense_chain_says_how_many_of_its_joints_are_drawn() {
+    // Issue 46: N = 1800 voussoirs were drawn with 11 joints and nothing said so: it looked
+    // like a 10-voussoir arch.
+    let server = Server::start().await;
+    let body = |n: usize| json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.5, "voussoirs": n}});
+    let dense = svg(&server, "/arch/dead-load/svg", &body(1800)).await;
+    let document = roxmltree::Document::parse(&dense).unwrap();
+    assert!(
+        document
+            .descendants()
+            .any(|n| n.text() == Some("| 1800 voussoirs: one joint in 180 drawn")),
+        "no key item for the joints drawn"
+    );
+    // 11 joints are drawn (0, 180, …, 1800), as the key says.
+    let joints = dense
+        .matches("stroke=\"#8d6e63\" stroke-width=\"0.5\"")
+        .count();
+    assert_eq!(joints, 11);
+    // Up to 200 voussoirs every joint is drawn and nothing needs saying.
+    let every = svg(&server, "/arch/dead-load/svg", &body(200)).await;
+    assert!(!every.contains("one joint in"));
+}

@@ -151,6 +151,14 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     for (colour, text) in &legend {
         canvas.key(text, colour, 11.0, false);
     }
+    if let Some((blocks, step)) = parts::joints_drawn(assembly) {
+        canvas.key(
+            &format!("| {blocks} voussoirs: one joint in {step} drawn"),
+            "#8d6e63",
+            11.0,
+            false,
+        );
+    }
     if let Some(curve) = &solved.rolling {
         rolling::rolling_curve(&mut canvas, curve);
     }

@@ -51,6 +51,13 @@ pub fn fill(
     }
 }
 
+/// For a chain drawn as one outline: its blocks and the step between the joints drawn (the key
+/// says so, lest 1800 voussoirs look like ten).
+pub fn joints_drawn(assembly: &Assembly) -> Option<(usize, usize)> {
+    let n = assembly.blocks.len();
+    (assembly.is_chain() && n > MERGED_ABOVE).then_some((n, (n / 10).max(1)))
+}
+
 /// The blocks: one by one, or a long chain as one outline with every tenth joint marked.
 pub fn blocks(canvas: &mut Canvas, assembly: &Assembly, curved: bool) {
     let chain = assembly.is_chain();
@@ -83,8 +90,8 @@ pub fn blocks(canvas: &mut Canvas, assembly: &Assembly, curved: bool) {
             &ring,
             "fill=\"#e8dcc8\" stroke=\"#8d6e63\" stroke-width=\"0.8\"",
         );
-        let step = assembly.blocks.len() / 10;
-        for i in assembly.interfaces.iter().step_by(step.max(1)) {
+        let step = joints_drawn(assembly).map_or(1, |(_, step)| step);
+        for i in assembly.interfaces.iter().step_by(step) {
             canvas.polyline(
                 &[i.intrados, i.extrados],
                 "stroke=\"#8d6e63\" stroke-width=\"0.5\"",
