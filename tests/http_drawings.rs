@@ -469,3 +469,42 @@ async fn a_dense_chain_says_how_many_of_its_joints_are_drawn() {
     let every = svg(&server, "/arch/dead-load/svg", &body(200)).await;
     assert!(!every.contains("one joint in"));
 }
+
+#[tokio::test]
+async fn passive_pressure_and_live_loads_have_arrowheads_of_their_own() {
+    // Issue 46: passive-pressure arrows carried the blue live-load arrowhead, so two different
+    // forces looked alike. Each kind now has its colour, its head included.
+    let server = Server::start().await;
+    let body = json!({
+        "geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
+        "fill": {"unit_weight": 1.8, "surface": 11.5,
+                 "passive": {"friction_angle_deg": 30, "mobilisation": 0.5}},
+        "road_loads": [{"x": -4.0, "fy": -10.0, "length": 0.3}]});
+    let drawn = svg(&server, "/arch/live-load/svg", &body).await;
+    let document = roxmltree::Document::parse(&drawn).unwrap();
+    let heads = |marker: &str| {
+        document
+            .descendants()
+            .filter(|n| n.attribute("marker-end") == Some(marker))
+            .map(|n| n.attribute("stroke").unwrap_or_default().to_owned())
+            .collect::<Vec<_>>()
+    };
+    let passive = heads("url(#arrow-6d4c41)");
+    let live = heads("url(#arrow)");
+    assert!(!passive.is_empty(), "no passive arrow with its own head");
+    assert!(passive.iter().all(|s| s == "#6d4c41"), "{passive:?}");
+    assert!(
+        !live.is_empty() && live.iter().all(|s| s == "#1565c0"),
+        "{live:?}"
+    );
+    // The brown head is defined in brown.
+    let marker = document
+        .descendants()
+        .find(|n| n.attribute("id") == Some("arrow-6d4c41"))
+        .expect("the passive arrowhead");
+    let fill = marker
+        .descendants()
+        .find_map(|n| n.attribute("fill"))
+        .unwrap_or_default();
+    assert_eq!(fill, "#6d4c41");
+}

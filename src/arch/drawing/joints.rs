@@ -17,7 +17,7 @@ pub fn passive(canvas: &mut Canvas, problem: &ArchProblem, mobilised: &[f64], le
             }
             let length = 0.06 * span * p / strongest;
             let from = (force.point.0 - force.direction * length, force.point.1);
-            canvas.arrow(from, force.point, "stroke=\"#6d4c41\" stroke-width=\"1.6\"");
+            canvas.arrow_in(from, force.point, "#6d4c41", 1.6);
         }
         legend.push(("#6d4c41", "→ passive pressure"));
     }
