@@ -98,6 +98,10 @@ report_check dead-load /arch/dead-load/report \
 report_check live-load /arch/live-load/report \
     '{"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100}, "fill": {"unit_weight": 1.8, "surface": 11.5}, "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}], "x_start": -12.0, "x_end": 10.0, "positions": 101}}' \
     "Live load: λ = 0.6413"
-passed=$((21 - failures))
+# A reinforced slope under a DA1-2 check: the supports layer and the design key decode too.
+report_check reinforced /slope/spencer/report \
+    '{"section": {"ground": [[0, 0], [10, 0], [20, 10], [40, 10]], "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 5, "friction_angle_deg": 30}}], "supports": [{"kind": "soil_nail", "head": [15, 5], "end": [26.6, 1.9], "spacing": 1.5, "tensile_capacity": 150, "plate_capacity": 50, "bond_strength": 20, "application": "active"}]}, "surface": [[10, 0], [27.3205, 10]], "slices": 40, "design": {"approach": "DA1-2"}}' \
+    "F = 1.2420, θ = 31.59°"
+passed=$((24 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -7,10 +7,10 @@
 use std::fmt::Write as _;
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use axum::http::{header, HeaderValue};
-use axum::response::{IntoResponse, Response};
+use axum::response::Html;
 use serde_json::Value;
 
+use crate::svg::escape;
 use crate::table::Row;
 use crate::warning::Warning;
 
@@ -116,39 +116,6 @@ pub struct Report<'a> {
     pub tables: Vec<ReportTable>,
 }
 
-/// The report's page.
-#[derive(Debug)]
-pub struct Html(pub String);
-
-impl IntoResponse for Html {
-    fn into_response(self) -> Response {
-        (
-            [(
-                header::CONTENT_TYPE,
-                HeaderValue::from_static("text/html; charset=utf-8"),
-            )],
-            self.0,
-        )
-            .into_response()
-    }
-}
-
-/// Text made safe for HTML (element content and quoted attributes).
-pub fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
-
 /// The answer's scalars by their dotted path, in alphabetical order: top-level numbers, strings
 /// and booleans, those of objects up to two levels down (`accuracy.discretisation_error`,
 /// `design.factors.friction`), and short lists of scalars; tables, nulls and the warnings
@@ -239,7 +206,7 @@ footer{margin-top:2em;font-size:8.5pt;color:#555}@page{size:A4;margin:14mm}\
 
 impl Report<'_> {
     /// The whole page.
-    pub fn html(&self, kind: &str) -> Html {
+    pub fn html(&self, kind: &str) -> Html<String> {
         let mut page = String::with_capacity(self.drawing.len() + 16_384);
         let version = env!("CARGO_PKG_VERSION");
         let date = utc_text(SystemTime::now());
@@ -376,10 +343,6 @@ mod tests {
 
     #[test]
     fn text_is_escaped_and_scalars_flattened() {
-        assert_eq!(
-            escape("<a href='x'>&\"</a>"),
-            "&lt;a href=&#39;x&#39;&gt;&amp;&quot;&lt;/a&gt;"
-        );
         let answer = serde_json::json!({"f": 1.5, "none": null, "ok": true, "status": "converged",
             "accuracy": {"slices": 100, "e": 1e-7, "deep": {"x": 1, "deeper": {"y": 2}}}, "rows": [{"a": 1}],
             "omitted": ["slices", "grid"], "warnings": [{"code": "tension"}]});

@@ -10,8 +10,9 @@ use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
 use crate::headers::RequestId;
-use crate::report::{table, without_nulls, Html, Report, ReportTable};
+use crate::report::{table, without_nulls, Report, ReportTable};
 use crate::AppState;
+use axum::response::Html;
 
 /// The tables an arch report prints: hinges, reactions and the line of thrust.
 fn tables(outcome: &ArchOutcomeDto) -> Vec<ReportTable> {
@@ -42,7 +43,7 @@ pub async fn dead_load_report(
     State(state): State<AppState>,
     RequestId(request_id): RequestId,
     ApiJson(request): ApiJson<DeadLoadRequest>,
-) -> Result<Html, ApiError> {
+) -> Result<Html<String>, ApiError> {
     let input = request.validate(state.solve_time_limit_secs())?;
     let solved = solve(&state, Problem::DeadLoad, input).await?;
     let answer = DeadLoadResponse::new(&solved);
@@ -80,7 +81,7 @@ pub async fn live_load_report(
     State(state): State<AppState>,
     RequestId(request_id): RequestId,
     ApiJson(request): ApiJson<LiveLoadRequest>,
-) -> Result<Html, ApiError> {
+) -> Result<Html<String>, ApiError> {
     let input = request.validate(state.solve_time_limit_secs())?;
     let solved = solve(&state, Problem::LiveLoad, input).await?;
     let answer = LiveLoadResponse::new(&solved);

@@ -226,6 +226,8 @@ pub const POLYLINE_POINTS: Count = Count::new(1, MAX_POLYLINE_POINTS);
 pub const LAYERS: Count = Count::new(1, MAX_LAYERS);
 /// Surcharges, and line loads, of a section.
 pub const SECTION_LOADS: Count = Count::new(0, MAX_SECTION_LOADS);
+/// Supports (reinforcement) in a slope section.
+pub const SLOPE_SUPPORTS: Count = Count::new(0, MAX_SUPPORTS);
 /// Live loads on blocks, road loads, external loads on slices.
 pub const LOADS: Count = Count::new(0, MAX_LOADS);
 /// Corners of an assembly's polygon.

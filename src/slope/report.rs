@@ -9,8 +9,9 @@ use super::solve::solve;
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
 use crate::headers::RequestId;
-use crate::report::{table, without_nulls, Html, Report};
+use crate::report::{table, without_nulls, Report};
 use crate::AppState;
+use axum::response::Html;
 
 /// The Spencer answer as a printable calculation report.
 ///
@@ -32,7 +33,7 @@ pub async fn spencer_report(
     State(state): State<AppState>,
     RequestId(request_id): RequestId,
     ApiJson(request): ApiJson<SpencerRequest>,
-) -> Result<Html, ApiError> {
+) -> Result<Html<String>, ApiError> {
     let solved = solve(&state, request.validate()?).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
     let title = drawing::title(&solved);

@@ -9,7 +9,8 @@ use thrustline_solver::slope::section::SupportForce;
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
-use crate::limits::MAX_SUPPORTS;
+use crate::limits::SLOPE_SUPPORTS;
+use crate::validation::count_within;
 
 /// How a support's force enters the equations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
@@ -173,15 +174,7 @@ pub enum SupportDto {
 /// The solver's supports (the solver checks the values against the section and names the
 /// field: `section.supports[i].…`).
 pub fn supports(dtos: &[SupportDto]) -> Result<Vec<Support>, ApiError> {
-    if dtos.len() > MAX_SUPPORTS {
-        return Err(ApiError::invalid(
-            "section.supports",
-            format!(
-                "has {} supports: at most {MAX_SUPPORTS} are allowed",
-                dtos.len()
-            ),
-        ));
-    }
+    count_within("section.supports", dtos.len(), SLOPE_SUPPORTS)?;
     Ok(dtos.iter().map(support).collect())
 }
 

@@ -25,12 +25,13 @@ pub(super) fn tick(v: f64) -> String {
     }
 }
 
-/// Escapes text for SVG.
+/// Escapes text for SVG and HTML (element content and attributes in either quotes).
 pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
         .replace('"', "&quot;")
+        .replace('\'', "&#39;")
 }
 
 /// A colour from blue (t = 0) through yellow to red (t = 1).
@@ -58,5 +59,9 @@ mod tests {
         assert_eq!(tick(2.50), "2.5");
         assert_eq!(tick(-0.0), "0");
         assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+        assert_eq!(
+            escape("<a href='x'>&\"</a>"),
+            "&lt;a href=&#39;x&#39;&gt;&amp;&quot;&lt;/a&gt;"
+        );
     }
 }
