@@ -10,8 +10,8 @@ use super::{
     PATCH_LENGTH, POLYGON_CORNERS, POLYLINE_POINTS, PORE_PRESSURE_RATIO, POSITIVE_LENGTH,
     POSITIVE_STRESS, RADII, RADIUS, RELATIVE_ERROR, RINGS, ROLLING_POSITIONS,
     SEARCH_LOWER_END_FACTOR, SECTION_LOADS, SEISMIC_KH, SEISMIC_KV, SLICES, SLICE_TOLERANCE,
-    SLOPE_SUPPORTS, SOLVER_TOLERANCE, SPANS, STRESS, SUPPORTS, THICKNESS, THICKNESS_TOLERANCE,
-    TIME_BUDGET_MS, UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT, VERTICES,
+    SOLVER_TOLERANCE, SPANS, STRESS, SUPPORTS, THICKNESS, THICKNESS_TOLERANCE, TIME_BUDGET_MS,
+    UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT, VERTICES,
 };
 
 /// Every limit the OpenAPI schema states, by component and property: the document is written
@@ -47,7 +47,6 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     ("BlocksGeometryDto", "blocks", Limit::Items(BLOCKS)),
     ("AssemblyGeometryDto", "blocks", Limit::Items(BLOCKS)),
     ("AssemblyGeometryDto", "supports", Limit::Items(SUPPORTS)),
-    ("SectionDto", "supports", Limit::Items(SLOPE_SUPPORTS)),
     ("PolygonDto", "polygon", Limit::Items(POLYGON_CORNERS)),
     ("InterfaceLimitsDto", "q_min", Limit::Number(LOWER_LIMIT)),
     ("InterfaceLimitsDto", "q_max", Limit::Number(UPPER_LIMIT)),
