@@ -86,6 +86,8 @@ mod tests {
             top,
             soil: Soil::new(20.0, 5.0, 30.0, 0.0).unwrap(),
             pore_pressure_ratio: None,
+            strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+            piezometric_line: None,
         }
     }
 
@@ -116,6 +118,7 @@ mod tests {
             line_loads: Vec::new(),
             tension_crack: None,
             supports: Vec::new(),
+            water: Default::default(),
         };
         let section = Section::new(parts).unwrap();
         let fills = layer_fills(&section, -10.0, 30.0, -10.0);

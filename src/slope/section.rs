@@ -294,6 +294,8 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
                     .transpose()?,
                 soil: soil(&format!("{prefix}.soil"), &layer.soil, 0.0)?,
                 pore_pressure_ratio: ratio,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
@@ -347,6 +349,7 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
         line_loads,
         tension_crack,
         supports: super::supports::supports(&dto.supports)?,
+        water: Default::default(),
     };
     // The design values, once: soils and loads by their actions.
     let parts = match design {

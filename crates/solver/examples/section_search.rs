@@ -22,6 +22,8 @@ fn layer(top: Option<Polyline>, gamma: f64, c: f64, phi: f64) -> Layer {
         top,
         soil: Soil::new(gamma, c, phi, 0.0).unwrap(),
         pore_pressure_ratio: None,
+        strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+        piezometric_line: None,
     }
 }
 
@@ -44,6 +46,7 @@ fn main() {
         line_loads: Vec::new(),
         tension_crack: None,
         supports: Vec::new(),
+        water: Default::default(),
     })
     .unwrap();
     for _ in 0..repeats {

@@ -36,11 +36,15 @@ fn layered() -> Section {
                 top: None,
                 soil: Soil::new(19.0, 10.0, 28.0, 0.0).unwrap(),
                 pore_pressure_ratio: None,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             },
             Layer {
                 top: Some(line(&[(-20.0, -3.0), (40.0, -3.0)])),
                 soil: Soil::new(20.0, 0.0, 35.0, 0.0).unwrap(),
                 pore_pressure_ratio: None,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             },
         ],
         bedrock: Some(line(&[(-20.0, -12.0), (40.0, -12.0)])),
@@ -62,6 +66,7 @@ fn layered() -> Section {
             water_depth: 2.5,
         }),
         supports: Vec::new(),
+        water: Default::default(),
     })
     .unwrap()
 }

@@ -21,16 +21,22 @@ fn weak_layer_section() -> Section {
                 top: None,
                 soil: soil(10.0, 30.0),
                 pore_pressure_ratio: None,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             },
             Layer {
                 top: Some(line(&[(0.0, 1.0), (80.0, 1.0)])),
                 soil: soil(1.0, 8.0),
                 pore_pressure_ratio: None,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             },
             Layer {
                 top: Some(line(&[(0.0, 0.5), (80.0, 0.5)])),
                 soil: soil(10.0, 30.0),
                 pore_pressure_ratio: None,
+                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+                piezometric_line: None,
             },
         ],
         bedrock: None,
@@ -40,6 +46,7 @@ fn weak_layer_section() -> Section {
         line_loads: Vec::new(),
         tension_crack: None,
         supports: Vec::new(),
+        water: Default::default(),
     })
     .unwrap()
 }

@@ -224,6 +224,7 @@ fn a_circle_in_level_ground_provably_has_no_root() {
             tan_phi: 30f64.to_radians().tan(),
             pore_pressure: 0.0,
             layer: 0,
+            nonlinear: false,
             side_water: (0.0, 0.0),
         }
     };
@@ -235,6 +236,7 @@ fn a_circle_in_level_ground_provably_has_no_root() {
         moment_centre: Some((0.0, 5.0)),
         circular: true,
         length_scale: 8.0,
+        envelopes: Default::default(),
     };
     assert_eq!(
         spencer_factor_outcome(&model, &SpencerSettings::default()),

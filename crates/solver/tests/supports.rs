@@ -418,6 +418,8 @@ fn section_parts() -> SectionParts {
             top: None,
             soil: Soil::new(GAMMA, COHESION, PHI_DEG, 0.0).unwrap(),
             pore_pressure_ratio: None,
+            strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
+            piezometric_line: None,
         }],
         bedrock: None,
         piezometric_line: None,
@@ -426,6 +428,7 @@ fn section_parts() -> SectionParts {
         line_loads: Vec::new(),
         tension_crack: None,
         supports: Vec::new(),
+        water: Default::default(),
     }
 }
 

@@ -24,6 +24,7 @@ pub mod search;
 pub mod section;
 pub mod slices;
 pub mod spencer;
+pub mod strength;
 
 pub use crate::outcome::SolverFailure;
 pub use error::{SlopeError, SlopeParameter, SupportField};

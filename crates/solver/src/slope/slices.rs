@@ -5,6 +5,9 @@
 
 use std::borrow::Cow;
 use std::num::NonZeroUsize;
+use std::sync::Arc;
+
+use super::strength::Envelope;
 
 use super::error::{check_range, SlopeError, SlopeParameter};
 
@@ -41,6 +44,10 @@ pub struct BaseSlice {
     pub pore_pressure: f64,
     /// Index of the soil (layer) at the base; 0 for a single soil.
     pub layer: usize,
+    /// Whether `cohesion` and `tan_phi` are the tangent to the layer's nonlinear envelope
+    /// ([`SliceModel::envelopes`]) at an estimate of the base's σ′ₙ, to be moved to its
+    /// consistent state ([`crate::slope::strength::consistent`]).
+    pub nonlinear: bool,
     /// The pore water's force on the right side (horizontal, ∫u dy from the base to the
     /// ground) and the height it acts at: what separates the total inter-slice force there
     /// from the effective one (Spencer 1973).
@@ -81,6 +88,8 @@ pub struct SliceModel {
     pub circular: bool,
     /// A length of the size of the mass (the radius of a circle), to scale moment residuals.
     pub length_scale: f64,
+    /// Per layer, its nonlinear strength envelope (empty when no layer has one).
+    pub envelopes: Arc<[Option<Envelope>]>,
 }
 
 impl SliceModel {

@@ -156,38 +156,56 @@ pub(super) fn soil_at(section: &Section, levels: &[f64], y: f64) -> usize {
         .unwrap_or(0)
 }
 
-/// The pore pressure at height y: r_u times the column's weight where the soil there has its
-/// own r_u, else γ_w times the depth below the piezometric line, else none.
-pub(super) fn pore_pressure(section: &Section, levels: &[f64], layer: usize, y: f64) -> f64 {
-    match (
-        section.layers[layer].pore_pressure_ratio,
-        &section.piezometric_line,
-    ) {
-        (Some(ratio), _) => ratio * column(section, levels, y).0,
-        (None, Some(_)) => section.water_unit_weight * (water(levels) - y).max(0.0),
-        (None, None) => 0.0,
+/// The pore pressure at (x, y) in `layer`: r_u times the column's weight where the soil has its
+/// own r_u; else from the layer's own piezometric line; else from the grid (0 outside it); else
+/// h_u·γ_w times the depth below the section's piezometric line; else none.
+pub(super) fn pore_pressure(
+    section: &Section,
+    levels: &[f64],
+    layer: usize,
+    (x, y): (f64, f64),
+) -> f64 {
+    let own = &section.layers[layer];
+    if let Some(ratio) = own.pore_pressure_ratio {
+        return ratio * column(section, levels, y).0;
+    }
+    let gw = section.water_unit_weight;
+    if let Some(line) = &own.piezometric_line {
+        return line.pressure(gw, x, y);
+    }
+    if let Some(grid) = &section.water.grid {
+        return grid.pressure(x, y).unwrap_or(0.0);
+    }
+    match &section.piezometric_line {
+        Some(line) => gw * section.water.hu.at(line, x) * (water(levels) - y).max(0.0),
+        None => 0.0,
     }
 }
 
-/// The pore water's force on the vertical from the base at y = b up to the ground, and its
+/// The pore water's force on the vertical at x from the base at y = b up to the ground, and its
 /// height: closed form under a water line, else ∫u dy by Simpson's rule on 8 panels (the r_u
-/// pressures of layered soils are piecewise linear, to ~1e-4 there).
-pub(super) fn side_water(section: &Section, levels: &[f64], b: f64) -> (f64, f64) {
+/// pressures of layered soils are piecewise linear, to ~1e-4 there; a grid's are linear in
+/// each triangle).
+pub(super) fn side_water(section: &Section, levels: &[f64], (x, b): (f64, f64)) -> (f64, f64) {
     let g = ground(levels);
     if g <= b {
         return (0.0, b);
     }
     let layers = &section.layers;
-    if layers.iter().all(|l| l.pore_pressure_ratio.is_none()) {
-        if section.piezometric_line.is_none() {
+    let simple = section.water.grid.is_none()
+        && layers
+            .iter()
+            .all(|l| l.pore_pressure_ratio.is_none() && l.piezometric_line.is_none());
+    if simple {
+        let Some(line) = &section.piezometric_line else {
             return (0.0, b);
-        }
+        };
         let yp = water(levels);
         let top = yp.min(g);
         if top <= b {
             return (0.0, b);
         }
-        let gw = section.water_unit_weight;
+        let gw = section.water_unit_weight * section.water.hu.at(line, x);
         // ∫_b^top γ_w (y_p − y) dy and its moment ∫ γ_w (y_p − y)·y dy.
         let force = gw * ((yp - b).powi(2) - (yp - top).powi(2)) / 2.0;
         let moment = gw * (yp * (top * top - b * b) / 2.0 - (top.powi(3) - b.powi(3)) / 3.0);
@@ -209,7 +227,7 @@ pub(super) fn side_water(section: &Section, levels: &[f64], b: f64) -> (f64, f64
         } else {
             2.0
         };
-        let p = pore_pressure(section, levels, soil_at(section, levels, y), y);
+        let p = pore_pressure(section, levels, soil_at(section, levels, y), (x, y));
         force += w * p;
         moment += w * p * y;
     }

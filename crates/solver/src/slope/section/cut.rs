@@ -222,6 +222,7 @@ impl Cut {
                 moment_centre,
                 circular,
                 length_scale,
+                envelopes: section.envelopes.clone(),
             },
             ends: (
                 (xa, ground.y_at(xa)),

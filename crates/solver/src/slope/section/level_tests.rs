@@ -46,6 +46,8 @@ fn levels_read_from_the_table_are_the_lines_heights() {
         top: Some(top.clone()),
         soil: Soil::new(20.0, 5.0, 25.0, 0.0).unwrap(),
         pore_pressure_ratio: None,
+        strength: crate::slope::strength::Strength::MohrCoulomb,
+        piezometric_line: None,
     });
     let water = line(&[(-20.0, 6.0), (30.0, 1.0)]);
     parts.piezometric_line = Some(water.clone());
@@ -100,6 +102,8 @@ fn three_layers() -> SectionParts {
             top: Some(top),
             soil: Soil::new(gamma, c, phi, 0.0).unwrap(),
             pore_pressure_ratio: None,
+            strength: crate::slope::strength::Strength::MohrCoulomb,
+            piezometric_line: None,
         });
     }
     parts.piezometric_line = Some(line(&[(-20.0, 1.0), (10.0, 3.0), (40.0, 6.0)]));
@@ -146,6 +150,8 @@ fn a_section_too_large_for_a_table_reads_its_lines_one_by_one() {
             top: Some(line(&top)),
             soil: Soil::new(20.0, 5.0, 30.0, 0.0).unwrap(),
             pore_pressure_ratio: None,
+            strength: crate::slope::strength::Strength::MohrCoulomb,
+            piezometric_line: None,
         });
     }
     let water: Vec<(f64, f64)> = (0..1000)

@@ -23,15 +23,20 @@ mod slicing;
 pub mod supports;
 #[cfg(test)]
 mod tests;
+pub mod water;
 
 use super::error::{check_range, SlopeError, SlopeParameter};
 use std::borrow::Cow;
 use std::num::NonZeroUsize;
+use std::sync::Arc;
 
 use super::slices::{SliceModel, Sliced};
 use super::spencer::{ExternalLoad, Seismic, Soil};
 pub use polyline::{Polyline, PolylineError};
 pub use supports::{Support, SupportForce};
+pub use water::{Hu, PoreGrid, Water, WaterLine};
+
+use super::strength::{Envelope, Strength};
 
 /// Largest magnitude of a pressure, force or unit weight (as for the simple form).
 const MAX_MAGNITUDE: f64 = 1e12;
@@ -46,6 +51,11 @@ pub struct Layer {
     /// r_u of this soil; when given it sets the pore pressure at bases in this soil, in place
     /// of the piezometric line.
     pub pore_pressure_ratio: Option<f64>,
+    /// The strength model (Mohr–Coulomb: the soil's c′ and φ′).
+    pub strength: Strength,
+    /// The layer's own piezometric line: the pore pressure at bases in this soil (unless it
+    /// has its own r_u), in place of the grid and the section's line.
+    pub piezometric_line: Option<WaterLine>,
 }
 
 /// A vertical pressure on the ground over [x_start, x_end], varying linearly.
@@ -93,6 +103,10 @@ pub struct Section {
     pub(crate) line_loads: Vec<LineLoad>,
     pub(crate) tension_crack: Option<TensionCrack>,
     pub(crate) supports: Vec<Support>,
+    pub(crate) water: Water,
+    /// Per layer, its nonlinear envelope (empty when none has one): what the slice models of
+    /// this section carry.
+    envelopes: Arc<[Option<Envelope>]>,
     /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
     bends: Vec<f64>,
     /// The lines above the bases between the bends.
@@ -126,6 +140,8 @@ pub struct SectionParts {
     pub tension_crack: Option<TensionCrack>,
     /// Reinforcement (model §7).
     pub supports: Vec<Support>,
+    /// h_u of the piezometric line and a pore-pressure grid (model §8).
+    pub water: Water,
 }
 
 impl Section {
@@ -294,6 +310,7 @@ impl Section {
             }
         }
         Ok(Self {
+            envelopes: envelopes(&parts.layers),
             ground: parts.ground,
             layers: parts.layers,
             bedrock: parts.bedrock,
@@ -303,6 +320,7 @@ impl Section {
             line_loads: parts.line_loads,
             tension_crack: parts.tension_crack,
             supports: parts.supports,
+            water: parts.water,
             bends: Vec::new(),
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
@@ -371,11 +389,39 @@ impl Section {
         &self.supports
     }
 
+    /// h_u of the piezometric line and the pore-pressure grid.
+    pub fn water(&self) -> &Water {
+        &self.water
+    }
+
+    /// Whether pore pressures come from more than the section's piezometric line at full head
+    /// and the soils' r_u: a layer's own line, h_u or a grid.
+    pub(crate) fn has_water_models(&self) -> bool {
+        !self.water.is_plain() || self.layers.iter().any(|l| l.piezometric_line.is_some())
+    }
+
     /// Where the ground, layer tops and water line bend or cross, and the surcharge edges,
     /// sorted: between two of these every line of the section is straight.
     pub fn bends(&self) -> &[f64] {
         &self.bends
     }
+}
+
+/// Per layer, its nonlinear envelope; empty when no layer has one.
+fn envelopes(layers: &[Layer]) -> Arc<[Option<Envelope>]> {
+    if !layers
+        .iter()
+        .any(|l| matches!(l.strength, Strength::Envelope(_)))
+    {
+        return Arc::from(Vec::new());
+    }
+    layers
+        .iter()
+        .map(|l| match &l.strength {
+            Strength::Envelope(e) => Some(e.clone()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// A slip surface in the section's coordinates.

@@ -136,6 +136,16 @@ impl Polyline {
         y0 + self.slopes[i - 1] * (x - x0)
     }
 
+    /// dy/dx at `x` (0 beyond the ends; at a vertex, the piece to its left).
+    pub fn slope_at(&self, x: f64) -> f64 {
+        let p = &self.points;
+        let last = p.len() - 1;
+        if last == 0 || !(x > p[0].0 && x <= p[last].0) {
+            return 0.0;
+        }
+        self.slopes[p.partition_point(|q| q.0 < x).max(1) - 1]
+    }
+
     /// x of the vertices.
     pub fn xs(&self) -> impl Iterator<Item = f64> + '_ {
         self.points.iter().map(|p| p.0)

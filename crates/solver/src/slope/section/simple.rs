@@ -1,6 +1,7 @@
 //! Sections built from other sections or from the simple embankment.
 
-use super::{column, Layer, LineLoad, Polyline, Section, SectionParts, Surcharge};
+use super::{column, Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, Water};
+use crate::slope::strength::Strength;
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::spencer::Soil;
 
@@ -40,6 +41,7 @@ impl Section {
                 .iter()
                 .map(|l| Layer {
                     top: line(&l.top),
+                    piezometric_line: l.piezometric_line.as_ref().map(|w| w.mirrored()),
                     ..l.clone()
                 })
                 .collect(),
@@ -67,6 +69,8 @@ impl Section {
                 })
                 .collect(),
             tension_crack: self.tension_crack,
+            water: self.water.mirrored(),
+            envelopes: self.envelopes.clone(),
             bends: Vec::new(),
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
@@ -84,6 +88,8 @@ fn one_soil(ground: Polyline, soil: Soil, pore_pressure_ratio: Option<f64>) -> S
             top: None,
             soil,
             pore_pressure_ratio,
+            strength: Strength::MohrCoulomb,
+            piezometric_line: None,
         }],
         bedrock: None,
         piezometric_line: None,
@@ -92,5 +98,6 @@ fn one_soil(ground: Polyline, soil: Soil, pore_pressure_ratio: Option<f64>) -> S
         line_loads: Vec::new(),
         tension_crack: None,
         supports: Vec::new(),
+        water: Water::default(),
     }
 }

@@ -7,6 +7,7 @@
 
 use super::column::{column, ground, pore_pressure, side_water, soil_at, water, Levels};
 use super::Section;
+use crate::slope::strength::Strength;
 use crate::slope::slices::BaseSlice;
 
 /// The slices of one cut.
@@ -42,6 +43,7 @@ struct Scratch {
 pub(super) fn still_water_level(section: &Section, a: f64, b: f64) -> Option<f64> {
     let line = section.piezometric_line.as_ref()?;
     if section.tension_crack.is_some()
+        || section.has_water_models()
         || section
             .layers
             .iter()
@@ -66,14 +68,14 @@ pub(super) fn still_water_level(section: &Section, a: f64, b: f64) -> Option<f64
 }
 
 /// The pore pressure at the base middle (levels, layer, height) and the pore water's force on
-/// the right side (its base at `br`) and its height; relative to still water at its level, the
+/// the right side (at `xr`, its base at `br`) and its height; relative to still water at its level, the
 /// pressures in excess of the still water's: γ_w times the head above that level.
 fn base_water(
     section: &Section,
     still: Option<f64>,
-    (levels, layer, bm): (&[f64], usize, f64),
+    (levels, layer, (xm, bm)): (&[f64], usize, (f64, f64)),
     s: &Scratch,
-    br: f64,
+    (xr, br): (f64, f64),
 ) -> (f64, (f64, f64)) {
     let right = s.right.values();
     match still {
@@ -87,8 +89,8 @@ fn base_water(
             )
         }
         None => (
-            pore_pressure(section, levels, layer, bm),
-            side_water(section, right, br),
+            pore_pressure(section, levels, layer, (xm, bm)),
+            side_water(section, right, (xr, br)),
         ),
     }
 }
@@ -277,8 +279,15 @@ fn slice(
     let layer = soil_at(section, levels, bm + tolerance);
     let rise = br - bl;
     let base_length = (width * width + rise * rise).sqrt();
-    let soil = &section.layers[layer].soil;
-    let (pore_pressure, side_water) = base_water(section, still, (levels, layer, bm), s, br);
+    let (pore_pressure, side_water) =
+        base_water(section, still, (levels, layer, (xm, bm)), s, (xr, br));
+    let (cohesion, tan_phi, nonlinear) = strength(
+        section,
+        layer,
+        tan_phi[layer],
+        (bm, ground(levels)),
+        (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0),
+    );
     let slice = BaseSlice {
         x_left: xl,
         x_right: xr,
@@ -291,11 +300,33 @@ fn slice(
         height_middle: ground(levels) - bm,
         weight,
         centroid_y: if weight > 0.0 { moment / weight } else { bm },
-        cohesion: soil.cohesion,
-        tan_phi: tan_phi[layer],
+        cohesion,
+        tan_phi,
         pore_pressure,
         layer,
+        nonlinear,
         side_water,
     };
     (slice, column_right, water_force)
+}
+
+/// The base's (c, tan φ, nonlinear) in `layer` (its soil's tan φ′ given) at height y under the
+/// ground at g: the soil's c′ and φ′, the undrained strength there with φ = 0, or the tangent
+/// to a nonlinear envelope at the estimate `sigma` of σ′ₙ (W·cos²α/b − u).
+fn strength(
+    section: &Section,
+    layer: usize,
+    tan_phi: f64,
+    (y, g): (f64, f64),
+    sigma: f64,
+) -> (f64, f64, bool) {
+    let l = &section.layers[layer];
+    match &l.strength {
+        Strength::MohrCoulomb => (l.soil.cohesion, tan_phi, false),
+        Strength::Undrained(u) => (u.at(y, g), 0.0, false),
+        Strength::Envelope(e) => {
+            let (c, t) = e.tangent(sigma);
+            (c, t, true)
+        }
+    }
 }

@@ -26,6 +26,8 @@ pub(super) fn slope_over_layer(top: &[(f64, f64)], c: f64, phi: f64) -> Section 
         top: Some(line(top)),
         soil: Soil::new(19.0, c, phi, 0.0).unwrap(),
         pore_pressure_ratio: None,
+        strength: crate::slope::strength::Strength::MohrCoulomb,
+        piezometric_line: None,
     });
     Section::new(parts).unwrap()
 }
@@ -37,6 +39,8 @@ pub(super) fn one_soil(ground: &[(f64, f64)], gamma: f64, c: f64, phi: f64) -> S
             top: None,
             soil: Soil::new(gamma, c, phi, 0.0).unwrap(),
             pore_pressure_ratio: None,
+            strength: crate::slope::strength::Strength::MohrCoulomb,
+            piezometric_line: None,
         }],
         bedrock: None,
         piezometric_line: None,
@@ -45,6 +49,7 @@ pub(super) fn one_soil(ground: &[(f64, f64)], gamma: f64, c: f64, phi: f64) -> S
         line_loads: Vec::new(),
         tension_crack: None,
         supports: Vec::new(),
+        water: Default::default(),
     }
 }
 
@@ -269,6 +274,8 @@ fn layer_weights_and_centroid_by_hand() {
         top: Some(line(&[(-100.0, 5.0), (100.0, 5.0)])),
         soil: Soil::new(21.0, 20.0, 25.0, 0.0).unwrap(),
         pore_pressure_ratio: None,
+        strength: crate::slope::strength::Strength::MohrCoulomb,
+        piezometric_line: None,
     });
     let surface = line(&[(0.0, 10.0), (2.0, 0.0), (8.0, 0.0), (10.0, 10.0)]);
     let (p, _) = solve(parts, SlipShape::Polyline(surface), 40);
@@ -459,6 +466,8 @@ fn two_identical_layers_are_one_soil() {
         top: Some(line(&[(-50.0, 3.0), (60.0, 3.0)])),
         soil: Soil::new(20.0, 5.0, 30.0, 0.0).unwrap(),
         pore_pressure_ratio: None,
+        strength: crate::slope::strength::Strength::MohrCoulomb,
+        piezometric_line: None,
     });
     let (_, a) = solve(one, slope_circle(), 2000);
     let (p, b) = solve(two, slope_circle(), 2000);

@@ -64,6 +64,8 @@ pub(super) fn describe(
             interslice_resultant: q,
             interslice_force_right: if i + 1 == n { 0.0 } else { z_right },
             m_alpha,
+            available_shear_strength: slice.cohesion
+                + effective_normal_force / slice.base_length * t.tan_phi,
         });
         if i + 1 < n {
             let (total, effective) = boundary_thrust(
@@ -93,6 +95,7 @@ pub(super) fn describe(
         negative_effective_normal_slices,
         unphysical_root: None,
         tension_dropped_slices: Vec::new(),
+        strength: Default::default(),
         residual: Some(residuals.force.abs().max(residuals.moment.abs())).filter(|r| r.is_finite()),
     }
 }

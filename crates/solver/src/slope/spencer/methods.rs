@@ -18,6 +18,7 @@
 //! D_j > 0 plays the part of m_α > 0. Solved by damped Newton on (F, λ) from Spencer's answer.
 
 use super::equations::Equations;
+use super::nonlinear::{effective_normals, method};
 use crate::slope::slices::SliceModel;
 
 /// The inter-slice function of Morgenstern–Price.
@@ -74,6 +75,22 @@ impl MethodFactor {
 /// The ordinary method (Fellenius): N = the known forces' normal component, moments about the
 /// centre. `None` without a centre of rotation or when nothing drives the mass.
 pub fn ordinary(model: &SliceModel) -> MethodFactor {
+    MethodFactor::plain(method(model, |m, normals| {
+        let f = ordinary_factor(m).factor_of_safety?;
+        let n = match normals {
+            true => Equations::new(m)
+                .terms
+                .iter()
+                .map(|t| t.a_n - t.pore_force)
+                .collect(),
+            false => Vec::new(),
+        };
+        Some((f, n))
+    }))
+}
+
+/// [`ordinary`] with each base's strength as it stands.
+fn ordinary_factor(model: &SliceModel) -> MethodFactor {
     let Some(centre) = model.moment_centre else {
         return MethodFactor::plain(None);
     };
@@ -114,7 +131,10 @@ pub(super) fn drives(equations: &Equations) -> bool {
 
 /// Bishop's simplified method: the moment equation with horizontal inter-slice forces.
 pub fn bishop(model: &SliceModel) -> MethodFactor {
-    MethodFactor::plain(bishop_factor(model))
+    MethodFactor::plain(method(model, |m, normals| {
+        let f = bishop_factor(m)?;
+        Some((f, normals.then(|| effective_normals(m, f, 0.0)).unwrap_or_default()))
+    }))
 }
 
 /// Bishop's F about the model's centre of rotation, `None` without one or without a root.
@@ -130,8 +150,11 @@ pub(super) fn bishop_factor(model: &SliceModel) -> Option<f64> {
 /// Janbu's simplified method (uncorrected): force equilibrium with horizontal inter-slice
 /// forces.
 pub fn janbu(model: &SliceModel) -> MethodFactor {
-    let mut evaluations = 0;
-    MethodFactor::plain(Equations::new(model).f_at_theta(0.0, false, &mut evaluations))
+    MethodFactor::plain(method(model, |m, normals| {
+        let mut evaluations = 0;
+        let f = Equations::new(m).f_at_theta(0.0, false, &mut evaluations)?;
+        Some((f, normals.then(|| effective_normals(m, f, 0.0)).unwrap_or_default()))
+    }))
 }
 
 /// Scaled residuals (E_n/ΣW, moment/(ΣW·L)) of Morgenstern–Price at (F, λ); `None` where a D
@@ -163,25 +186,73 @@ fn mp_residuals(
 }
 
 /// Morgenstern–Price with `function`, by damped Newton on (F, λ) from `start` (Spencer's F and
-/// tan θ, say).
+/// tan θ, say); on nonlinear envelopes, at their consistent state.
 pub fn morgenstern_price(
     model: &SliceModel,
     function: &InterSliceFunction,
     start: (f64, f64),
 ) -> MethodFactor {
+    let mut iterations = 0;
+    let solved = method(model, |m, normals| {
+        let answer = mp_linear(m, function, start);
+        iterations += answer.iterations;
+        let (f, lambda) = (answer.factor_of_safety?, answer.lambda?);
+        let n = match normals {
+            true => mp_normals(m, function, (f, lambda)),
+            false => Vec::new(),
+        };
+        Some(((f, lambda), n))
+    });
+    MethodFactor {
+        factor_of_safety: solved.map(|s| s.0),
+        lambda: solved.map(|s| s.1),
+        iterations,
+    }
+}
+
+/// The inter-slice function at each slice boundary of `model`; `None` without slices.
+fn boundary_values(model: &SliceModel, function: &InterSliceFunction) -> Option<Vec<f64>> {
+    let n = model.slices.len();
+    let (x0, x1) = (model.slices.first()?.x_left, model.slices.last()?.x_right);
+    Some(
+        (0..=n)
+            .map(|j| {
+                let x = if j == n { x1 } else { model.slices[j].x_left };
+                function.at((x - x0) / (x1 - x0))
+            })
+            .collect(),
+    )
+}
+
+/// Each slice's N′ under Morgenstern–Price's forces at (F, λ): N = A_n + Q_x·sin α − Q_y·cos α.
+fn mp_normals(model: &SliceModel, function: &InterSliceFunction, (f, lambda): (f64, f64)) -> Vec<f64> {
+    let equations = Equations::new(model);
+    let Some(f_values) = boundary_values(model, function) else {
+        return Vec::new();
+    };
+    let mut e = 0.0;
+    let mut out = Vec::with_capacity(equations.terms.len());
+    for (i, t) in equations.terms.iter().enumerate() {
+        let d = |fj: f64| {
+            f * (t.cos_alpha + lambda * fj * t.sin_alpha)
+                - t.tan_phi * (lambda * fj * t.cos_alpha - t.sin_alpha)
+        };
+        let e_next = (t.resistance - f * t.a_t + e * d(f_values[i])) / d(f_values[i + 1]);
+        let qx = e - e_next;
+        let qy = lambda * (f_values[i] * e - f_values[i + 1] * e_next);
+        out.push(t.a_n + qx * t.sin_alpha - qy * t.cos_alpha - t.pore_force);
+        e = e_next;
+    }
+    out
+}
+
+/// [`morgenstern_price`] with each base's strength as it stands.
+fn mp_linear(model: &SliceModel, function: &InterSliceFunction, start: (f64, f64)) -> MethodFactor {
     const SOLVED: f64 = 1e-11;
     let equations = Equations::new(model);
-    let n = model.slices.len();
-    let (x0, x1) = match (model.slices.first(), model.slices.last()) {
-        (Some(a), Some(b)) => (a.x_left, b.x_right),
-        _ => return MethodFactor::plain(None),
+    let Some(f_values) = boundary_values(model, function) else {
+        return MethodFactor::plain(None);
     };
-    let f_values: Vec<f64> = (0..=n)
-        .map(|j| {
-            let x = if j == n { x1 } else { model.slices[j].x_left };
-            function.at((x - x0) / (x1 - x0))
-        })
-        .collect();
     let merit = |r: (f64, f64)| r.0.hypot(r.1);
     let mut x = start;
     let mut iterations = 0;

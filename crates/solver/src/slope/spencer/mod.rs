@@ -36,6 +36,7 @@ mod equations;
 mod kernel;
 pub mod methods;
 mod newton;
+mod nonlinear;
 mod problem;
 mod scan;
 mod solution;
@@ -97,13 +98,19 @@ pub enum FactorOutcome {
     Undriven,
 }
 
-/// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution.
+/// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution;
+/// on nonlinear envelopes, at their consistent state.
 pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
+    nonlinear::factor_outcome(model, settings)
+}
+
+/// [`spencer_factor_outcome`] with each base's strength as it stands.
+fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
         if model.circular && !methods::drives(&Equations::new(model)) {
             return FactorOutcome::Undriven;
         }
-        let s = solve_spencer(model, settings);
+        let s = solve_tension(model, settings);
         return match s.factor_of_safety {
             Some(f) => FactorOutcome::Solved(SpencerFactor {
                 factor_of_safety: f,
@@ -186,8 +193,14 @@ fn is_physical(equations: &Equations, f: f64, theta: f64) -> bool {
 }
 
 /// Solves Spencer's two equations for the slip surface of `model`, with the treatment of
-/// negative effective stress of `settings`.
+/// negative effective stress of `settings`; on nonlinear envelopes, to their consistent state.
 pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
+    nonlinear::solve(model, settings).0
+}
+
+/// Spencer's equations with the treatment of tension of `settings`, each base's strength as
+/// it stands.
+fn solve_tension(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
     let mut solution = solve_classic(model, settings);
     if settings.negative_effective_stress == NegativeEffectiveStress::Keep {
         return solution;
@@ -233,11 +246,19 @@ pub fn with_strength_dropped(
         return out;
     }
     for &i in slices {
-        if let Some(slice) = out.slices.get_mut(i) {
-            slice.tan_phi = 0.0;
-            if treatment == NegativeEffectiveStress::DropStrength {
-                slice.cohesion = 0.0;
+        let Some(slice) = out.slices.get_mut(i) else {
+            continue;
+        };
+        if slice.nonlinear {
+            // Its envelope's strength without normal stress, fixed.
+            slice.nonlinear = false;
+            if let Some(Some(envelope)) = model.envelopes.get(slice.layer) {
+                slice.cohesion = envelope.shear(0.0).0;
             }
+        }
+        slice.tan_phi = 0.0;
+        if treatment == NegativeEffectiveStress::DropStrength {
+            slice.cohesion = 0.0;
         }
     }
     out
@@ -291,6 +312,7 @@ fn no_solution(model: &SliceModel, solved: &newton::EquationsSolution) -> Spence
         unphysical_root: None,
         tension_dropped_slices: Vec::new(),
         residual: None,
+        strength: Default::default(),
     }
 }
 
@@ -309,8 +331,14 @@ pub struct FactorCurves {
 /// Half-width of the θ range of [`factor_curves_around`], in whole degrees.
 const CURVE_HALF_WIDTH_DEG: i32 = 30;
 
-/// F_f(θ) and F_m(θ) at whole degrees from θ* − 30° to θ* + 30° (θ* rounded), within |θ| < 89°.
+/// F_f(θ) and F_m(θ) at whole degrees from θ* − 30° to θ* + 30° (θ* rounded), within |θ| < 89°;
+/// on nonlinear envelopes, with each base's tangent at its consistent state (where the curves
+/// cross at the answer).
 pub fn factor_curves_around(model: &SliceModel, theta_rad: f64) -> FactorCurves {
+    if crate::slope::strength::is_nonlinear(model) {
+        let (_, consistent) = nonlinear::solve(model, &SpencerSettings::default());
+        return factor_curves_around(&consistent, theta_rad);
+    }
     let centre = theta_rad.to_degrees().round();
     let theta_deg: Vec<f64> = (-CURVE_HALF_WIDTH_DEG..=CURVE_HALF_WIDTH_DEG)
         .map(|i| centre + f64::from(i))

@@ -84,6 +84,9 @@ pub struct SliceForces {
     pub interslice_force_right: f64,
     /// The denominator m_α = cos(α−θ) + sin(α−θ)·tan φ'/F.
     pub m_alpha: f64,
+    /// The base's strength c + σ′ₙ·tan φ per unit length at the solution (on a nonlinear
+    /// envelope, the envelope's at the base's σ′ₙ).
+    pub available_shear_strength: f64,
 }
 
 /// A point of the line of thrust on a boundary between two slices.
@@ -137,4 +140,7 @@ pub struct SpencerSolution {
     /// (ΣW·R)).
     /// `None` when there is no solution.
     pub residual: Option<f64>,
+    /// How nonlinear strength envelopes reached their consistent state (rounds 0 without
+    /// any).
+    pub strength: crate::slope::strength::Consistency,
 }

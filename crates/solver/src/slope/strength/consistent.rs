@@ -1,0 +1,87 @@
+//! The consistent state of a slip surface with nonlinear envelopes: solve with each base's
+//! tangent, read each base's σ′ₙ = N′/l, move the tangents there, solve again — until the
+//! strength each base carries is its envelope's at its own σ′ₙ (within 1e-10 of the largest
+//! base strength).
+//!
+//! At that state the linearised equations are the nonlinear ones: any tangent slope gives the
+//! same answer, only the path to it changes.
+
+use crate::slope::slices::SliceModel;
+
+/// Rounds of solving at most; a state not settled by then is answered as such.
+pub const MAX_ROUNDS: usize = 60;
+
+/// How far apart the strength a base carries and its envelope's may be, relative to the largest
+/// base strength, for the state to count as consistent.
+const SETTLED: f64 = 1e-10;
+
+/// What one solve of the linearised surface gives.
+pub enum Step<T> {
+    /// An answer and each slice's effective normal force N′: go on.
+    Next(T, Vec<f64>),
+    /// An answer to stop at (no solution: nothing to move the tangents to).
+    Done(T),
+}
+
+/// How the consistent state was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Consistency {
+    /// Rounds of solving (0 when nothing is nonlinear: one solve, nothing to settle).
+    pub rounds: usize,
+    /// Whether the strengths settled on their envelopes (always, when nothing is nonlinear).
+    pub settled: bool,
+}
+
+impl Default for Consistency {
+    fn default() -> Self {
+        Self {
+            rounds: 0,
+            settled: true,
+        }
+    }
+}
+
+/// Whether any base of `model` carries a nonlinear envelope.
+pub fn is_nonlinear(model: &SliceModel) -> bool {
+    !model.envelopes.is_empty() && model.slices.iter().any(|s| s.nonlinear)
+}
+
+/// Solves `model` to its consistent state with `solve`; the answer of the last round and how
+/// it was reached. A model without nonlinear bases is solved once.
+pub fn consistent<T>(
+    model: &SliceModel,
+    mut solve: impl FnMut(&SliceModel) -> Step<T>,
+) -> (T, Consistency, SliceModel) {
+    let mut current = model.clone();
+    let mut rounds = 0;
+    loop {
+        rounds += 1;
+        let (answer, normals) = match solve(&current) {
+            Step::Done(answer) => {
+                let settled = !is_nonlinear(model);
+                return (answer, Consistency { rounds, settled }, current);
+            }
+            Step::Next(answer, normals) => (answer, normals),
+        };
+        let (mut worst, mut scale) = (0.0f64, 0.0f64);
+        for (slice, &normal) in current.slices.iter_mut().zip(&normals) {
+            let Some(envelope) = model.envelopes.get(slice.layer).and_then(Option::as_ref) else {
+                continue;
+            };
+            if !slice.nonlinear {
+                continue;
+            }
+            let sigma = normal / slice.base_length;
+            let (tau, _) = envelope.shear(sigma);
+            let carried = slice.cohesion + sigma * slice.tan_phi;
+            worst = worst.max((tau - carried).abs());
+            scale = scale.max(tau.abs()).max(carried.abs());
+            (slice.cohesion, slice.tan_phi) = envelope.tangent(sigma);
+        }
+        let settled = worst <= SETTLED * scale.max(f64::MIN_POSITIVE) || !worst.is_finite();
+        if settled || rounds >= MAX_ROUNDS {
+            let settled = settled && worst.is_finite();
+            return (answer, Consistency { rounds, settled }, current);
+        }
+    }
+}
