@@ -296,13 +296,19 @@ fn sorted_between(xs: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
 }
 
 /// Where a slice side must fall, so that each base is straight, in one soil and on one side of
-/// the water line: the surface's vertices, its crossings with layer tops, bedrock and the
-/// piezometric line, and the bedrock's kinks and crossings where the base follows it.
+/// each water line: the surface's vertices, its crossings with layer tops, bedrock and the
+/// piezometric lines (the section's and the layers' own), and the bedrock's kinks and crossings
+/// where the base follows it.
 fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     let tops = section.layers.iter().filter_map(|l| l.top.as_ref());
+    let own = section
+        .layers
+        .iter()
+        .filter_map(|l| l.piezometric_line.as_ref().map(|w| &w.line));
     let lines: Vec<&Polyline> = tops
         .chain(section.bedrock.as_ref())
         .chain(section.piezometric_line.as_ref())
+        .chain(own)
         .collect();
     let mut xs: Vec<f64> = Vec::new();
     if let SlipShape::Polyline(line) = shape {
@@ -336,6 +342,14 @@ pub(super) fn bends(section: &Section) -> Vec<f64> {
         .collect();
     let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
     xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
+    // A layer's own water line bends its pore pressures (not the levels): its vertices.
+    xs.extend(
+        section
+            .layers
+            .iter()
+            .filter_map(|l| l.piezometric_line.as_ref())
+            .flat_map(|w| w.line.xs()),
+    );
     // Beyond every vertex the lines run level: no crossing lies outside their range.
     let (lo, hi) = xs
         .iter()

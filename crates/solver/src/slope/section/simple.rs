@@ -1,9 +1,9 @@
 //! Sections built from other sections or from the simple embankment.
 
 use super::{column, Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, Water};
-use crate::slope::strength::Strength;
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::spencer::Soil;
+use crate::slope::strength::Strength;
 
 impl Section {
     /// The simple embankment as a section: the ground (0, 0)–(L, H), continued level both ways,

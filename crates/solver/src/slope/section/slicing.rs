@@ -7,8 +7,8 @@
 
 use super::column::{column, ground, pore_pressure, side_water, soil_at, water, Levels};
 use super::Section;
-use crate::slope::strength::Strength;
 use crate::slope::slices::BaseSlice;
+use crate::slope::strength::Strength;
 
 /// The slices of one cut.
 pub(super) struct Slicing {

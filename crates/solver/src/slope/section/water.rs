@@ -131,10 +131,16 @@ impl PoreGrid {
         if points.len() < 3 {
             return Err(GridError::TooFew);
         }
-        let mut seen: Vec<(f64, f64, usize)> =
-            points.iter().enumerate().map(|(i, p)| (p.0, p.1, i)).collect();
+        let mut seen: Vec<(f64, f64, usize)> = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (p.0, p.1, i))
+            .collect();
         seen.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-        if let Some(w) = seen.windows(2).find(|w| w[0].0 == w[1].0 && w[0].1 == w[1].1) {
+        if let Some(w) = seen
+            .windows(2)
+            .find(|w| w[0].0 == w[1].0 && w[0].1 == w[1].1)
+        {
             return Err(GridError::Repeated {
                 index: w[0].2.max(w[1].2),
             });

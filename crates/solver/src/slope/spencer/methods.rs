@@ -133,7 +133,12 @@ pub(super) fn drives(equations: &Equations) -> bool {
 pub fn bishop(model: &SliceModel) -> MethodFactor {
     MethodFactor::plain(method(model, |m, normals| {
         let f = bishop_factor(m)?;
-        Some((f, normals.then(|| effective_normals(m, f, 0.0)).unwrap_or_default()))
+        Some((
+            f,
+            normals
+                .then(|| effective_normals(m, f, 0.0))
+                .unwrap_or_default(),
+        ))
     }))
 }
 
@@ -153,7 +158,12 @@ pub fn janbu(model: &SliceModel) -> MethodFactor {
     MethodFactor::plain(method(model, |m, normals| {
         let mut evaluations = 0;
         let f = Equations::new(m).f_at_theta(0.0, false, &mut evaluations)?;
-        Some((f, normals.then(|| effective_normals(m, f, 0.0)).unwrap_or_default()))
+        Some((
+            f,
+            normals
+                .then(|| effective_normals(m, f, 0.0))
+                .unwrap_or_default(),
+        ))
     }))
 }
 
@@ -225,7 +235,11 @@ fn boundary_values(model: &SliceModel, function: &InterSliceFunction) -> Option<
 }
 
 /// Each slice's N′ under Morgenstern–Price's forces at (F, λ): N = A_n + Q_x·sin α − Q_y·cos α.
-fn mp_normals(model: &SliceModel, function: &InterSliceFunction, (f, lambda): (f64, f64)) -> Vec<f64> {
+fn mp_normals(
+    model: &SliceModel,
+    function: &InterSliceFunction,
+    (f, lambda): (f64, f64),
+) -> Vec<f64> {
     let equations = Equations::new(model);
     let Some(f_values) = boundary_values(model, function) else {
         return Vec::new();

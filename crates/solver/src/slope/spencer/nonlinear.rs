@@ -3,7 +3,9 @@
 //! its own equations.
 
 use super::equations::Equations;
-use super::{linear_factor_outcome, solve_tension, FactorOutcome, SpencerSettings, SpencerSolution};
+use super::{
+    linear_factor_outcome, solve_tension, FactorOutcome, SpencerSettings, SpencerSolution,
+};
 use crate::slope::slices::SliceModel;
 use crate::slope::strength::{consistent, is_nonlinear, Step};
 
@@ -31,7 +33,10 @@ fn fixed(mut model: SliceModel) -> SliceModel {
 }
 
 /// Spencer's solution at the consistent state, and the model with each base's tangent there.
-pub(super) fn solve(model: &SliceModel, settings: &SpencerSettings) -> (SpencerSolution, SliceModel) {
+pub(super) fn solve(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+) -> (SpencerSolution, SliceModel) {
     if !is_nonlinear(model) {
         return (solve_tension(model, settings), model.clone());
     }
@@ -57,16 +62,19 @@ pub(super) fn factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> 
     if !is_nonlinear(model) {
         return linear_factor_outcome(model, settings);
     }
-    let (outcome, consistency, _) = consistent(model, |m| match linear_factor_outcome(m, settings) {
-        FactorOutcome::Solved(s) => {
-            let theta = s.theta_rad.unwrap_or(0.0);
-            let normals = effective_normals(m, s.factor_of_safety, theta);
-            Step::Next(FactorOutcome::Solved(s), normals)
-        }
-        other => Step::Done(other),
-    });
+    let (outcome, consistency, _) =
+        consistent(model, |m| match linear_factor_outcome(m, settings) {
+            FactorOutcome::Solved(s) => {
+                let theta = s.theta_rad.unwrap_or(0.0);
+                let normals = effective_normals(m, s.factor_of_safety, theta);
+                Step::Next(FactorOutcome::Solved(s), normals)
+            }
+            other => Step::Done(other),
+        });
     match outcome {
-        FactorOutcome::Solved(_) if !consistency.settled => FactorOutcome::Unsolved { bishop: None },
+        FactorOutcome::Solved(_) if !consistency.settled => {
+            FactorOutcome::Unsolved { bishop: None }
+        }
         other => other,
     }
 }

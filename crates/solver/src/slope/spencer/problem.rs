@@ -75,6 +75,24 @@ impl Soil {
         })
     }
 
+    /// A soil whose strength is given by a model of its own (model §8): its weight alone,
+    /// γ > 0 (c′ = 0, φ′ = 0, r_u = 0 are not used).
+    pub fn weight_only(unit_weight: f64) -> Result<Self, SlopeError> {
+        Ok(Self {
+            unit_weight: check_range(
+                SlopeParameter::UnitWeight,
+                unit_weight,
+                0.0,
+                true,
+                f64::MAX,
+                "a finite number > 0",
+            )?,
+            cohesion: 0.0,
+            friction_angle_rad: 0.0,
+            pore_pressure_ratio: 0.0,
+        })
+    }
+
     /// Unit weight γ.
     pub fn unit_weight(&self) -> f64 {
         self.unit_weight

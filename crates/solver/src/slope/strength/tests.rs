@@ -49,7 +49,10 @@ fn two_point_shear_normal_is_mohr_coulomb_on_its_line() {
     let e = Envelope::ShearNormal(vec![(0.0, 10.0), (100.0, 10.0 + 100.0 * t)]);
     for sigma in [-5.0, 0.0, 50.0, 250.0] {
         let (tau, slope) = e.shear(sigma);
-        assert!((tau - (10.0 + sigma * t)).abs() < 1e-12 * tau.max(1.0), "{sigma}");
+        assert!(
+            (tau - (10.0 + sigma * t)).abs() < 1e-12 * tau.max(1.0),
+            "{sigma}"
+        );
         assert!((slope - t).abs() < 1e-15);
     }
     // Never below zero.
@@ -96,7 +99,10 @@ fn hoek_brown_equals_the_criterion_by_hand() {
             // The slope is the envelope's: a central difference along it.
             let h = 1e-5 * normal.abs().max(1.0);
             let numeric = (hb.shear(normal + h).0 - hb.shear(normal - h).0) / (2.0 * h);
-            assert!((slope - numeric).abs() <= 1e-5 * numeric, "{slope} {numeric}");
+            assert!(
+                (slope - numeric).abs() <= 1e-5 * numeric,
+                "{slope} {numeric}"
+            );
         }
         // No strength at or below the tensile strength −s·σci/mb.
         assert_eq!(hb.shear(hb.tensile_strength() - 1.0), (0.0, 0.0));
