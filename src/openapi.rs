@@ -82,12 +82,24 @@ impl utoipa::Modify for SchemaLimits {
 /// Points `[x, y]` (and the inter-slice function's `[ξ, f]`) are pairs: the inner arrays of
 /// numbers in a list get `minItems` and `maxItems` 2, so that a generated client types them as
 /// pairs and `[1]` does not check (`[f64; 2]` is written without a length). A matrix of
-/// nullable numbers (a search's map of F) is not a list of points.
+/// nullable numbers (a search's map of F) is not a list of points. A pore-pressure grid's
+/// points `[x, y, u]` are triples.
 struct PointPairs;
 
 impl utoipa::Modify for PointPairs {
     fn modify(&self, openapi: &mut utoipa::openapi::OpenApi) {
+        use utoipa::openapi::schema::{ArrayItems, Schema};
+        use utoipa::openapi::RefOr;
         if let Some(components) = openapi.components.as_mut() {
+            if let Some(RefOr::T(Schema::Array(list))) =
+                property_mut(&mut components.schemas, "PoreGridDto", "points")
+            {
+                if let ArrayItems::RefOrSchema(item) = &mut list.items {
+                    if let RefOr::T(Schema::Array(triple)) = item.as_mut() {
+                        (triple.min_items, triple.max_items) = (Some(3), Some(3));
+                    }
+                }
+            }
             components.schemas.values_mut().for_each(pairs_within);
         }
     }

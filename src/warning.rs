@@ -55,6 +55,10 @@ pub enum WarningCode {
     BeyondGround,
     /// The non-associative friction iteration did not settle.
     NotSettled,
+    /// Nonlinear strength envelopes did not reach a consistent state.
+    StrengthNotConsistent,
+    /// Bases lie outside the pore-pressure grid (u = 0 taken there).
+    OutsidePorePressureGrid,
     /// Associative friction may over-estimate the collapse load.
     FrictionMayOverestimate,
     /// Rings that cannot slip lock: the answer is unbounded, or far above one ring's.

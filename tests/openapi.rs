@@ -51,7 +51,8 @@ fn points_are_pairs_and_codes_are_enums() {
     for (schema, property) in [
         ("SectionDto", "ground"),
         ("SectionDto", "bedrock"),
-        ("SectionDto", "piezometric_line"),
+        ("WaterLineDto", "points"),
+        ("ShearNormalDto", "points"),
         ("LayerDto", "top"),
         ("SpencerRequest", "surface"),
         ("SpencerRequest", "interslice_function"),
@@ -61,6 +62,11 @@ fn points_are_pairs_and_codes_are_enums() {
         assert_eq!(pair["minItems"], 2, "{schema}.{property}: {pair}");
         assert_eq!(pair["maxItems"], 2, "{schema}.{property}: {pair}");
     }
+    // A piezometric line given as its points alone is a list of pairs; a grid's are triples.
+    let line = &schemas["PiezometricLineDto"]["oneOf"][0]["items"];
+    assert_eq!((&line["minItems"], &line["maxItems"]), (&2.into(), &2.into()), "{line}");
+    let grid = &schemas["PoreGridDto"]["properties"]["points"]["items"];
+    assert_eq!((&grid["minItems"], &grid["maxItems"]), (&3.into(), &3.into()), "{grid}");
     // The search's map of F is a matrix, not points.
     let map = &schemas["GridDto"]["properties"]["factor_of_safety"]["items"];
     assert!(map["maxItems"].is_null(), "{map}");
@@ -82,6 +88,8 @@ fn points_are_pairs_and_codes_are_enums() {
         "not_settled",
         "friction_may_overestimate",
         "rings_locked",
+        "strength_not_consistent",
+        "outside_pore_pressure_grid",
     ] {
         assert!(warnings.contains(&code.to_owned()), "{code}: {warnings:?}");
     }

@@ -198,6 +198,20 @@ pub const CRACK_DEPTH: Range = Range::above(0.0, MAX_LENGTH);
 /// The water in a tension crack (at most its depth, checked beside).
 pub const CRACK_WATER_DEPTH: Range = Range::closed(0.0, MAX_LENGTH);
 
+/// A Hoek–Brown geological strength index.
+pub const GSI: Range = Range::closed(5.0, 100.0);
+/// A Hoek–Brown m_i of intact rock.
+pub const HOEK_BROWN_MI: Range = Range::above(0.0, 100.0);
+/// A Hoek–Brown disturbance factor D.
+pub const DISTURBANCE: Range = Range::closed(0.0, 1.0);
+/// A power curve's exponent b (concave or straight).
+pub const POWER_EXPONENT: Range = Range::above(0.0, 1.0);
+/// A shift of normal stress, a normal stress on an envelope, or a pore pressure of a grid
+/// (negative: suction).
+pub const SIGNED_STRESS: Range = Range::closed(-MAX_MAGNITUDE, MAX_MAGNITUDE);
+/// The factor h_u on a piezometric line's head.
+pub const HEAD_FACTOR: Range = Range::closed(0.0, 1.0);
+
 /// Slices of a slip surface.
 pub const SLICES: Count = Count::new(1, MAX_SLICES);
 /// Voussoirs of a circular arch, blocks of a chain or an assembly.
@@ -222,6 +236,10 @@ pub const VERTICES: Count = Count::new(4, 40);
 pub const EVALUATIONS: Count = Count::new(1, 1_000_000);
 /// Points of a polyline of a section or a slip surface.
 pub const POLYLINE_POINTS: Count = Count::new(1, MAX_POLYLINE_POINTS);
+/// Points of a shear–normal strength envelope.
+pub const ENVELOPE_POINTS: Count = Count::new(2, 1000);
+/// Points of a pore-pressure grid.
+pub const PORE_GRID_POINTS: Count = Count::new(3, 10_000);
 /// Layers of a section.
 pub const LAYERS: Count = Count::new(1, MAX_LAYERS);
 /// Surcharges, and line loads, of a section.

@@ -13,9 +13,8 @@ use thrustline_solver::slope::{
 
 use super::methods::interslice_function;
 use super::request::{CircleDto, CompositeDto, SearchDto, SpencerRequest};
-use super::section::{
-    polyline, refuse_section_only, search_region, section_from, soil as soil_from,
-};
+use super::section::{polyline, refuse_section_only, search_region, section_from};
+use super::strength::soil as soil_from;
 use crate::error::ApiError;
 use crate::limits::{
     CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,

@@ -11,6 +11,7 @@ pub mod design;
 pub mod drawing;
 pub mod fills;
 pub mod input;
+pub mod lines;
 pub mod loads;
 pub mod methods;
 pub mod options;
@@ -19,11 +20,14 @@ pub mod report;
 pub mod request;
 pub mod response;
 pub mod section;
+pub mod slices;
 pub mod solve;
 pub mod solved;
+pub mod strength;
 pub mod supports;
 pub mod tables;
 pub mod warnings;
+pub mod water;
 
 use axum::extract::State;
 

@@ -57,12 +57,21 @@ pub struct SoilDto {
     /// Unit weight γ, 0 < γ ≤ 1e12.
     #[schema(examples(10.0))]
     pub unit_weight: f64,
-    /// Effective cohesion c', 0 ≤ c' ≤ 1e12 (> 0 when the friction angle is 0).
+    /// Effective cohesion c', 0 ≤ c' ≤ 1e12 (> 0 when the friction angle is 0). Required
+    /// unless `strength` is given (then not allowed).
+    #[serde(default)]
     #[schema(examples(6.096))]
-    pub cohesion: f64,
-    /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9.
+    pub cohesion: Option<f64>,
+    /// Effective friction angle φ' in degrees, 0 ≤ φ' ≤ 89.9. Required unless `strength` is
+    /// given (then not allowed).
+    #[serde(default)]
     #[schema(examples(40.0))]
-    pub friction_angle_deg: f64,
+    pub friction_angle_deg: Option<f64>,
+    /// A strength model instead of `cohesion` and `friction_angle_deg` (model §8): undrained
+    /// strength with depth, a power curve, Hoek–Brown or a shear–normal function. In a
+    /// section's layers only.
+    #[serde(default)]
+    pub strength: Option<super::strength::StrengthDto>,
     /// Pore pressure ratio r_u = u/σ_v (σ_v = W/b, γh in one soil), 0 ≤ r_u ≤ 1. Defaults to
     /// 0 for `soil`; in a section's layer, when given it sets the pore pressure at bases in
     /// this soil in place of the piezometric line.
@@ -322,11 +331,16 @@ pub struct SectionDto {
     #[serde(default)]
     #[schema(value_type = Option<Vec<Vec<f64>>>)]
     pub bedrock: Option<Vec<Coordinates>>,
-    /// The piezometric line: u = γ_w·(y_line − y) below it; where it lies above the ground the
-    /// water is ponded and presses on the ground.
+    /// The piezometric line: u = h_u·γ_w·(y_line − y) below it; where it lies above the ground
+    /// the water is ponded and presses on the ground. Its points (1 to 1000), or `{points,
+    /// hu}` with h_u a number 0–1 or `auto` (cos²α of the line's inclination).
     #[serde(default)]
-    #[schema(value_type = Option<Vec<Vec<f64>>>)]
-    pub piezometric_line: Option<Vec<Coordinates>>,
+    pub piezometric_line: Option<super::water::PiezometricLineDto>,
+    /// Pore pressures at points [x, y, u], linear over their Delaunay triangulation: u at bases
+    /// in soils without their own r_u or piezometric line (in place of the section's line,
+    /// which still sets ponded water). Outside the grid u = 0, with a warning.
+    #[serde(default)]
+    pub pore_pressure_grid: Option<super::water::PoreGridDto>,
     /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
     /// (kN/m³); give 62.4 for pcf.
     #[serde(default)]
@@ -360,6 +374,10 @@ pub struct LayerDto {
     pub top: Option<Vec<Coordinates>>,
     /// The layer's soil.
     pub soil: SoilDto,
+    /// The layer's own piezometric line: the pore pressure at bases in this soil (unless it has
+    /// its own r_u), in place of the grid and the section's line. Points, or `{points, hu}`.
+    #[serde(default)]
+    pub piezometric_line: Option<super::water::PiezometricLineDto>,
 }
 
 /// A tension crack: where the slip surface rises through the ground moved down by `depth`, it

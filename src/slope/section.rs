@@ -8,19 +8,21 @@ use thrustline_solver::slope::section::search::{CircleRegion, Radii};
 use thrustline_solver::slope::section::{
     Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
 };
-use thrustline_solver::slope::Soil;
 
 use super::design::action;
-use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto, SoilDto};
+pub use super::lines::polyline;
+use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto};
+use super::strength::layer_soil;
+use super::water::{pore_grid, water_line};
 use crate::error::ApiError;
 use crate::limits::{
-    COORDINATE, CRACK_DEPTH, DEFAULT_WATER_UNIT_WEIGHT, EVALUATIONS, FRICTION_ANGLE_DEG,
-    GRID_POINTS, LAYERS, LINE_LOAD, MAX_GRID_SLICES, MAX_POLYLINE_POINTS, POLYLINE_POINTS,
-    PORE_PRESSURE_RATIO, RADII, RADIUS, SECTION_LOADS, STRESS, TIME_BUDGET_MS, UNIT_WEIGHT,
-    VERTICES,
+    COORDINATE, CRACK_DEPTH, DEFAULT_WATER_UNIT_WEIGHT, EVALUATIONS, GRID_POINTS, LAYERS,
+    LINE_LOAD, MAX_GRID_SLICES, PORE_PRESSURE_RATIO, RADII, RADIUS, SECTION_LOADS, STRESS,
+    TIME_BUDGET_MS, UNIT_WEIGHT, VERTICES,
 };
 use crate::validation::{count_within, number, within};
 use thrustline_solver::slope::design::Design;
+use thrustline_solver::slope::section::{Hu, Water};
 
 /// Radii per centre when none are given.
 const DEFAULT_RADII: usize = 10;
@@ -217,91 +219,18 @@ fn radii(search: &SearchDto, nr: usize) -> Result<Radii, ApiError> {
     )
 }
 
-/// A polyline from its points, at `field`.
-pub fn polyline(field: &str, points: &[Coordinates]) -> Result<Polyline, ApiError> {
-    count_within(field, points.len(), POLYLINE_POINTS).map_err(|_| {
-        ApiError::invalid(
-            field,
-            format!(
-                "{} points is out of range: allowed is 1 to {MAX_POLYLINE_POINTS} points [x, y]",
-                points.len()
-            ),
-        )
-    })?;
-    Polyline::from_input(points.iter().map(|p| (p[0], p[1])).collect()).map_err(|e| {
-        use thrustline_solver::slope::section::PolylineError;
-        let at = match e {
-            PolylineError::Empty => field.to_owned(),
-            PolylineError::NotFinite { index }
-            | PolylineError::NotIncreasing { index }
-            | PolylineError::TooClose { index } => {
-                format!("{field}[{index}]")
-            }
-        };
-        ApiError::invalid(at, e.to_string())
-    })
-}
-
-/// A soil at `prefix` (`soil` or `section.layers[i].soil`); r_u is the caller's.
-pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
-    let field = |name: &str| format!("{prefix}.{name}");
-    within(&field("unit_weight"), dto.unit_weight, UNIT_WEIGHT)?;
-    within(&field("cohesion"), dto.cohesion, STRESS)?;
-    within(
-        &field("friction_angle_deg"),
-        dto.friction_angle_deg,
-        FRICTION_ANGLE_DEG,
-    )?;
-    // A soil without strength is Soil::new's check; its errors name `soil.*`, re-rooted here
-    // at the prefix.
-    Soil::new(dto.unit_weight, dto.cohesion, dto.friction_angle_deg, ratio).map_err(|e| {
-        match ApiError::from(e) {
-            ApiError::Invalid { field, detail } => ApiError::Invalid {
-                field: field.replacen("soil", prefix, 1),
-                detail,
-            },
-            other => other,
-        }
-    })
-}
-
 /// The section as the solver takes it.
 pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section, ApiError> {
     let ground = polyline("section.ground", &dto.ground)?;
-    count_within("section.layers", dto.layers.len(), LAYERS)?;
-    let layers = dto
-        .layers
-        .iter()
-        .enumerate()
-        .map(|(i, layer)| {
-            let prefix = format!("section.layers[{i}]");
-            let ratio = layer
-                .soil
-                .pore_pressure_ratio
-                .map(|r| {
-                    within(
-                        &format!("{prefix}.soil.pore_pressure_ratio"),
-                        r,
-                        PORE_PRESSURE_RATIO,
-                    )
-                })
-                .transpose()?;
-            Ok(Layer {
-                top: layer
-                    .top
-                    .as_ref()
-                    .map(|t| polyline(&format!("{prefix}.top"), t))
-                    .transpose()?,
-                soil: soil(&format!("{prefix}.soil"), &layer.soil, 0.0)?,
-                pore_pressure_ratio: ratio,
-                strength: thrustline_solver::slope::strength::Strength::MohrCoulomb,
-                piezometric_line: None,
-            })
-        })
-        .collect::<Result<Vec<_>, ApiError>>()?;
+    let layers = layers(dto)?;
     let line = |field: &str, points: &Option<Vec<Coordinates>>| {
         points.as_ref().map(|p| polyline(field, p)).transpose()
     };
+    let section_line = dto
+        .piezometric_line
+        .as_ref()
+        .map(|w| water_line("section.piezometric_line", w))
+        .transpose()?;
     let water_unit_weight = within(
         "section.water_unit_weight",
         dto.water_unit_weight.unwrap_or(DEFAULT_WATER_UNIT_WEIGHT),
@@ -343,13 +272,16 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
         ground,
         layers,
         bedrock: line("section.bedrock", &dto.bedrock)?,
-        piezometric_line: line("section.piezometric_line", &dto.piezometric_line)?,
+        piezometric_line: section_line.as_ref().map(|w| w.line.clone()),
         water_unit_weight,
         surcharges,
         line_loads,
         tension_crack,
         supports: super::supports::supports(&dto.supports)?,
-        water: Default::default(),
+        water: Water {
+            hu: section_line.map_or(Hu::Factor(1.0), |w| w.hu),
+            grid: dto.pore_pressure_grid.as_ref().map(pore_grid).transpose()?,
+        },
     };
     // The design values, once: soils and loads by their actions.
     let parts = match design {
@@ -357,6 +289,45 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
         None => parts,
     };
     Ok(Section::new(parts)?)
+}
+
+/// The layers, each with its soil, strength model and own water line.
+fn layers(dto: &SectionDto) -> Result<Vec<Layer>, ApiError> {
+    count_within("section.layers", dto.layers.len(), LAYERS)?;
+    dto.layers
+        .iter()
+        .enumerate()
+        .map(|(i, layer)| {
+            let prefix = format!("section.layers[{i}]");
+            let ratio = layer
+                .soil
+                .pore_pressure_ratio
+                .map(|r| {
+                    within(
+                        &format!("{prefix}.soil.pore_pressure_ratio"),
+                        r,
+                        PORE_PRESSURE_RATIO,
+                    )
+                })
+                .transpose()?;
+            let (soil, strength) = layer_soil(&format!("{prefix}.soil"), &layer.soil)?;
+            Ok(Layer {
+                top: layer
+                    .top
+                    .as_ref()
+                    .map(|t| polyline(&format!("{prefix}.top"), t))
+                    .transpose()?,
+                soil,
+                pore_pressure_ratio: ratio,
+                strength,
+                piezometric_line: layer
+                    .piezometric_line
+                    .as_ref()
+                    .map(|w| water_line(&format!("{prefix}.piezometric_line"), w))
+                    .transpose()?,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()
 }
 
 /// The section's parts in a design check's values (each load by its action).

@@ -89,7 +89,53 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
     if let Some(beyond) = beyond_the_ground(solved) {
         warnings.push(beyond);
     }
+    if !solution.strength.settled {
+        warnings.push(Warning::new(
+            Code::StrengthNotConsistent,
+            format!(
+                "the bases' strengths did not settle on their nonlinear envelopes in {} rounds: \
+                 F is that of the last round, not a consistent state",
+                solution.strength.rounds
+            ),
+        ));
+    }
+    warnings.extend(outside_the_grid(solved));
     warnings
+}
+
+/// Bases whose pore pressure comes from the grid but lie outside it (u = 0 taken there).
+fn outside_the_grid(solved: &SolvedSlope) -> Option<Warning> {
+    let Analysed::Section(problem) = &solved.problem;
+    let section = problem.section();
+    let grid = section.water().grid.as_ref()?;
+    let layers = section.layers();
+    let outside: Vec<usize> = problem
+        .model()
+        .slices
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| {
+            let layer = &layers[s.layer];
+            layer.pore_pressure_ratio.is_none()
+                && layer.piezometric_line.is_none()
+                && grid
+                    .pressure(problem.to_section_x(s.base_middle.0), s.base_middle.1)
+                    .is_none()
+        })
+        .map(|(i, _)| i)
+        .collect();
+    let slices = one_based(&outside);
+    (!slices.is_empty()).then(|| {
+        Warning::new(
+            Code::OutsidePorePressureGrid,
+            format!(
+                "the bases of slices {} lie outside section.pore_pressure_grid: u = 0 taken \
+                 there — extend the grid over the sliding mass",
+                listed(&slices)
+            ),
+        )
+        .slices(slices)
+    })
 }
 
 /// A surface that reaches beyond a section's ground as stated: the ground is taken level

@@ -7,11 +7,13 @@
 //! ·1 (permanent) or ·0 (variable). DA2 factors the effect instead: F is found with variable
 //! loads ·γ_Q/γ_G and permanent ones as they are, and the over-design factor is F/(γ_G·γ_R);
 //! otherwise it is F/γ_R. Pore water, seismic coefficients and support capacities are taken
-//! as given.
+//! as given. Strength models (model §8): an undrained profile's s_u/γ_cu; a nonlinear
+//! envelope's τ/γ_φ (M2 has γ_c = γ_φ, so its cohesive and frictional parts alike).
 
 use super::error::{SlopeError, SlopeParameter};
 use super::section::{LineLoad, SectionParts, Surcharge};
 use super::spencer::Soil;
+use super::strength::{Envelope, Strength};
 
 /// An EN 1997-1 design approach, or factors of one's own.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -180,8 +182,20 @@ impl Design {
         mut parts: SectionParts,
         (surcharges, line_loads): (&[Action], &[Action]),
     ) -> Result<SectionParts, SlopeError> {
+        let f = &self.factors;
         for layer in &mut parts.layers {
-            layer.soil = self.soil(layer.soil)?;
+            match &layer.strength {
+                Strength::MohrCoulomb => layer.soil = self.soil(layer.soil)?,
+                Strength::Undrained(u) => {
+                    layer.soil = Soil::weight_only(layer.soil.unit_weight * f.unit_weight)?;
+                    layer.strength = Strength::Undrained(u.divided(f.undrained));
+                }
+                Strength::Envelope(e) => {
+                    layer.soil = Soil::weight_only(layer.soil.unit_weight * f.unit_weight)?;
+                    layer.strength =
+                        Strength::Envelope(Envelope::Divided(Box::new(e.clone()), f.friction));
+                }
+            }
         }
         for (s, &action) in parts.surcharges.iter_mut().zip(surcharges) {
             let k = self.load_factor(action);

@@ -46,7 +46,7 @@ pub struct BaseSlice {
     pub layer: usize,
     /// Whether `cohesion` and `tan_phi` are the tangent to the layer's nonlinear envelope
     /// ([`SliceModel::envelopes`]) at an estimate of the base's σ′ₙ, to be moved to its
-    /// consistent state ([`crate::slope::strength::consistent`]).
+    /// consistent state (model §8).
     pub nonlinear: bool,
     /// The pore water's force on the right side (horizontal, ∫u dy from the base to the
     /// ground) and the height it acts at: what separates the total inter-slice force there

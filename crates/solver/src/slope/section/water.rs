@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use spade::{DelaunayTriangulation, FloatTriangulation, HasPosition, Point2, Triangulation};
 
-use super::Polyline;
+use crate::slope::section::polyline::Polyline;
 
 /// The factor on a piezometric line's head.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -135,9 +135,11 @@ pub fn bishop(model: &SliceModel) -> MethodFactor {
         let f = bishop_factor(m)?;
         Some((
             f,
-            normals
-                .then(|| effective_normals(m, f, 0.0))
-                .unwrap_or_default(),
+            if normals {
+                effective_normals(m, f, 0.0)
+            } else {
+                Vec::new()
+            },
         ))
     }))
 }
@@ -160,9 +162,11 @@ pub fn janbu(model: &SliceModel) -> MethodFactor {
         let f = Equations::new(m).f_at_theta(0.0, false, &mut evaluations)?;
         Some((
             f,
-            normals
-                .then(|| effective_normals(m, f, 0.0))
-                .unwrap_or_default(),
+            if normals {
+                effective_normals(m, f, 0.0)
+            } else {
+                Vec::new()
+            },
         ))
     }))
 }

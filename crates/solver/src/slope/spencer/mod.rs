@@ -31,6 +31,7 @@
 //! Where no root has every m_α positive, Newton's method past the poles of m_α (see
 //! `newton::beyond_poles` for which of those roots is sound and which is answered).
 
+mod consistent;
 mod describe;
 mod equations;
 mod kernel;
@@ -335,7 +336,7 @@ const CURVE_HALF_WIDTH_DEG: i32 = 30;
 /// on nonlinear envelopes, with each base's tangent at its consistent state (where the curves
 /// cross at the answer).
 pub fn factor_curves_around(model: &SliceModel, theta_rad: f64) -> FactorCurves {
-    if crate::slope::strength::is_nonlinear(model) {
+    if consistent::is_nonlinear(model) {
         let (_, consistent) = nonlinear::solve(model, &SpencerSettings::default());
         return factor_curves_around(&consistent, theta_rad);
     }

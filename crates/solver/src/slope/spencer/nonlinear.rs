@@ -1,13 +1,13 @@
 //! Spencer's method and the methods beside it on nonlinear strength envelopes: each solved to
-//! the consistent state of [`crate::slope::strength::consistent`], reading each base's σ′ₙ from
+//! the consistent state of [`super::consistent`], reading each base's σ′ₙ from
 //! its own equations.
 
+use super::consistent::{consistent, is_nonlinear, Step};
 use super::equations::Equations;
 use super::{
     linear_factor_outcome, solve_tension, FactorOutcome, SpencerSettings, SpencerSolution,
 };
 use crate::slope::slices::SliceModel;
-use crate::slope::strength::{consistent, is_nonlinear, Step};
 
 /// Each slice's effective normal force N′ = A_n + Q·sin(α − θ) − u·l at (F, θ) with parallel
 /// inter-slice forces (Spencer's; θ = 0 for Bishop's and Janbu's).

@@ -59,7 +59,7 @@ impl HoekBrown {
     /// τ and dτ/dσ′ₙ at σ′ₙ = `sigma` (0 at or below the tensile strength).
     pub fn shear(&self, sigma: f64) -> (f64, f64) {
         let t = self.tensile_strength();
-        if !(sigma > t) || !sigma.is_finite() {
+        if sigma <= t || !sigma.is_finite() {
             return (0.0, 0.0);
         }
         let g = |s3: f64| {

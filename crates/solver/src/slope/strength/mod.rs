@@ -5,19 +5,35 @@
 //! Undrained strength depends on where a base lies only: it is written into the base's
 //! cohesion when the slices are cut. A nonlinear envelope depends on the base's σ′ₙ, which
 //! depends on F: each base carries the tangent to its envelope (c_t, tan φ_t) at an estimate of
-//! σ′ₙ, and [`consistent`] solves, reads each base's σ′ₙ, moves the tangents there and solves
+//! σ′ₙ, and Spencer's method and the others solve, reads each base's σ′ₙ, moves the tangents there and solves
 //! again until the strength every base carries is its envelope's at its own σ′ₙ.
 
-mod consistent;
 mod hoek_brown;
 
-pub use consistent::{consistent, is_nonlinear, Consistency, Step, MAX_ROUNDS};
 pub use hoek_brown::HoekBrown;
 
 /// The steepest tangent a base carries: tan 80°. Where an envelope is steeper (a power curve
 /// with b < 1 or Hoek–Brown near their tensile ends) the tangent is flattened; the strength at
 /// the linearisation point is still the envelope's, so the consistent state does not change.
 const MAX_TANGENT: f64 = 5.671_281_819_617_709;
+
+/// How the consistent state was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Consistency {
+    /// Rounds of solving (0 when nothing is nonlinear: one solve, nothing to settle).
+    pub rounds: usize,
+    /// Whether the strengths settled on their envelopes (always, when nothing is nonlinear).
+    pub settled: bool,
+}
+
+impl Default for Consistency {
+    fn default() -> Self {
+        Self {
+            rounds: 0,
+            settled: true,
+        }
+    }
+}
 
 /// A base's soil strength model (Mohr–Coulomb when none is given: the soil's c′ and φ′).
 #[derive(Debug, Clone, PartialEq)]

@@ -1,4 +1,4 @@
-//! The consistent state of a slip surface with nonlinear envelopes: solve with each base's
+//! The consistent state (model §8) of a slip surface with nonlinear envelopes: solve with each base's
 //! tangent, read each base's σ′ₙ = N′/l, move the tangents there, solve again — until the
 //! strength each base carries is its envelope's at its own σ′ₙ (within 1e-10 of the largest
 //! base strength).
@@ -7,6 +7,7 @@
 //! same answer, only the path to it changes.
 
 use crate::slope::slices::SliceModel;
+use crate::slope::strength::Consistency;
 
 /// Rounds of solving at most; a state not settled by then is answered as such.
 pub const MAX_ROUNDS: usize = 60;
@@ -21,24 +22,6 @@ pub enum Step<T> {
     Next(T, Vec<f64>),
     /// An answer to stop at (no solution: nothing to move the tangents to).
     Done(T),
-}
-
-/// How the consistent state was reached.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Consistency {
-    /// Rounds of solving (0 when nothing is nonlinear: one solve, nothing to settle).
-    pub rounds: usize,
-    /// Whether the strengths settled on their envelopes (always, when nothing is nonlinear).
-    pub settled: bool,
-}
-
-impl Default for Consistency {
-    fn default() -> Self {
-        Self {
-            rounds: 0,
-            settled: true,
-        }
-    }
 }
 
 /// Whether any base of `model` carries a nonlinear envelope.

@@ -1,0 +1,283 @@
+//! `soil.strength` (model §8): the strength models clients state, read into the solver's
+//! [`Strength`]. Nonlinear envelopes are solved to their consistent state by the solver.
+
+use serde::{Deserialize, Serialize};
+use thrustline_solver::slope::strength::{Envelope, HoekBrown, Reference, Strength, Undrained};
+use thrustline_solver::slope::Soil;
+use utoipa::ToSchema;
+
+use super::request::SoilDto;
+use crate::error::ApiError;
+use crate::limits::{
+    COORDINATE, DISTURBANCE, ENVELOPE_POINTS, FRICTION_ANGLE_DEG, GSI, HOEK_BROWN_MI,
+    POSITIVE_STRESS, POWER_EXPONENT, SIGNED_STRESS, STRESS, UNIT_WEIGHT,
+};
+use crate::validation::{count_within, within};
+
+/// What an undrained profile's depth is measured from, when not from a `datum`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum DepthReferenceDto {
+    /// The ground above the point.
+    Ground,
+}
+
+/// Undrained strength s_u = cohesion + gradient·depth (φ = 0), capped at `cohesion_max`.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct UndrainedDto {
+    /// s_u at the datum (or at the ground), 0 ≤ s_u0 ≤ 1e12.
+    #[schema(examples(20.0))]
+    pub cohesion: f64,
+    /// Increase per unit depth, 0 ≤ k ≤ 1e12. Defaults to 0 (constant s_u).
+    #[serde(default)]
+    #[schema(examples(1.5))]
+    pub gradient: Option<f64>,
+    /// Depth is measured below this level y (above it s_u = s_u0). Give this or `reference`.
+    #[serde(default)]
+    pub datum: Option<f64>,
+    /// `ground`: depth is measured below the ground at the point's x. Give this or `datum`.
+    #[serde(default)]
+    pub reference: Option<DepthReferenceDto>,
+    /// The largest s_u (≥ `cohesion`), when given.
+    #[serde(default)]
+    pub cohesion_max: Option<f64>,
+}
+
+/// A power curve τ = a·(σ′ₙ + d)^b + c (τ = c where σ′ₙ + d ≤ 0); b = 1 is Mohr–Coulomb.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PowerCurveDto {
+    /// a ≥ 0 (in the units that make τ a stress).
+    #[schema(examples(2.5))]
+    pub a: f64,
+    /// 0 < b ≤ 1.
+    #[schema(examples(0.75))]
+    pub b: f64,
+    /// c ≥ 0, a stress. Defaults to 0.
+    #[serde(default)]
+    pub c: Option<f64>,
+    /// d, a stress added to σ′ₙ. Defaults to 0.
+    #[serde(default)]
+    pub d: Option<f64>,
+}
+
+/// The generalised Hoek–Brown criterion (Hoek, Carranza-Torres & Corkum 2002); the shear
+/// strength at a base is the criterion's Mohr envelope at its σ′ₙ (Balmer 1952).
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct HoekBrownDto {
+    /// Uniaxial compressive strength of the intact rock σ_ci > 0.
+    #[schema(examples(30000.0))]
+    pub sigma_ci: f64,
+    /// Geological strength index, 5 ≤ GSI ≤ 100.
+    #[schema(examples(45.0))]
+    pub gsi: f64,
+    /// m_i of the intact rock, 0 < m_i ≤ 100.
+    #[schema(examples(10.0))]
+    pub mi: f64,
+    /// Disturbance factor D, 0 ≤ D ≤ 1. Defaults to 0.
+    #[serde(default)]
+    pub disturbance: Option<f64>,
+}
+
+/// A piecewise-linear envelope through [σ′ₙ, τ] points (σ′ₙ strictly increasing, τ ≥ 0),
+/// continued along its first and last pieces, never below τ = 0.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ShearNormalDto {
+    /// 2 to 1000 points [σ′ₙ, τ].
+    #[schema(value_type = Vec<Vec<f64>>)]
+    pub points: Vec<[f64; 2]>,
+}
+
+/// A soil's strength model (instead of `cohesion` and `friction_angle_deg`).
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(tag = "model", rename_all = "snake_case")]
+pub enum StrengthDto {
+    /// Undrained strength growing with depth.
+    Undrained(UndrainedDto),
+    /// A power curve.
+    PowerCurve(PowerCurveDto),
+    /// Hoek–Brown.
+    HoekBrown(HoekBrownDto),
+    /// A shear–normal function.
+    ShearNormal(ShearNormalDto),
+}
+
+/// A Mohr–Coulomb soil at `prefix` (`soil`: the simple slope, which takes no strength model);
+/// r_u is the caller's.
+pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
+    if dto.strength.is_some() {
+        return Err(ApiError::invalid(
+            format!("{prefix}.strength"),
+            "is for a section's layers: give the slope as a section (its ground and one layer) \
+             to use a strength model",
+        ));
+    }
+    mohr_coulomb(prefix, dto, ratio)
+}
+
+/// A layer's soil at `prefix` (`section.layers[i].soil`) and its strength model: `cohesion`
+/// and `friction_angle_deg`, or `strength` (then neither of them).
+pub fn layer_soil(prefix: &str, dto: &SoilDto) -> Result<(Soil, Strength), ApiError> {
+    let Some(model) = &dto.strength else {
+        return Ok((mohr_coulomb(prefix, dto, 0.0)?, Strength::MohrCoulomb));
+    };
+    for (name, given) in [
+        ("cohesion", dto.cohesion.is_some()),
+        ("friction_angle_deg", dto.friction_angle_deg.is_some()),
+    ] {
+        if given {
+            return Err(ApiError::invalid(
+                format!("{prefix}.{name}"),
+                "is not used with strength: state the strength in the model alone",
+            ));
+        }
+    }
+    let weight = within(
+        &format!("{prefix}.unit_weight"),
+        dto.unit_weight,
+        UNIT_WEIGHT,
+    )?;
+    Ok((
+        Soil::weight_only(weight)?,
+        strength(&format!("{prefix}.strength"), model)?,
+    ))
+}
+
+/// c′ and φ′ at `prefix`, both required.
+fn mohr_coulomb(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
+    let field = |name: &str| format!("{prefix}.{name}");
+    within(&field("unit_weight"), dto.unit_weight, UNIT_WEIGHT)?;
+    let required = |name: &str, value: Option<f64>| {
+        value.ok_or_else(|| {
+            ApiError::invalid(
+                field(name),
+                "is required (or give strength, a strength model, in a section's layer)",
+            )
+        })
+    };
+    let cohesion = within(
+        &field("cohesion"),
+        required("cohesion", dto.cohesion)?,
+        STRESS,
+    )?;
+    let friction = within(
+        &field("friction_angle_deg"),
+        required("friction_angle_deg", dto.friction_angle_deg)?,
+        FRICTION_ANGLE_DEG,
+    )?;
+    // A soil without strength is Soil::new's check; its errors name `soil.*`, re-rooted here
+    // at the prefix.
+    Soil::new(dto.unit_weight, cohesion, friction, ratio).map_err(|e| match ApiError::from(e) {
+        ApiError::Invalid { field, detail } => ApiError::Invalid {
+            field: field.replacen("soil", prefix, 1),
+            detail,
+        },
+        other => other,
+    })
+}
+
+/// The model at `prefix` (`section.layers[i].soil.strength`) as the solver takes it.
+pub fn strength(prefix: &str, dto: &StrengthDto) -> Result<Strength, ApiError> {
+    let field = |name: &str| format!("{prefix}.{name}");
+    Ok(match dto {
+        StrengthDto::Undrained(u) => Strength::Undrained(undrained(prefix, u)?),
+        StrengthDto::PowerCurve(p) => {
+            let a = within(&field("a"), p.a, STRESS)?;
+            let b = within(&field("b"), p.b, POWER_EXPONENT)?;
+            let c = within(&field("c"), p.c.unwrap_or(0.0), STRESS)?;
+            let d = within(&field("d"), p.d.unwrap_or(0.0), SIGNED_STRESS)?;
+            if a == 0.0 && c == 0.0 {
+                return Err(ApiError::invalid(
+                    field("a"),
+                    "0 is out of range: allowed is a > 0 when c is 0 (a soil without strength)",
+                ));
+            }
+            Strength::Envelope(Envelope::PowerCurve { a, b, c, d })
+        }
+        StrengthDto::HoekBrown(h) => Strength::Envelope(Envelope::HoekBrown(HoekBrown::new(
+            within(&field("sigma_ci"), h.sigma_ci, POSITIVE_STRESS)?,
+            within(&field("gsi"), h.gsi, GSI)?,
+            within(&field("mi"), h.mi, HOEK_BROWN_MI)?,
+            within(
+                &field("disturbance"),
+                h.disturbance.unwrap_or(0.0),
+                DISTURBANCE,
+            )?,
+        ))),
+        StrengthDto::ShearNormal(s) => {
+            count_within(&field("points"), s.points.len(), ENVELOPE_POINTS)?;
+            let mut points: Vec<(f64, f64)> = Vec::with_capacity(s.points.len());
+            for (i, p) in s.points.iter().enumerate() {
+                let at = format!("{prefix}.points[{i}]");
+                let sigma = within(&at, p[0], SIGNED_STRESS)?;
+                let tau = within(&at, p[1], STRESS)?;
+                if points.last().is_some_and(|q| sigma <= q.0) {
+                    return Err(ApiError::invalid(
+                        at,
+                        "σ′ₙ must increase strictly from point to point",
+                    ));
+                }
+                points.push((sigma, tau));
+            }
+            if points.iter().all(|p| p.1 == 0.0) {
+                return Err(ApiError::invalid(
+                    field("points"),
+                    "every τ is 0: a soil without strength",
+                ));
+            }
+            Strength::Envelope(Envelope::ShearNormal(points))
+        }
+    })
+}
+
+/// An undrained profile: a datum or the ground, a cap not below s_u0, some strength.
+fn undrained(prefix: &str, u: &UndrainedDto) -> Result<Undrained, ApiError> {
+    let field = |name: &str| format!("{prefix}.{name}");
+    let cohesion = within(&field("cohesion"), u.cohesion, STRESS)?;
+    let gradient = within(&field("gradient"), u.gradient.unwrap_or(0.0), STRESS)?;
+    let reference = match (u.datum, u.reference) {
+        (Some(_), Some(_)) => {
+            return Err(ApiError::invalid(
+                field("reference"),
+                "give either datum (a level) or reference: ground, not both",
+            ))
+        }
+        (Some(datum), None) => Reference::Datum(within(&field("datum"), datum, COORDINATE)?),
+        (None, Some(DepthReferenceDto::Ground)) => Reference::Ground,
+        (None, None) if gradient == 0.0 => Reference::Ground,
+        (None, None) => {
+            return Err(ApiError::invalid(
+                field("datum"),
+                "is required with a gradient: the level depth is measured from (or give \
+                 reference: ground)",
+            ))
+        }
+    };
+    let cohesion_max = u
+        .cohesion_max
+        .map(|m| within(&field("cohesion_max"), m, STRESS))
+        .transpose()?;
+    if let Some(max) = cohesion_max {
+        if max < cohesion {
+            return Err(ApiError::invalid(
+                field("cohesion_max"),
+                format!("{max} is out of range: allowed is cohesion_max ≥ cohesion ({cohesion})"),
+            ));
+        }
+    }
+    if cohesion == 0.0 && (gradient == 0.0 || cohesion_max == Some(0.0)) {
+        return Err(ApiError::invalid(
+            field("cohesion"),
+            "0 is out of range: allowed is > 0 when the gradient is 0 (a soil without strength)",
+        ));
+    }
+    Ok(Undrained {
+        cohesion,
+        gradient,
+        reference,
+        cohesion_max,
+    })
+}
