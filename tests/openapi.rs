@@ -64,9 +64,17 @@ fn points_are_pairs_and_codes_are_enums() {
     }
     // A piezometric line given as its points alone is a list of pairs; a grid's are triples.
     let line = &schemas["PiezometricLineDto"]["oneOf"][0]["items"];
-    assert_eq!((&line["minItems"], &line["maxItems"]), (&2.into(), &2.into()), "{line}");
+    assert_eq!(
+        (&line["minItems"], &line["maxItems"]),
+        (&2.into(), &2.into()),
+        "{line}"
+    );
     let grid = &schemas["PoreGridDto"]["properties"]["points"]["items"];
-    assert_eq!((&grid["minItems"], &grid["maxItems"]), (&3.into(), &3.into()), "{grid}");
+    assert_eq!(
+        (&grid["minItems"], &grid["maxItems"]),
+        (&3.into(), &3.into()),
+        "{grid}"
+    );
     // The search's map of F is a matrix, not points.
     let map = &schemas["GridDto"]["properties"]["factor_of_safety"]["items"];
     assert!(map["maxItems"].is_null(), "{map}");

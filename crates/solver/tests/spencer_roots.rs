@@ -224,7 +224,6 @@ fn a_circle_in_level_ground_provably_has_no_root() {
             tan_phi: 30f64.to_radians().tan(),
             pore_pressure: 0.0,
             layer: 0,
-            nonlinear: false,
             side_water: (0.0, 0.0),
         }
     };
@@ -236,7 +235,8 @@ fn a_circle_in_level_ground_provably_has_no_root() {
         moment_centre: Some((0.0, 5.0)),
         circular: true,
         length_scale: 8.0,
-        envelopes: Default::default(),
+        envelopes: None,
+        fixed: Vec::new(),
     };
     assert_eq!(
         spencer_factor_outcome(&model, &SpencerSettings::default()),

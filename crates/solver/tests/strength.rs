@@ -410,3 +410,51 @@ fn hu_scales_the_head_and_auto_is_cos_squared_of_the_line() {
     let f = factors(&p)[0];
     assert!(none[0] > f && f > mohr_coulomb(8.0, 30.0)[0]);
 }
+
+/// A planar wedge cut as one slice: the ends carry no inter-slice force, so force equilibrium
+/// along the base gives F = τ(σ′ₙ)·l/(W sin α) with σ′ₙ = W cos α/l — for any envelope, once
+/// the base's strength is its envelope's at that σ′ₙ.
+#[test]
+fn a_one_slice_wedge_has_the_closed_form_factor_on_any_envelope() {
+    // Face (0, 0)–(20, 10), crest level; the plane from the toe to (30, 10).
+    let ground = line(&[(-10.0, 0.0), (0.0, 0.0), (20.0, 10.0), (40.0, 10.0)]);
+    let weight = 19.0 * 50.0;
+    let (l, alpha) = (1000f64.sqrt(), (10.0f64 / 30.0).atan());
+    let sigma = weight * alpha.cos() / l;
+    for envelope in [
+        Envelope::PowerCurve {
+            a: 2.0,
+            b: 0.6,
+            c: 1.5,
+            d: 0.0,
+        },
+        Envelope::HoekBrown(HoekBrown::new(2_000.0, 25.0, 10.0, 0.3)),
+        Envelope::ShearNormal(vec![(0.0, 2.0), (10.0, 9.0), (40.0, 20.0)]),
+    ] {
+        let expected = envelope.shear(sigma).0 * l / (weight * alpha.sin());
+        let mut p = parts(
+            vec![layer(
+                None,
+                Soil::weight_only(19.0).unwrap(),
+                Strength::Envelope(envelope.clone()),
+            )],
+            None,
+            Water::default(),
+        );
+        p.ground = ground.clone();
+        let problem = SectionProblem::new(
+            Section::new(p).unwrap(),
+            SlipShape::Polyline(line(&[(0.0, 0.0), (30.0, 10.0)])),
+            NonZeroUsize::new(1).unwrap(),
+            Seismic::default(),
+            None,
+        )
+        .unwrap();
+        assert_eq!(problem.model().slices.len(), 1);
+        let f = janbu(problem.model()).factor_of_safety.unwrap();
+        assert!(
+            (f - expected).abs() <= 1e-9 * expected,
+            "{f} against {expected}"
+        );
+    }
+}

@@ -42,12 +42,11 @@ pub struct BaseSlice {
     pub tan_phi: f64,
     /// Pore pressure u at the base middle.
     pub pore_pressure: f64,
-    /// Index of the soil (layer) at the base; 0 for a single soil.
+    /// Index of the soil (layer) at the base; 0 for a single soil. Where the layer has a
+    /// nonlinear envelope ([`SliceModel::envelopes`]), `cohesion` and `tan_phi` are its
+    /// tangent at an estimate of the base's σ′ₙ, to be moved to its consistent state (model
+    /// §8), unless the slice is among [`SliceModel::fixed`].
     pub layer: usize,
-    /// Whether `cohesion` and `tan_phi` are the tangent to the layer's nonlinear envelope
-    /// ([`SliceModel::envelopes`]) at an estimate of the base's σ′ₙ, to be moved to its
-    /// consistent state (model §8).
-    pub nonlinear: bool,
     /// The pore water's force on the right side (horizontal, ∫u dy from the base to the
     /// ground) and the height it acts at: what separates the total inter-slice force there
     /// from the effective one (Spencer 1973).
@@ -88,8 +87,12 @@ pub struct SliceModel {
     pub circular: bool,
     /// A length of the size of the mass (the radius of a circle), to scale moment residuals.
     pub length_scale: f64,
-    /// Per layer, its nonlinear strength envelope (empty when no layer has one).
-    pub envelopes: Arc<[Option<Envelope>]>,
+    /// Per layer, its nonlinear strength envelope (`None` when no layer has one: nothing to
+    /// share between threads).
+    pub envelopes: Option<Arc<[Option<Envelope>]>>,
+    /// Slices on a nonlinear envelope whose strength is fixed where it stands (dropped in
+    /// tension), sorted.
+    pub fixed: Vec<usize>,
 }
 
 impl SliceModel {
@@ -108,6 +111,18 @@ impl SliceModel {
             .iter()
             .map(|s| s.height_middle)
             .fold(0.0, f64::max)
+    }
+
+    /// The nonlinear envelope of `layer`, if it has one.
+    pub fn envelope(&self, layer: usize) -> Option<&Envelope> {
+        self.envelopes.as_deref()?.get(layer)?.as_ref()
+    }
+
+    /// The envelope slice `i` moves along, if its strength is not fixed.
+    pub fn moving_envelope(&self, i: usize) -> Option<&Envelope> {
+        let slice = self.slices.get(i)?;
+        let envelope = self.envelope(slice.layer)?;
+        self.fixed.binary_search(&i).is_err().then_some(envelope)
     }
 
     /// The start of the slip surface (toe end).

@@ -215,6 +215,18 @@ pub(super) fn side_water(section: &Section, levels: &[f64], (x, b): (f64, f64)) 
             (0.0, b)
         };
     }
+    // One soil with its own r_u: u = r_u·γ·(g − y), ½·r_u·γ·h² at h/3 above the base.
+    if let ([layer], None) = (layers.as_slice(), &section.water.grid) {
+        if let (Some(ratio), None) = (layer.pore_pressure_ratio, &layer.piezometric_line) {
+            let h = g - b;
+            let force = 0.5 * ratio * layer.soil.unit_weight * h * h;
+            return if force > 0.0 {
+                (force, b + h / 3.0)
+            } else {
+                (0.0, b)
+            };
+        }
+    }
     const PANELS: usize = 8;
     let h = (g - b) / PANELS as f64;
     let (mut force, mut moment) = (0.0, 0.0);

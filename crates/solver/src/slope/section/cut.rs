@@ -223,6 +223,7 @@ impl Cut {
                 circular,
                 length_scale,
                 envelopes: section.envelopes.clone(),
+                fixed: Vec::new(),
             },
             ends: (
                 (xa, ground.y_at(xa)),

@@ -107,7 +107,7 @@ pub struct Section {
     pub(crate) water: Water,
     /// Per layer, its nonlinear envelope (empty when none has one): what the slice models of
     /// this section carry.
-    envelopes: Arc<[Option<Envelope>]>,
+    envelopes: Option<Arc<[Option<Envelope>]>>,
     /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
     bends: Vec<f64>,
     /// The lines above the bases between the bends.
@@ -247,21 +247,20 @@ impl Section {
     }
 }
 
-/// Per layer, its nonlinear envelope; empty when no layer has one.
-fn envelopes(layers: &[Layer]) -> Arc<[Option<Envelope>]> {
-    if !layers
-        .iter()
-        .any(|l| matches!(l.strength, Strength::Envelope(_)))
-    {
-        return Arc::from(Vec::new());
-    }
+/// Per layer, its nonlinear envelope; `None` when no layer has one.
+fn envelopes(layers: &[Layer]) -> Option<Arc<[Option<Envelope>]>> {
     layers
         .iter()
-        .map(|l| match &l.strength {
-            Strength::Envelope(e) => Some(e.clone()),
-            _ => None,
+        .any(|l| matches!(l.strength, Strength::Envelope(_)))
+        .then(|| {
+            layers
+                .iter()
+                .map(|l| match &l.strength {
+                    Strength::Envelope(e) => Some(e.clone()),
+                    _ => None,
+                })
+                .collect()
         })
-        .collect()
 }
 
 /// A slip surface in the section's coordinates.

@@ -281,12 +281,11 @@ fn slice(
     let base_length = (width * width + rise * rise).sqrt();
     let (pore_pressure, side_water) =
         base_water(section, still, (levels, layer, (xm, bm)), s, (xr, br));
-    let (cohesion, tan_phi, nonlinear) = strength(
+    let (cohesion, tan_phi) = strength(
         section,
-        layer,
-        tan_phi[layer],
+        (layer, tan_phi[layer]),
         (bm, ground(levels)),
-        (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0),
+        || (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0),
     );
     let slice = BaseSlice {
         x_left: xl,
@@ -304,29 +303,25 @@ fn slice(
         tan_phi,
         pore_pressure,
         layer,
-        nonlinear,
         side_water,
     };
     (slice, column_right, water_force)
 }
 
-/// The base's (c, tan φ, nonlinear) in `layer` (its soil's tan φ′ given) at height y under the
+/// The base's (c, tan φ) in `layer` (its soil's tan φ′ given) at height y under the
 /// ground at g: the soil's c′ and φ′, the undrained strength there with φ = 0, or the tangent
-/// to a nonlinear envelope at the estimate `sigma` of σ′ₙ (W·cos²α/b − u).
+/// to a nonlinear envelope at the estimate `sigma()` of σ′ₙ (W·cos²α/b − u).
+#[inline]
 fn strength(
     section: &Section,
-    layer: usize,
-    tan_phi: f64,
+    (layer, tan_phi): (usize, f64),
     (y, g): (f64, f64),
-    sigma: f64,
-) -> (f64, f64, bool) {
+    sigma: impl Fn() -> f64,
+) -> (f64, f64) {
     let l = &section.layers[layer];
     match &l.strength {
-        Strength::MohrCoulomb => (l.soil.cohesion, tan_phi, false),
-        Strength::Undrained(u) => (u.at(y, g), 0.0, false),
-        Strength::Envelope(e) => {
-            let (c, t) = e.tangent(sigma);
-            (c, t, true)
-        }
+        Strength::MohrCoulomb => (l.soil.cohesion, tan_phi),
+        Strength::Undrained(u) => (u.at(y, g), 0.0),
+        Strength::Envelope(e) => e.tangent(sigma()),
     }
 }

@@ -26,7 +26,7 @@ pub enum Step<T> {
 
 /// Whether any base of `model` carries a nonlinear envelope.
 pub fn is_nonlinear(model: &SliceModel) -> bool {
-    !model.envelopes.is_empty() && model.slices.iter().any(|s| s.nonlinear)
+    model.envelopes.is_some() && (0..model.slices.len()).any(|i| model.moving_envelope(i).is_some())
 }
 
 /// Solves `model` to its consistent state with `solve`; the answer of the last round and how
@@ -47,13 +47,10 @@ pub fn consistent<T>(
             Step::Next(answer, normals) => (answer, normals),
         };
         let (mut worst, mut scale) = (0.0f64, 0.0f64);
-        for (slice, &normal) in current.slices.iter_mut().zip(&normals) {
-            let Some(envelope) = model.envelopes.get(slice.layer).and_then(Option::as_ref) else {
+        for (i, (slice, &normal)) in current.slices.iter_mut().zip(&normals).enumerate() {
+            let Some(envelope) = model.moving_envelope(i) else {
                 continue;
             };
-            if !slice.nonlinear {
-                continue;
-            }
             let sigma = normal / slice.base_length;
             let (tau, _) = envelope.shear(sigma);
             let carried = slice.cohesion + sigma * slice.tan_phi;

@@ -247,21 +247,22 @@ pub fn with_strength_dropped(
         return out;
     }
     for &i in slices {
+        let moving = model.moving_envelope(i).map(|e| e.shear(0.0).0);
         let Some(slice) = out.slices.get_mut(i) else {
             continue;
         };
-        if slice.nonlinear {
+        if let Some(strength) = moving {
             // Its envelope's strength without normal stress, fixed.
-            slice.nonlinear = false;
-            if let Some(Some(envelope)) = model.envelopes.get(slice.layer) {
-                slice.cohesion = envelope.shear(0.0).0;
-            }
+            slice.cohesion = strength;
+            out.fixed.push(i);
         }
         slice.tan_phi = 0.0;
         if treatment == NegativeEffectiveStress::DropStrength {
             slice.cohesion = 0.0;
         }
     }
+    out.fixed.sort_unstable();
+    out.fixed.dedup();
     out
 }
 

@@ -26,9 +26,8 @@ pub(super) fn effective_normals(model: &SliceModel, f: f64, theta: f64) -> Vec<f
 
 /// `model` with each base's strength fixed where it stands (nothing left to move).
 fn fixed(mut model: SliceModel) -> SliceModel {
-    for slice in &mut model.slices {
-        slice.nonlinear = false;
-    }
+    model.envelopes = None;
+    model.fixed.clear();
     model
 }
 

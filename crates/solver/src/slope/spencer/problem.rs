@@ -174,7 +174,6 @@ impl SlopeProblem {
                 tan_phi,
                 pore_pressure: soil.pore_pressure_ratio * soil.unit_weight * s.height_middle,
                 layer: 0,
-                nonlinear: false,
                 side_water: {
                     // u = r_u·γ·(ground − y): ½·r_u·γ·h² at h/3 above the base.
                     let h = (g.embankment.ground(s.x_right) - s.base_right_y).max(0.0);
@@ -193,7 +192,8 @@ impl SlopeProblem {
             moment_centre: Some(g.centre),
             circular: true,
             length_scale: g.radius,
-            envelopes: Default::default(),
+            envelopes: None,
+            fixed: Vec::new(),
         }
     }
 
