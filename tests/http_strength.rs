@@ -361,3 +361,58 @@ async fn bad_models_and_water_are_refused_naming_the_field() {
     let (status, content_type, answer) = server.post("/slope/spencer", &simple).await;
     assert_problem(status, &content_type, &answer, 422, "soil.strength");
 }
+
+#[tokio::test]
+async fn the_drawing_names_each_model_and_draws_each_water_source() {
+    let server = Server::start().await;
+    let body = json!({
+        "section": {
+            "ground": [[-20, 0], [0, 0], [20, 10], [50, 10]],
+            "layers": [
+                {"top": null, "soil": {"unit_weight": 19, "strength": {"model": "power_curve", "a": 3, "b": 0.6, "c": 1}}},
+                {"top": [[-20, -3], [50, -3]],
+                 "soil": {"unit_weight": 18, "strength": {"model": "undrained", "cohesion": 30, "gradient": 2, "datum": -3}},
+                 "piezometric_line": {"points": [[-20, -1], [50, 2]], "hu": "auto"}}],
+            "pore_pressure_grid": {"points": [[-25, -30, 100], [12, -30, 100], [-25, 12, 0], [12, 12, 0], [0, 0, 50]]}
+        },
+        "circle": {"centre": [12, 22], "radius": 26},
+        "slices": 60
+    });
+    let (status, content_type, svg) = server
+        .post_accept("/slope/spencer/svg", "image/svg+xml", &body)
+        .await;
+    assert_eq!(status, 200, "{svg}");
+    assert!(content_type.starts_with("image/svg+xml"), "{content_type}");
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let texts: Vec<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .collect();
+    let keyed = |words: &str| texts.iter().any(|t| t.contains(words));
+    for words in [
+        "layer 1: γ = 19, τ = 3·(σ′ + 0)^0.6 + 1",
+        "layer 2: γ = 18, undrained s_u = 30 + 2·depth below y = -3",
+        "piezometric line of layer 2 (h_u = cos²α)",
+        "pore-pressure grid: 5 points",
+    ] {
+        assert!(keyed(words), "{words} is not in the key: {texts:?}");
+    }
+    // The grid's points are drawn, each one a dot (a round-capped move) in the grid's colour,
+    // and its hull as a closed outline.
+    let dots = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("path") && n.attribute("stroke") == Some("#0288d1"))
+        .filter_map(|n| n.attribute("d"))
+        .map(|d| d.matches('M').count())
+        .sum::<usize>();
+    assert_eq!(dots, 5, "{svg}");
+    let hull = doc
+        .descendants()
+        .find(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#0288d1"))
+        .and_then(|n| n.attribute("points"))
+        .unwrap();
+    let corners: Vec<&str> = hull.split_whitespace().collect();
+    assert_eq!(corners.len(), 5, "four corners, closed: {hull}");
+    assert_eq!(corners.first(), corners.last());
+}

@@ -53,16 +53,14 @@ pub fn layer_fills(section: &Section, left: f64, right: f64, bottom: f64) -> Vec
         }
         let mut polygon: Vec<(f64, f64)> = xs.iter().map(|&x| (x, upper(x))).collect();
         polygon.extend(xs.iter().rev().map(|&x| (x, lower(x))));
-        let s = &layer.soil;
         fills.push(Fill {
             polygon,
             colour: LAYER_COLOURS[k % LAYER_COLOURS.len()],
             label: format!(
-                "layer {}: γ = {}, c′ = {}, φ′ = {}°",
+                "layer {}: γ = {}, {}",
                 k + 1,
-                s.unit_weight(),
-                s.cohesion(),
-                s.friction_angle_deg()
+                layer.soil.unit_weight(),
+                super::strength::describe(layer)
             ),
         });
     }

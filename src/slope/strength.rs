@@ -281,3 +281,43 @@ fn undrained(prefix: &str, u: &UndrainedDto) -> Result<Undrained, ApiError> {
         cohesion_max,
     })
 }
+
+/// A layer's strength as a drawing's key names it.
+pub fn describe(layer: &thrustline_solver::slope::section::Layer) -> String {
+    match &layer.strength {
+        Strength::MohrCoulomb => format!(
+            "c′ = {}, φ′ = {}°",
+            layer.soil.cohesion(),
+            layer.soil.friction_angle_deg()
+        ),
+        Strength::Undrained(u) => {
+            let from = match u.reference {
+                Reference::Datum(y) => format!("below y = {y}"),
+                Reference::Ground => "below the ground".to_owned(),
+            };
+            let cap = u
+                .cohesion_max
+                .map_or(String::new(), |c| format!(", at most {c}"));
+            format!(
+                "undrained s_u = {} + {}·depth {from}{cap}",
+                u.cohesion, u.gradient
+            )
+        }
+        Strength::Envelope(e) => envelope(e),
+    }
+}
+
+/// A nonlinear envelope in words.
+fn envelope(e: &Envelope) -> String {
+    match e {
+        Envelope::PowerCurve { a, b, c, d } => format!("τ = {a}·(σ′ + {d})^{b} + {c}"),
+        Envelope::HoekBrown(h) => format!(
+            "Hoek–Brown σ_ci = {}, m_b = {:.4}, s = {:.3e}, a = {:.4}",
+            h.sigma_ci, h.mb, h.s, h.a
+        ),
+        Envelope::ShearNormal(points) => {
+            format!("shear–normal function of {} points", points.len())
+        }
+        Envelope::Divided(inner, factor) => format!("{} (÷ {factor})", envelope(inner)),
+    }
+}

@@ -30,7 +30,15 @@ pub fn ground(
     {
         // Each layer in its colour, over the plain ground colour.
         let fills = layer_fills(p.section(), left.min(first.0), right.max(last.0), bottom);
-        for fill in fills.iter().filter(|_| p.section().layers().len() > 1) {
+        // One Mohr–Coulomb soil needs no key; other models are named.
+        let named = p.section().layers().len() > 1
+            || p.section().layers().iter().any(|l| {
+                !matches!(
+                    l.strength,
+                    thrustline_solver::slope::strength::Strength::MohrCoulomb
+                )
+            });
+        for fill in fills.iter().filter(|_| named) {
             canvas.polygon(
                 &fill.polygon,
                 &format!(
@@ -47,7 +55,7 @@ pub fn ground(
         line.extend(points.iter().copied());
         let end = points[points.len() - 1];
         line.push((right.max(end.0), end.1));
-        let dash = if label == "piezometric line" {
+        let dash = if label.starts_with("piezometric line") {
             " stroke-dasharray=\"6 3\""
         } else {
             ""
@@ -60,6 +68,7 @@ pub fn ground(
             legend.push((*colour, label.clone()));
         }
     }
+    grid(canvas, scene, &mut legend);
     if !scene.loads.is_empty() {
         // Surcharges are drawn as boxes on the ground, line loads as their thin edge.
         legend.push(("#e65100", "surcharges and line loads".to_owned()));
@@ -90,4 +99,25 @@ pub fn ground(
         );
     }
     legend
+}
+
+/// A pore-pressure grid: its points and their hull, cut at the axes (a grid wider than the
+/// scene does not move the picture).
+fn grid(canvas: &mut Canvas, scene: &Scene, legend: &mut Vec<(&'static str, String)>) {
+    if let Some((hull, points)) = &scene.grid {
+        canvas.clip_begin();
+        canvas.polyline(
+            hull,
+            "stroke=\"#0288d1\" stroke-width=\"0.8\" stroke-dasharray=\"2 3\"",
+        );
+        canvas.dots(points, 2.5, "#0288d1");
+        canvas.clip_end();
+        legend.push((
+            "#0288d1",
+            format!(
+                "pore-pressure grid: {} points and their extent",
+                points.len()
+            ),
+        ));
+    }
 }

@@ -27,7 +27,12 @@ struct Scene {
     circle: Option<PlacedCircle>,
     /// Surcharges as (x_start, x_end) and line loads' x.
     loads: Vec<(f64, f64)>,
+    /// A pore-pressure grid: its hull (closed) and its points.
+    grid: Option<(Points, Points)>,
 }
+
+/// Points in the request's coordinates.
+type Points = Vec<(f64, f64)>;
 
 /// A line of the section: points, colour, label (empty: not in the legend).
 type Line = (Vec<(f64, f64)>, &'static str, String);
@@ -46,27 +51,7 @@ fn scene(problem: &Analysed) -> Scene {
     match problem {
         Analysed::Section(p) => {
             let section = p.section();
-            let mut lines = Vec::new();
-            for (i, layer) in section.layers().iter().enumerate().skip(1) {
-                if let Some(top) = &layer.top {
-                    lines.push((
-                        top.points().to_vec(),
-                        LAYER_COLOURS[i % LAYER_COLOURS.len()],
-                        // In the legend as the layer's fill.
-                        String::new(),
-                    ));
-                }
-            }
-            if let Some(b) = section.bedrock() {
-                lines.push((b.points().to_vec(), "#424242", "bedrock".to_owned()));
-            }
-            if let Some(w) = section.piezometric_line() {
-                lines.push((
-                    w.points().to_vec(),
-                    "#0277bd",
-                    "piezometric line".to_owned(),
-                ));
-            }
+            let lines = section_lines(section);
             let loads = section
                 .surcharges()
                 .iter()
@@ -80,9 +65,78 @@ fn scene(problem: &Analysed) -> Scene {
                 sides,
                 circle: problem.circle(),
                 loads,
+                grid: section.water().grid.as_ref().map(|g| {
+                    let points: Vec<(f64, f64)> = g.points().iter().map(|p| (p.0, p.1)).collect();
+                    (hull(&points), points)
+                }),
             }
         }
     }
+}
+
+/// The section's lines: layer tops, bedrock, the water lines.
+fn section_lines(section: &thrustline_solver::slope::section::Section) -> Vec<Line> {
+    let mut lines = Vec::new();
+    for (i, layer) in section.layers().iter().enumerate().skip(1) {
+        if let Some(top) = &layer.top {
+            lines.push((
+                top.points().to_vec(),
+                LAYER_COLOURS[i % LAYER_COLOURS.len()],
+                // In the legend as the layer's fill.
+                String::new(),
+            ));
+        }
+    }
+    if let Some(b) = section.bedrock() {
+        lines.push((b.points().to_vec(), "#424242", "bedrock".to_owned()));
+    }
+    if let Some(w) = section.piezometric_line() {
+        let label = format!("piezometric line{}", hu(section.water().hu));
+        lines.push((w.points().to_vec(), "#0277bd", label));
+    }
+    for (i, layer) in section.layers().iter().enumerate() {
+        if let Some(w) = &layer.piezometric_line {
+            let label = format!("piezometric line of layer {}{}", i + 1, hu(w.hu));
+            lines.push((w.line.points().to_vec(), "#01579b", label));
+        }
+    }
+    lines
+}
+
+/// A line's h_u as its key names it (nothing for the full head).
+fn hu(hu: thrustline_solver::slope::section::Hu) -> String {
+    use thrustline_solver::slope::section::Hu;
+    match hu {
+        Hu::Factor(1.0) => String::new(),
+        Hu::Factor(h) => format!(" (h_u = {h})"),
+        Hu::Auto => " (h_u = cos²α)".to_owned(),
+    }
+}
+
+/// The convex hull of `points`, closed (Andrew's monotone chain).
+fn hull(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut p = points.to_vec();
+    p.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let cross = |o: (f64, f64), a: (f64, f64), b: (f64, f64)| {
+        (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0)
+    };
+    let mut chain: Vec<(f64, f64)> = Vec::with_capacity(2 * p.len() + 1);
+    for pass in [p.clone(), p.into_iter().rev().collect()] {
+        let start = chain.len();
+        for q in pass {
+            while chain.len() >= start + 2
+                && cross(chain[chain.len() - 2], chain[chain.len() - 1], q) <= 0.0
+            {
+                chain.pop();
+            }
+            chain.push(q);
+        }
+        chain.pop();
+    }
+    if let Some(&first) = chain.first() {
+        chain.push(first);
+    }
+    chain
 }
 
 /// The drawing's title: which surface it shows (a search's critical one is a circle, or a

@@ -40,8 +40,9 @@ pub fn consistent<T>(
     loop {
         rounds += 1;
         let (answer, normals) = match solve(&current) {
+            // Nothing to settle: the answer (no solution) says what happened.
             Step::Done(answer) => {
-                let settled = !is_nonlinear(model);
+                let settled = true;
                 return (answer, Consistency { rounds, settled }, current);
             }
             Step::Next(answer, normals) => (answer, normals),
