@@ -52,7 +52,6 @@ fn points_are_pairs_and_codes_are_enums() {
         ("SectionDto", "ground"),
         ("SectionDto", "bedrock"),
         ("WaterLineDto", "points"),
-        ("ShearNormalDto", "points"),
         ("LayerDto", "top"),
         ("SpencerRequest", "surface"),
         ("SpencerRequest", "interslice_function"),

@@ -22,87 +22,68 @@ pub enum DepthReferenceDto {
     Ground,
 }
 
-/// Undrained strength s_u = cohesion + gradient·depth (φ = 0), capped at `cohesion_max`.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct UndrainedDto {
-    /// s_u at the datum (or at the ground), 0 ≤ s_u0 ≤ 1e12.
-    #[schema(examples(20.0))]
-    pub cohesion: f64,
-    /// Increase per unit depth, 0 ≤ k ≤ 1e12. Defaults to 0 (constant s_u).
-    #[serde(default)]
-    #[schema(examples(1.5))]
-    pub gradient: Option<f64>,
-    /// Depth is measured below this level y (above it s_u = s_u0). Give this or `reference`.
-    #[serde(default)]
-    pub datum: Option<f64>,
-    /// `ground`: depth is measured below the ground at the point's x. Give this or `datum`.
-    #[serde(default)]
-    pub reference: Option<DepthReferenceDto>,
-    /// The largest s_u (≥ `cohesion`), when given.
-    #[serde(default)]
-    pub cohesion_max: Option<f64>,
-}
-
-/// A power curve τ = a·(σ′ₙ + d)^b + c (τ = c where σ′ₙ + d ≤ 0); b = 1 is Mohr–Coulomb.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct PowerCurveDto {
-    /// a ≥ 0 (in the units that make τ a stress).
-    #[schema(examples(2.5))]
-    pub a: f64,
-    /// 0 < b ≤ 1.
-    #[schema(examples(0.75))]
-    pub b: f64,
-    /// c ≥ 0, a stress. Defaults to 0.
-    #[serde(default)]
-    pub c: Option<f64>,
-    /// d, a stress added to σ′ₙ. Defaults to 0.
-    #[serde(default)]
-    pub d: Option<f64>,
-}
-
-/// The generalised Hoek–Brown criterion (Hoek, Carranza-Torres & Corkum 2002); the shear
-/// strength at a base is the criterion's Mohr envelope at its σ′ₙ (Balmer 1952).
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct HoekBrownDto {
-    /// Uniaxial compressive strength of the intact rock σ_ci > 0.
-    #[schema(examples(30000.0))]
-    pub sigma_ci: f64,
-    /// Geological strength index, 5 ≤ GSI ≤ 100.
-    #[schema(examples(45.0))]
-    pub gsi: f64,
-    /// m_i of the intact rock, 0 < m_i ≤ 100.
-    #[schema(examples(10.0))]
-    pub mi: f64,
-    /// Disturbance factor D, 0 ≤ D ≤ 1. Defaults to 0.
-    #[serde(default)]
-    pub disturbance: Option<f64>,
-}
-
-/// A piecewise-linear envelope through [σ′ₙ, τ] points (σ′ₙ strictly increasing, τ ≥ 0),
-/// continued along its first and last pieces, never below τ = 0.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct ShearNormalDto {
-    /// 2 to 1000 points [σ′ₙ, τ].
-    #[schema(value_type = Vec<Vec<f64>>)]
-    pub points: Vec<[f64; 2]>,
-}
-
 /// A soil's strength model (instead of `cohesion` and `friction_angle_deg`).
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(tag = "model", rename_all = "snake_case")]
+#[serde(tag = "model", rename_all = "snake_case", deny_unknown_fields)]
 pub enum StrengthDto {
-    /// Undrained strength growing with depth.
-    Undrained(UndrainedDto),
-    /// A power curve.
-    PowerCurve(PowerCurveDto),
-    /// Hoek–Brown.
-    HoekBrown(HoekBrownDto),
-    /// A shear–normal function.
-    ShearNormal(ShearNormalDto),
+    /// Undrained strength s_u = cohesion + gradient·depth (φ = 0), capped at `cohesion_max`.
+    Undrained {
+        /// s_u at the datum (or at the ground), 0 ≤ s_u0 ≤ 1e12.
+        #[schema(examples(20.0))]
+        cohesion: f64,
+        /// Increase per unit depth, 0 ≤ k ≤ 1e12. Defaults to 0 (constant s_u).
+        #[serde(default)]
+        #[schema(examples(1.5))]
+        gradient: Option<f64>,
+        /// Depth is measured below this level y (above it s_u = s_u0), |y| ≤ 1e9. Give this or
+        /// `reference`.
+        #[serde(default)]
+        datum: Option<f64>,
+        /// `ground`: depth is measured below the ground at the point's x. Give this or `datum`.
+        #[serde(default)]
+        reference: Option<DepthReferenceDto>,
+        /// The largest s_u (≥ `cohesion`, ≤ 1e12), when given.
+        #[serde(default)]
+        cohesion_max: Option<f64>,
+    },
+    /// A power curve τ = a·(σ′ₙ + d)^b + c (τ = c where σ′ₙ + d ≤ 0); b = 1 is Mohr–Coulomb.
+    PowerCurve {
+        /// a, 0 ≤ a ≤ 1e12 (in the units that make τ a stress).
+        #[schema(examples(2.5))]
+        a: f64,
+        /// b, 0 < b ≤ 1.
+        #[schema(examples(0.75))]
+        b: f64,
+        /// c, a stress, 0 ≤ c ≤ 1e12. Defaults to 0.
+        #[serde(default)]
+        c: Option<f64>,
+        /// d, a stress added to σ′ₙ, |d| ≤ 1e12. Defaults to 0.
+        #[serde(default)]
+        d: Option<f64>,
+    },
+    /// The generalised Hoek–Brown criterion (Hoek, Carranza-Torres & Corkum 2002); the shear
+    /// strength at a base is the criterion's Mohr envelope at its σ′ₙ (Balmer 1952).
+    HoekBrown {
+        /// Uniaxial compressive strength of the intact rock, 0 < σ_ci ≤ 1e12.
+        #[schema(examples(30000.0))]
+        sigma_ci: f64,
+        /// Geological strength index, 5 ≤ GSI ≤ 100.
+        #[schema(examples(45.0))]
+        gsi: f64,
+        /// m_i of the intact rock, 0 < m_i ≤ 100.
+        #[schema(examples(10.0))]
+        mi: f64,
+        /// Disturbance factor D, 0 ≤ D ≤ 1. Defaults to 0.
+        #[serde(default)]
+        disturbance: Option<f64>,
+    },
+    /// A piecewise-linear envelope through [σ′ₙ, τ] points (σ′ₙ strictly increasing, τ ≥ 0),
+    /// continued along its first and last pieces, never below τ = 0.
+    ShearNormal {
+        /// 2 to 1000 points [σ′ₙ, τ].
+        #[schema(value_type = Vec<Vec<f64>>)]
+        points: Vec<[f64; 2]>,
+    },
 }
 
 /// A Mohr–Coulomb soil at `prefix` (`soil`: the simple slope, which takes no strength model);
@@ -183,12 +164,12 @@ fn mohr_coulomb(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiErro
 pub fn strength(prefix: &str, dto: &StrengthDto) -> Result<Strength, ApiError> {
     let field = |name: &str| format!("{prefix}.{name}");
     Ok(match dto {
-        StrengthDto::Undrained(u) => Strength::Undrained(undrained(prefix, u)?),
-        StrengthDto::PowerCurve(p) => {
-            let a = within(&field("a"), p.a, STRESS)?;
-            let b = within(&field("b"), p.b, POWER_EXPONENT)?;
-            let c = within(&field("c"), p.c.unwrap_or(0.0), STRESS)?;
-            let d = within(&field("d"), p.d.unwrap_or(0.0), SIGNED_STRESS)?;
+        StrengthDto::Undrained { .. } => Strength::Undrained(undrained(prefix, dto)?),
+        StrengthDto::PowerCurve { a, b, c, d } => {
+            let a = within(&field("a"), *a, STRESS)?;
+            let b = within(&field("b"), *b, POWER_EXPONENT)?;
+            let c = within(&field("c"), c.unwrap_or(0.0), STRESS)?;
+            let d = within(&field("d"), d.unwrap_or(0.0), SIGNED_STRESS)?;
             if a == 0.0 && c == 0.0 {
                 return Err(ApiError::invalid(
                     field("a"),
@@ -197,20 +178,25 @@ pub fn strength(prefix: &str, dto: &StrengthDto) -> Result<Strength, ApiError> {
             }
             Strength::Envelope(Envelope::PowerCurve { a, b, c, d })
         }
-        StrengthDto::HoekBrown(h) => Strength::Envelope(Envelope::HoekBrown(HoekBrown::new(
-            within(&field("sigma_ci"), h.sigma_ci, POSITIVE_STRESS)?,
-            within(&field("gsi"), h.gsi, GSI)?,
-            within(&field("mi"), h.mi, HOEK_BROWN_MI)?,
+        StrengthDto::HoekBrown {
+            sigma_ci,
+            gsi,
+            mi,
+            disturbance,
+        } => Strength::Envelope(Envelope::HoekBrown(HoekBrown::new(
+            within(&field("sigma_ci"), *sigma_ci, POSITIVE_STRESS)?,
+            within(&field("gsi"), *gsi, GSI)?,
+            within(&field("mi"), *mi, HOEK_BROWN_MI)?,
             within(
                 &field("disturbance"),
-                h.disturbance.unwrap_or(0.0),
+                disturbance.unwrap_or(0.0),
                 DISTURBANCE,
             )?,
         ))),
-        StrengthDto::ShearNormal(s) => {
-            count_within(&field("points"), s.points.len(), ENVELOPE_POINTS)?;
-            let mut points: Vec<(f64, f64)> = Vec::with_capacity(s.points.len());
-            for (i, p) in s.points.iter().enumerate() {
+        StrengthDto::ShearNormal { points: given } => {
+            count_within(&field("points"), given.len(), ENVELOPE_POINTS)?;
+            let mut points: Vec<(f64, f64)> = Vec::with_capacity(given.len());
+            for (i, p) in given.iter().enumerate() {
                 let at = format!("{prefix}.points[{i}]");
                 let sigma = within(&at, p[0], SIGNED_STRESS)?;
                 let tau = within(&at, p[1], STRESS)?;
@@ -234,11 +220,21 @@ pub fn strength(prefix: &str, dto: &StrengthDto) -> Result<Strength, ApiError> {
 }
 
 /// An undrained profile: a datum or the ground, a cap not below s_u0, some strength.
-fn undrained(prefix: &str, u: &UndrainedDto) -> Result<Undrained, ApiError> {
+fn undrained(prefix: &str, dto: &StrengthDto) -> Result<Undrained, ApiError> {
+    let StrengthDto::Undrained {
+        cohesion,
+        gradient,
+        datum,
+        reference,
+        cohesion_max,
+    } = dto
+    else {
+        return Err(ApiError::invalid(prefix, "is not an undrained profile"));
+    };
     let field = |name: &str| format!("{prefix}.{name}");
-    let cohesion = within(&field("cohesion"), u.cohesion, STRESS)?;
-    let gradient = within(&field("gradient"), u.gradient.unwrap_or(0.0), STRESS)?;
-    let reference = match (u.datum, u.reference) {
+    let cohesion = within(&field("cohesion"), *cohesion, STRESS)?;
+    let gradient = within(&field("gradient"), gradient.unwrap_or(0.0), STRESS)?;
+    let reference = match (*datum, *reference) {
         (Some(_), Some(_)) => {
             return Err(ApiError::invalid(
                 field("reference"),
@@ -256,8 +252,7 @@ fn undrained(prefix: &str, u: &UndrainedDto) -> Result<Undrained, ApiError> {
             ))
         }
     };
-    let cohesion_max = u
-        .cohesion_max
+    let cohesion_max = cohesion_max
         .map(|m| within(&field("cohesion_max"), m, STRESS))
         .transpose()?;
     if let Some(max) = cohesion_max {
