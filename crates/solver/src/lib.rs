@@ -17,3 +17,4 @@ pub mod outcome;
 mod polygon;
 pub mod reference;
 pub mod slope;
+pub mod study;
