@@ -508,3 +508,64 @@ async fn passive_pressure_and_live_loads_have_arrowheads_of_their_own() {
         .unwrap_or_default();
     assert_eq!(fill, "#6d4c41");
 }
+
+#[tokio::test]
+async fn load_arrows_stay_inside_the_plot_clear_of_the_key() {
+    // Issue 46: a load at the crown drew its arrow from above the picture's extent (the
+    // blocks' bounding box), up into the key. Every live-load arrow must lie within the plot
+    // (the clip rectangle, moved down with the plot), below the key's last line.
+    let server = Server::start().await;
+    for (what, body) in [
+        (
+            "crown, downwards",
+            json!({"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 40},
+                                    "loads": [{"block": 20, "fy": -1}, {"block": 21, "fx": 0.3, "fy": -0.2}]}),
+        ),
+        (
+            "springing, sideways",
+            json!({"geometry": {"kind": "circular", "radius": 10, "thickness": 1.5, "voussoirs": 40},
+                                       "loads": [{"block": 1, "fx": 2, "fy": 0}]}),
+        ),
+    ] {
+        let text = svg(&server, "/arch/live-load/svg", &body).await;
+        let document = roxmltree::Document::parse(&text).unwrap();
+        let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let shift = plot_shift(&document);
+        let rect = document
+            .descendants()
+            .find(|n| n.has_tag_name("clipPath"))
+            .and_then(|c| c.children().find(|n| n.has_tag_name("rect")))
+            .unwrap();
+        let (x0, y0) = (number(rect, "x"), number(rect, "y"));
+        let (x1, y1) = (x0 + number(rect, "width"), y0 + number(rect, "height"));
+        let key_bottom = document
+            .root_element()
+            .children()
+            .filter(|n| n.has_tag_name("text") && number(*n, "y") > 30.0)
+            .map(|n| number(n, "y"))
+            .fold(0.0, f64::max);
+        let arrows: Vec<roxmltree::Node> = document
+            .descendants()
+            .filter(|n| n.has_tag_name("line") && n.attribute("stroke") == Some("#1565c0"))
+            .collect();
+        assert!(!arrows.is_empty(), "{what}: no arrow drawn");
+        for arrow in arrows {
+            for (x, y) in [("x1", "y1"), ("x2", "y2")] {
+                let (px, py) = (number(arrow, x), number(arrow, y) + shift);
+                assert!(
+                    px >= x0 - 0.5
+                        && px <= x1 + 0.5
+                        && py >= y0 + shift - 0.5
+                        && py <= y1 + shift + 0.5,
+                    "{what}: arrow end ({px}, {py}) outside the plot [{x0}, {}]–[{x1}, {}]",
+                    y0 + shift,
+                    y1 + shift
+                );
+                assert!(
+                    py > key_bottom,
+                    "{what}: arrow end at {py} in the key (last line {key_bottom})"
+                );
+            }
+        }
+    }
+}

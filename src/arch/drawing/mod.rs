@@ -70,6 +70,26 @@ pub fn live_load_title(solved: &SolvedArch) -> String {
     }
 }
 
+/// The canvas holding the blocks' corners, the road and the live loads' arrows (so that no
+/// arrow runs into the key above the plot).
+fn fitted(
+    assembly: &thrustline_solver::arch::Assembly,
+    loads: &[thrustline_solver::arch::LiveLoad],
+    corners: &[(f64, f64)],
+    road: Option<[(f64, f64); 2]>,
+) -> Canvas {
+    let tails = parts::load_arrows(assembly, loads)
+        .into_iter()
+        .map(|(from, _)| from);
+    Canvas::fitting(
+        corners
+            .iter()
+            .copied()
+            .chain(road.into_iter().flatten())
+            .chain(tails),
+    )
+}
+
 /// The drawing of a solved arch (with arcs for annular-sector voussoirs).
 pub fn draw(solved: &SolvedArch, title: &str) -> String {
     let assembly = solved.input.problem.assembly();
@@ -88,7 +108,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             (a.min(p.0), b.max(p.0))
         });
     let road = fill.map(|(f, _, _)| [(x_hi, f.road), (x_lo, f.road)]);
-    let mut canvas = Canvas::fitting(corners.iter().copied().chain(road.into_iter().flatten()));
+    let mut canvas = fitted(assembly, loads, &corners, road);
     let mut legend: Legend = Vec::new();
     if let (Some(fill), Some(road)) = (fill, road) {
         parts::fill(&mut canvas, assembly, fill, road, &mut legend);

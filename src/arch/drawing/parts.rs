@@ -156,6 +156,28 @@ pub fn mechanism(canvas: &mut Canvas, assembly: &Assembly, mechanism: &Mechanism
     }
 }
 
+/// The live loads as arrows (tail, head): ending at their point, 12 % of the span long for the
+/// largest. The picture holds their tails, so that none runs into the key above it.
+pub fn load_arrows(assembly: &Assembly, loads: &[LiveLoad]) -> Vec<((f64, f64), (f64, f64))> {
+    let span = assembly.length_scale();
+    let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
+    loads
+        .iter()
+        .filter_map(|load| {
+            let magnitude = load.fx.hypot(load.fy);
+            if magnitude == 0.0 || largest == 0.0 {
+                return None;
+            }
+            let length = 0.12 * span * magnitude / largest;
+            let from = (
+                load.point.0 - length * load.fx / magnitude,
+                load.point.1 - length * load.fy / magnitude,
+            );
+            Some((from, load.point))
+        })
+        .collect()
+}
+
 /// Hinges at the intrados or extrados end of their interface and the live loads as arrows; the
 /// hinges' labels (polar angle and side) placed clear of the dots, the arrows and each other.
 /// Answers how many hinges there are (their labels are left out beyond [`MAX_HINGE_LABELS`]).
@@ -165,7 +187,6 @@ pub fn hinges_and_loads(
     mechanism: Option<&Mechanism>,
     loads: &[LiveLoad],
 ) -> usize {
-    let span = assembly.length_scale();
     let mut hinge_labels = Vec::new();
     let mut labels = Labels::default();
     let hinges = mechanism.map(|m| m.hinges.as_slice()).unwrap_or_default();
@@ -199,20 +220,9 @@ pub fn hinges_and_loads(
         hinge_labels.push((p, direction, format!("{:.1}° {location}", hinge.angle_deg)));
     }
     canvas.dots(&dots, 8.0, "#1b5e20");
-    // Live loads: arrows ending at their point, 12 % of the span long.
-    let largest = loads.iter().map(|l| l.fx.hypot(l.fy)).fold(0.0, f64::max);
-    for load in loads {
-        let magnitude = load.fx.hypot(load.fy);
-        if magnitude == 0.0 || largest == 0.0 {
-            continue;
-        }
-        let length = 0.12 * span * magnitude / largest;
-        let from = (
-            load.point.0 - length * load.fx / magnitude,
-            load.point.1 - length * load.fy / magnitude,
-        );
-        canvas.arrow(from, load.point, "stroke=\"#1565c0\" stroke-width=\"2\"");
-        labels.avoid_segment(canvas.px(from), canvas.px(load.point), 6.0);
+    for (from, to) in load_arrows(assembly, loads) {
+        canvas.arrow(from, to, "stroke=\"#1565c0\" stroke-width=\"2\"");
+        labels.avoid_segment(canvas.px(from), canvas.px(to), 6.0);
     }
     let area = canvas.plot_area();
     // Many hinges would bury the drawing in labels: their angles are in the JSON; the key
