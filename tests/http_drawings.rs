@@ -191,6 +191,18 @@ async fn the_effective_line_of_thrust_is_drawn_only_inside_its_slices() {
 }
 
 /// The number in `translate(0 S)` of the group holding the plot.
+/// The plot's clip rectangle [x0, y0, x1, y1] in pixels (before the plot's shift).
+fn plot_rect(document: &roxmltree::Document) -> [f64; 4] {
+    let rect = document
+        .descendants()
+        .find(|n| n.has_tag_name("clipPath"))
+        .and_then(|c| c.children().find(|n| n.has_tag_name("rect")))
+        .unwrap();
+    let number = |a: &str| rect.attribute(a).unwrap().parse::<f64>().unwrap();
+    let (x0, y0) = (number("x"), number("y"));
+    [x0, y0, x0 + number("width"), y0 + number("height")]
+}
+
 fn plot_shift(document: &roxmltree::Document) -> f64 {
     let group = document
         .root_element()
@@ -225,13 +237,7 @@ async fn the_key_lies_above_the_plot_and_a_search_map_is_cut_at_the_axes() {
         let document = roxmltree::Document::parse(&text).unwrap();
         let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
         let shift = plot_shift(&document);
-        let rect = document
-            .descendants()
-            .find(|n| n.has_tag_name("clipPath"))
-            .and_then(|c| c.children().find(|n| n.has_tag_name("rect")))
-            .unwrap();
-        let (x0, y0) = (number(rect, "x"), number(rect, "y"));
-        let (x1, y1) = (x0 + number(rect, "width"), y0 + number(rect, "height"));
+        let [x0, y0, x1, y1] = plot_rect(&document);
         // Key lines: texts outside the plot's group below the title row.
         let key: Vec<(f64, String)> = document
             .root_element()
@@ -531,13 +537,7 @@ async fn load_arrows_stay_inside_the_plot_clear_of_the_key() {
         let document = roxmltree::Document::parse(&text).unwrap();
         let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
         let shift = plot_shift(&document);
-        let rect = document
-            .descendants()
-            .find(|n| n.has_tag_name("clipPath"))
-            .and_then(|c| c.children().find(|n| n.has_tag_name("rect")))
-            .unwrap();
-        let (x0, y0) = (number(rect, "x"), number(rect, "y"));
-        let (x1, y1) = (x0 + number(rect, "width"), y0 + number(rect, "height"));
+        let [x0, y0, x1, y1] = plot_rect(&document);
         let key_bottom = document
             .root_element()
             .children()

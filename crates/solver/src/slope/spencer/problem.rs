@@ -28,14 +28,7 @@ impl Soil {
         friction_angle_deg: f64,
         pore_pressure_ratio: f64,
     ) -> Result<Self, SlopeError> {
-        let unit_weight = check_range(
-            SlopeParameter::UnitWeight,
-            unit_weight,
-            0.0,
-            true,
-            f64::MAX,
-            "a finite number > 0",
-        )?;
+        let unit_weight = checked_unit_weight(unit_weight)?;
         let cohesion = check_range(
             SlopeParameter::Cohesion,
             cohesion,
@@ -79,14 +72,7 @@ impl Soil {
     /// γ > 0 (c′ = 0, φ′ = 0, r_u = 0 are not used).
     pub fn weight_only(unit_weight: f64) -> Result<Self, SlopeError> {
         Ok(Self {
-            unit_weight: check_range(
-                SlopeParameter::UnitWeight,
-                unit_weight,
-                0.0,
-                true,
-                f64::MAX,
-                "a finite number > 0",
-            )?,
+            unit_weight: checked_unit_weight(unit_weight)?,
             cohesion: 0.0,
             friction_angle_rad: 0.0,
             pore_pressure_ratio: 0.0,
@@ -112,6 +98,18 @@ impl Soil {
     pub fn pore_pressure_ratio(&self) -> f64 {
         self.pore_pressure_ratio
     }
+}
+
+/// A unit weight γ > 0, finite.
+fn checked_unit_weight(unit_weight: f64) -> Result<f64, SlopeError> {
+    check_range(
+        SlopeParameter::UnitWeight,
+        unit_weight,
+        0.0,
+        true,
+        f64::MAX,
+        "a finite number > 0",
+    )
 }
 
 /// One slip circle of one embankment with its soil and loads, ready to solve.
