@@ -569,3 +569,44 @@ async fn load_arrows_stay_inside_the_plot_clear_of_the_key() {
         }
     }
 }
+
+#[tokio::test]
+async fn contour_labels_do_not_overlap_each_other() {
+    // Issue 46: nested contours of a search's F map could put their labels on top of each
+    // other. Each label's box (0.6 em a character at 9 px, from its baseline up) must be clear
+    // of every other label's.
+    let server = Server::start().await;
+    let bodies = [
+        json!({"slope": {"height": 30.48, "length": 60.96}, "search": {"nx": 31, "ny": 31}, "slices": 50,
+               "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}}),
+        json!({"section": {"ground": [[20, 25], [30, 25], [50, 35], [70, 35]],
+                           "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 3, "friction_angle_deg": 19.6}}]},
+               "search": {}, "slices": 50}),
+        json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+                           "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
+                                      {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}],
+                           "piezometric_line": [[-20, 1], [10, 3], [40, 6]]},
+               "search": {"nx": 25, "ny": 25, "nr": 8}, "slices": 40}),
+    ];
+    for body in &bodies {
+        let text = svg(&server, "/slope/spencer/svg", body).await;
+        let document = roxmltree::Document::parse(&text).unwrap();
+        let number = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let boxes: Vec<[f64; 4]> = document
+            .descendants()
+            .filter(|n| n.has_tag_name("text") && n.attribute("font-size") == Some("9"))
+            .map(|n| {
+                let (x, y) = (number(n, "x"), number(n, "y"));
+                let w = 0.6 * 9.0 * n.text().unwrap().chars().count() as f64;
+                [x, y - 9.0, x + w, y]
+            })
+            .collect();
+        assert!(boxes.len() >= 3, "{} labels: {body}", boxes.len());
+        for (i, a) in boxes.iter().enumerate() {
+            for b in &boxes[i + 1..] {
+                let overlap = a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+                assert!(!overlap, "labels at {a:?} and {b:?} overlap: {body}");
+            }
+        }
+    }
+}

@@ -48,6 +48,7 @@ pub fn factor_map(
     let absolute_ys: Vec<f64> = grid.ys.iter().map(|y| lower_end.1 + y).collect();
     let (fine_xs, fine_ys, fine) = refine(&absolute_xs, &absolute_ys, &grid.factors, 4);
     let mut labelled = 0;
+    let mut placed: Vec<[f64; 4]> = Vec::new();
     for factor in [1.02, 1.05, 1.1, 1.2, 1.4, 1.7] {
         let level = lo * factor;
         let segments = contour(&fine_xs, &fine_ys, &fine, level);
@@ -68,17 +69,23 @@ pub fn factor_map(
                 && p.1 > visible[1]
                 && p.1 < visible[3]
         };
-        let top = segments
-            .iter()
-            .flatten()
-            .copied()
-            .filter(inside)
-            .max_by(|a, b| a.0.total_cmp(&b.0));
+        // The rightmost point whose label overlaps no label placed before it.
+        let text = format!("{level:.3}");
+        let mut points: Vec<(f64, f64)> =
+            segments.iter().flatten().copied().filter(inside).collect();
+        points.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let top = points.into_iter().find_map(|p| {
+            let b = label_box(canvas.px(p), text.chars().count());
+            (!placed.iter().any(|q| overlaps(&b, q))).then(|| {
+                placed.push(b);
+                p
+            })
+        });
         if let Some(top) = top {
             canvas.text(
                 top,
                 (3.0, -3.0),
-                &format!("{level:.3}"),
+                &text,
                 "font-size=\"9\" font-family=\"sans-serif\" fill=\"#4e342e\" stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\"",
             );
             labelled += 1;
@@ -102,4 +109,21 @@ fn cell(values: &[f64]) -> f64 {
     } else {
         (values[values.len() - 1] - values[0]) / (values.len() - 1) as f64
     }
+}
+
+/// The pixel box of a contour label of `chars` characters at 9 px, 3 px right of and 3 px above
+/// the point `p` (its baseline), padded by 1 px.
+fn label_box(p: (f64, f64), chars: usize) -> [f64; 4] {
+    let (x, y) = (p.0 + 3.0, p.1 - 3.0);
+    [
+        x - 1.0,
+        y - 9.0 - 1.0,
+        x + 0.6 * 9.0 * chars as f64 + 1.0,
+        y + 1.0,
+    ]
+}
+
+/// Whether two boxes overlap.
+fn overlaps(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 }
