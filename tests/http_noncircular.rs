@@ -444,14 +444,9 @@ async fn the_drawing_of_a_non_circular_answer_is_titled_by_its_surface() {
     let server = Server::start().await;
     let body =
         json!({"section": yamagami_ueta(), "search": {"shape": "noncircular"}, "slices": 50});
-    let response = server
-        .client
-        .post(format!("{}/slope/spencer/svg", server.base))
-        .json(&body)
-        .send()
-        .await
-        .unwrap();
-    let svg = response.text().await.unwrap();
+    let (_, _, svg) = server
+        .post_accept("/slope/spencer/svg", "image/svg+xml", &body)
+        .await;
     let document = roxmltree::Document::parse(&svg).unwrap();
     let title = document
         .descendants()

@@ -11,9 +11,10 @@ use thrustline_solver::slope::{
     SlopeParameter, Soil,
 };
 
+use super::lines::polyline;
 use super::methods::interslice_function;
 use super::request::{CircleDto, CompositeDto, SearchDto, SpencerRequest};
-use super::section::{polyline, refuse_section_only, search_region, section_from};
+use super::section::{refuse_section_only, search_region, section_from};
 use super::strength::soil as soil_from;
 use crate::error::ApiError;
 use crate::limits::{

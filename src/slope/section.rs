@@ -10,7 +10,7 @@ use thrustline_solver::slope::section::{
 };
 
 use super::design::action;
-pub use super::lines::polyline;
+use super::lines::polyline;
 use super::request::{Coordinates, SearchDto, SearchShapeDto, SectionDto};
 use super::strength::layer_soil;
 use super::water::{pore_grid, water_line};
@@ -226,11 +226,13 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
     let line = |field: &str, points: &Option<Vec<Coordinates>>| {
         points.as_ref().map(|p| polyline(field, p)).transpose()
     };
-    let section_line = dto
-        .piezometric_line
-        .as_ref()
-        .map(|w| water_line("section.piezometric_line", w))
-        .transpose()?;
+    let (piezometric_line, hu) = match &dto.piezometric_line {
+        Some(w) => {
+            let w = water_line("section.piezometric_line", w)?;
+            (Some(w.line), w.hu)
+        }
+        None => (None, Hu::default()),
+    };
     let water_unit_weight = within(
         "section.water_unit_weight",
         dto.water_unit_weight.unwrap_or(DEFAULT_WATER_UNIT_WEIGHT),
@@ -272,14 +274,14 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
         ground,
         layers,
         bedrock: line("section.bedrock", &dto.bedrock)?,
-        piezometric_line: section_line.as_ref().map(|w| w.line.clone()),
+        piezometric_line,
         water_unit_weight,
         surcharges,
         line_loads,
         tension_crack,
         supports: super::supports::supports(&dto.supports)?,
         water: Water {
-            hu: section_line.map_or(Hu::Factor(1.0), |w| w.hu),
+            hu,
             grid: dto.pore_pressure_grid.as_ref().map(pore_grid).transpose()?,
         },
     };

@@ -196,6 +196,9 @@ fn is_physical(equations: &Equations, f: f64, theta: f64) -> bool {
 /// Solves Spencer's two equations for the slip surface of `model`, with the treatment of
 /// negative effective stress of `settings`; on nonlinear envelopes, to their consistent state.
 pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
+    if !consistent::is_nonlinear(model) {
+        return solve_tension(model, settings);
+    }
     nonlinear::solve(model, settings).0
 }
 

@@ -31,14 +31,12 @@ fn fixed(mut model: SliceModel) -> SliceModel {
     model
 }
 
-/// Spencer's solution at the consistent state, and the model with each base's tangent there.
+/// Spencer's solution at the consistent state of a model with nonlinear bases, and the model
+/// with each base's tangent there (the callers solve a model without any directly).
 pub(super) fn solve(
     model: &SliceModel,
     settings: &SpencerSettings,
 ) -> (SpencerSolution, SliceModel) {
-    if !is_nonlinear(model) {
-        return (solve_tension(model, settings), model.clone());
-    }
     let (mut solution, consistency, current) = consistent(model, |m| {
         let s = solve_tension(m, settings);
         if s.factor_of_safety.is_some() {
