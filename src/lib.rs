@@ -35,6 +35,7 @@ pub mod pool;
 pub mod report;
 pub mod slope;
 pub mod stop;
+pub mod study;
 pub mod svg;
 pub mod table;
 pub mod validation;

@@ -61,6 +61,10 @@ pub enum WarningCode {
     OutsidePorePressureGrid,
     /// Associative friction may over-estimate the collapse load.
     FrictionMayOverestimate,
+    /// Samples of a study without an answer (counted apart: neither safe nor failed).
+    SamplesUnsolved,
+    /// Samples of a study whose values the route refuses (left out of its statistics).
+    SamplesRefused,
     /// Rings that cannot slip lock: the answer is unbounded, or far above one ring's.
     RingsLocked,
 }

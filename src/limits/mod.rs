@@ -256,3 +256,19 @@ pub const SUPPORTS: Count = Count::new(1, 1000);
 pub const INTERSLICE_POINTS: Count = Count::new(2, 1000);
 /// Methods answered beside Spencer's.
 pub const METHODS: Count = Count::new(0, 4);
+
+/// Most samples of a probabilistic study (each one analysis: the time limit bounds the study).
+pub const MAX_STUDY_SAMPLES: usize = 100_000;
+/// Most sampled values of a study (samples × variables): its memory, 16 MB of f64.
+pub const MAX_STUDY_VALUES: usize = 2_000_000;
+/// Samples of a probabilistic study.
+pub const STUDY_SAMPLES: Count = Count::new(1, MAX_STUDY_SAMPLES);
+/// Variables of a study.
+pub const STUDY_VARIABLES: Count = Count::new(1, 20);
+/// Bars of a study's histogram.
+pub const HISTOGRAM_BINS: Count = Count::new(1, 200);
+/// Values of one sensitivity variable.
+pub const SENSITIVITY_POINTS: Count = Count::new(2, 101);
+/// A correlation coefficient between two variables (±1 makes the matrix singular: refused as
+/// not positive definite).
+pub const CORRELATION: Range = Range::closed(-1.0, 1.0);

@@ -3,15 +3,16 @@
 //! the server cannot disagree.
 
 use super::{
-    Limit, AXLES, BASE_ANGLE_DEG, BLOCKS, CENTRE_HEIGHT, COORDINATE, CRACK_DEPTH,
+    Limit, AXLES, BASE_ANGLE_DEG, BLOCKS, CENTRE_HEIGHT, COORDINATE, CORRELATION, CRACK_DEPTH,
     CRACK_WATER_DEPTH, CRUSHING_PLANES, EVALUATIONS, FILL_ANGLE_DEG, FORCE, FRICTION,
-    FRICTION_ANGLE_DEG, GRID_POINTS, INTERSLICE_POINTS, LAYERS, LENGTH, LINE_LOAD, LOADS,
-    LOWER_END_FACTOR, LOWER_END_FACTOR_MAX, LOWER_LIMIT, METHODS, MIN_DEPTH, MOBILISATION,
+    FRICTION_ANGLE_DEG, GRID_POINTS, HISTOGRAM_BINS, INTERSLICE_POINTS, LAYERS, LENGTH, LINE_LOAD,
+    LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX, LOWER_LIMIT, METHODS, MIN_DEPTH, MOBILISATION,
     PATCH_LENGTH, POLYGON_CORNERS, POLYLINE_POINTS, PORE_GRID_POINTS, PORE_PRESSURE_RATIO,
     POSITIVE_LENGTH, POSITIVE_STRESS, RADII, RADIUS, RELATIVE_ERROR, RINGS, ROLLING_POSITIONS,
-    SEARCH_LOWER_END_FACTOR, SECTION_LOADS, SEISMIC_KH, SEISMIC_KV, SLICES, SLICE_TOLERANCE,
-    SOLVER_TOLERANCE, SPANS, STRESS, SUPPORTS, THICKNESS, THICKNESS_TOLERANCE, TIME_BUDGET_MS,
-    UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT, VERTICES,
+    SEARCH_LOWER_END_FACTOR, SECTION_LOADS, SEISMIC_KH, SEISMIC_KV, SENSITIVITY_POINTS, SLICES,
+    SLICE_TOLERANCE, SOLVER_TOLERANCE, SPANS, STRESS, STUDY_SAMPLES, STUDY_VARIABLES, SUPPORTS,
+    THICKNESS, THICKNESS_TOLERANCE, TIME_BUDGET_MS, UNIT_WEIGHT, UNIT_WEIGHT_OR_ZERO, UPPER_LIMIT,
+    VERTICES,
 };
 
 /// Every limit the OpenAPI schema states, by component and property: the document is written
@@ -185,6 +186,25 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     ("ExternalLoadDto", "fy", Limit::Number(FORCE)),
     ("ExternalLoadDto", "moment", Limit::Number(FORCE)),
     ("SpencerRequest", "surface", Limit::Items(POLYLINE_POINTS)),
+    // Studies.
+    ("ProbabilisticDto", "samples", Limit::Integer(STUDY_SAMPLES)),
+    (
+        "ProbabilisticDto",
+        "variables",
+        Limit::Items(STUDY_VARIABLES),
+    ),
+    (
+        "ProbabilisticDto",
+        "histogram_bins",
+        Limit::Integer(HISTOGRAM_BINS),
+    ),
+    ("CorrelationDto", "coefficient", Limit::Number(CORRELATION)),
+    ("SensitivityDto", "variables", Limit::Items(STUDY_VARIABLES)),
+    (
+        "SensitivityVariableDto",
+        "points",
+        Limit::Integer(SENSITIVITY_POINTS),
+    ),
     ("SpencerRequest", "methods", Limit::Items(METHODS)),
     (
         "SpencerRequest",

@@ -88,6 +88,7 @@ impl SpencerRequest {
             target,
             slice_tolerance,
             relative_error,
+            estimate_accuracy: true,
             max_slices: MAX_SLICES,
             curves: self.curves,
             methods: methods.into_iter().map(Into::into).collect(),

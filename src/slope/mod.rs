@@ -24,6 +24,7 @@ pub mod slices;
 pub mod solve;
 pub mod solved;
 pub mod strength;
+pub mod study;
 pub mod supports;
 pub mod tables;
 pub mod warnings;
@@ -96,7 +97,7 @@ pub async fn spencer(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<ApiJson<SpencerResponse>, ApiError> {
-    let solved = solve(&state, request.validate()?).await?;
+    let solved = solve(&state, &request, Default::default()).await?;
     Ok(ApiJson(
         SpencerResponse::new(&solved).with_details(request.include.as_deref()),
     ))
@@ -120,6 +121,6 @@ pub async fn spencer_svg(
     State(state): State<AppState>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Svg, ApiError> {
-    let solved = solve(&state, request.validate()?).await?;
+    let solved = solve(&state, &request, Default::default()).await?;
     Ok(Svg(drawing::draw(&solved, drawing::title(&solved))))
 }

@@ -34,7 +34,7 @@ pub async fn spencer_report(
     RequestId(request_id): RequestId,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Html<String>, ApiError> {
-    let solved = solve(&state, request.validate()?).await?;
+    let solved = solve(&state, &request, Default::default()).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
     let title = drawing::title(&solved);
     let headline = match (answer.factor_of_safety, answer.theta_deg) {

@@ -216,6 +216,13 @@ pub struct SpencerRequest {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub external_loads: Vec<ExternalLoadDto>,
+    /// A probabilistic study of this analysis (model §9.2): numbers of this request as
+    /// variables, the analysis run on each sample, the probability of failure (F < 1).
+    #[serde(default)]
+    pub probabilistic: Option<crate::study::request::ProbabilisticDto>,
+    /// A sensitivity study (model §9.3): the analysis at evenly spaced values of each variable.
+    #[serde(default)]
+    pub sensitivity: Option<crate::study::request::SensitivityDto>,
 }
 
 fn default_slices() -> usize {

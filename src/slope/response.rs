@@ -195,6 +195,12 @@ pub struct SpencerResponse {
     /// factor and whether it is verified.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub design: Option<super::design::DesignOutDto>,
+    /// With `probabilistic`: the study's probability of failure, statistics and histogram.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub probabilistic: Option<crate::study::response::ProbabilisticOutDto>,
+    /// With `sensitivity`: F at each value of each variable.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sensitivity: Option<crate::study::response::SensitivityOutDto>,
 }
 
 /// One step of the slice refinement.
@@ -322,6 +328,12 @@ impl SpencerResponse {
                 super::supports::supports_out(&section.supports(), section.section().supports())
             },
             design: solved.design.as_ref().map(super::design::design_out),
+            probabilistic: solved
+                .studies
+                .probabilistic
+                .as_ref()
+                .map(|(p, _)| p.clone()),
+            sensitivity: solved.studies.sensitivity.clone(),
         }
     }
 }

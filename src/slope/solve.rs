@@ -2,34 +2,69 @@
 //! request's budget → the solved slope every answer (JSON, CSV, SVG, report) is built from; a
 //! stage that stopped without an answer becomes the 422 naming the field that sets its work.
 
-use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
+use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopeStage, Target};
 use thrustline_solver::slope::Sliced;
 
+use std::sync::Arc;
+
+use super::request::SpencerRequest;
 use super::solved::SolvedSlope;
+use super::study;
 use crate::error::ApiError;
 use crate::pool::Cost;
 use crate::stop::Work;
+use crate::study::run::{StudyStop, Tally};
 use crate::AppState;
 
-/// Analyses the plan on the pool within the solve time limit; a stage that stopped without an
-/// answer becomes the outcome rule's 422 naming the field that sets the work (503 when other
-/// solves ran beside it, [`AppState::refuse`]).
-pub async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, ApiError> {
+/// Validates the request and analyses it on the pool within the solve time limit, then its
+/// studies within the same budget; a stage that stopped without an answer becomes the outcome
+/// rule's 422 naming the field that sets the work (503 when other solves ran beside it,
+/// [`AppState::refuse`]). `tally` counts the studies' analyses as they finish.
+pub async fn solve(
+    state: &AppState,
+    request: &SpencerRequest,
+    tally: Arc<Tally>,
+) -> Result<SolvedSlope, ApiError> {
+    let plan = request.validate()?;
+    let studies = study::plan(request)?;
+    tally.expect(studies.as_ref().map_or(0, study::analyses));
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
     let by_accuracy = plan.relative_error.is_some();
     // One surface at a stated slice count is milliseconds; searches and accuracy targets run
     // in the heavy lane. Neither takes much memory (slices are capped at 10,000).
-    let cost = match (&plan.target, by_accuracy) {
-        (Target::Surface(_), false) => Cost::LIGHT,
+    let cost = match (&plan.target, by_accuracy, &studies) {
+        (Target::Surface(_), false, None) => Cost::LIGHT,
         _ => Cost::HEAVY,
     };
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            analyse(&plan, budget)
+            let outcome = analyse(&plan, budget)?;
+            let studied = match (&outcome, &studies) {
+                (SlopeOutcome::Answered(answer), Some(s)) => {
+                    Some(study::run(s, answer, budget, &tally))
+                }
+                _ => None,
+            };
+            Ok::<_, thrustline_solver::slope::SlopeError>((outcome, studied))
         })
         .await?;
-    let answer = match ran.value? {
+    let (outcome, studied) = ran.value?;
+    let studies = match studied.transpose() {
+        Ok(answers) => answers,
+        Err((field, StudyStop::Stopped(stop))) => {
+            let work = Work {
+                field,
+                advice: "use fewer samples or points, surface: fixed, or a smaller search",
+                no_candidate: "",
+            };
+            return Err(state.refuse(stop, work, ran.shared));
+        }
+        Err((field, StudyStop::Sampling(e))) => {
+            return Err(ApiError::invalid(field, e.to_string()))
+        }
+    };
+    let answer = match outcome {
         SlopeOutcome::Answered(answer) => *answer,
         SlopeOutcome::Stopped { stage, stop } => {
             let work = match stage {
@@ -63,6 +98,7 @@ pub async fn solve(state: &AppState, plan: SlopePlan) -> Result<SolvedSlope, Api
     };
     let solved = SolvedSlope {
         answer,
+        studies: studies.unwrap_or_default(),
         solve_time_ms: ran.elapsed.as_secs_f64() * 1e3,
     };
     tracing::info!(

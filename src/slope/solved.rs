@@ -10,6 +10,8 @@ use thrustline_solver::slope::analysis::SlopeAnswer;
 pub struct SolvedSlope {
     /// What the analysis answered.
     pub answer: SlopeAnswer,
+    /// What the request's studies answered (nothing without studies).
+    pub studies: super::study::StudyAnswers,
     /// Wall time of the whole solve in milliseconds.
     pub solve_time_ms: f64,
 }

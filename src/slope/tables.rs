@@ -36,7 +36,7 @@ pub async fn spencer_csv(
     Table(table): Table<SlopeTableQuery>,
     ApiJson(request): ApiJson<SpencerRequest>,
 ) -> Result<Csv, ApiError> {
-    let solved = solve(&state, request.validate()?).await?;
+    let solved = solve(&state, &request, Default::default()).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
     slope_table(&answer, table)
 }

@@ -100,6 +100,10 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
         ));
     }
     warnings.extend(outside_the_grid(solved));
+    warnings.extend(crate::study::warnings(
+        solved.studies.probabilistic.as_ref(),
+        solved.studies.sensitivity.as_ref(),
+    ));
     warnings
 }
 

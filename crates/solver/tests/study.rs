@@ -9,6 +9,7 @@
 use std::time::Duration;
 
 use thrustline_solver::budget::Budget;
+use thrustline_solver::study;
 use thrustline_solver::study::normal;
 use thrustline_solver::study::sampling::samples;
 use thrustline_solver::study::{run, summarise, Distribution, Sampling, StudyError, Variable};
@@ -243,9 +244,8 @@ fn a_linear_answer_fails_as_often_as_its_normal_says() {
     })];
     let rows = samples(&v, &[], n, Sampling::MonteCarlo, 9).unwrap();
     let (answers, stop) = run(
-        &rows,
-        1,
-        |x| Some(1.2 + 0.1 * x[0]),
+        &study::run::rows(&rows, 1),
+        |x: &&[f64]| Some(1.2 + 0.1 * x[0]),
         &Budget::unlimited(),
         &|_, _| {},
     );
@@ -287,9 +287,8 @@ fn a_spent_budget_stops_the_study() {
     let rows = samples(&v, &[], 1000, Sampling::MonteCarlo, 1).unwrap();
     let budget = Budget::with_time_limit(Duration::from_millis(20));
     let (answers, stop) = run(
-        &rows,
-        1,
-        |x| {
+        &study::run::rows(&rows, 1),
+        |x: &&[f64]| {
             std::thread::sleep(Duration::from_millis(2));
             Some(x[0])
         },

@@ -20,27 +20,27 @@ impl<F: Fn(usize, usize) + Sync> Progress for F {
     }
 }
 
-/// Runs `evaluate` on each row of `samples` (row-major, `k` values a row): its answer, `None`
-/// where it has none. Stops early (with the budget's stop) when the budget is spent; the
-/// answers of the rows not run are then absent from the result.
-pub fn run<E>(
-    samples: &[f64],
-    k: usize,
+/// Runs `evaluate` on each of `items` (a sample's row of values, a sensitivity's point): its
+/// answers in the items' order. Stops early (with the budget's stop) when the budget is spent;
+/// the answers of the items not run are then absent from the result.
+pub fn run<T, A, E>(
+    items: &[T],
     evaluate: E,
     budget: &Budget,
     progress: &dyn Progress,
-) -> (Vec<Option<f64>>, Result<(), Stop>)
+) -> (Vec<A>, Result<(), Stop>)
 where
-    E: Fn(&[f64]) -> Option<f64> + Sync,
+    T: Sync,
+    A: Send,
+    E: Fn(&T) -> A + Sync,
 {
-    let rows: Vec<&[f64]> = samples.chunks(k.max(1)).collect();
-    let of = rows.len();
+    let of = items.len();
     let done = AtomicUsize::new(0);
-    let answers: Vec<Option<Option<f64>>> = rows
+    let answers: Vec<Option<A>> = items
         .par_iter()
-        .map(|row| {
+        .map(|item| {
             budget.check().ok()?;
-            let answer = evaluate(row);
+            let answer = evaluate(item);
             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
             progress.report(d, of);
             Some(answer)
@@ -52,4 +52,9 @@ where
         budget.check().and(Err(budget.out_of_time()))
     };
     (answers.into_iter().flatten().collect(), stop)
+}
+
+/// The rows of `samples` (row-major, `k` values a row).
+pub fn rows(samples: &[f64], k: usize) -> Vec<&[f64]> {
+    samples.chunks(k.max(1)).collect()
 }

@@ -116,6 +116,14 @@ pub struct Variable {
 }
 
 impl Variable {
+    /// Whether [min, max] leaves the distribution any probability to sample.
+    pub fn has_probability(&self) -> bool {
+        let d = &self.distribution;
+        let lo = self.min.map_or(0.0, |a| d.cdf(a));
+        let hi = self.max.map_or(1.0, |b| d.cdf(b));
+        hi.partial_cmp(&lo) == Some(std::cmp::Ordering::Greater)
+    }
+
     /// The value at uniform score p: the truncated distribution's quantile.
     pub fn at(&self, p: f64) -> f64 {
         let d = &self.distribution;
@@ -189,13 +197,8 @@ pub fn samples(
     seed: u64,
 ) -> Result<Vec<f64>, StudyError> {
     let k = variables.len();
-    for (index, v) in variables.iter().enumerate() {
-        let d = &v.distribution;
-        let lo = v.min.map_or(0.0, |a| d.cdf(a));
-        let hi = v.max.map_or(1.0, |b| d.cdf(b));
-        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-            return Err(StudyError::EmptyTruncation { index });
-        }
+    if let Some(index) = variables.iter().position(|v| !v.has_probability()) {
+        return Err(StudyError::EmptyTruncation { index });
     }
     let factor = if rho.is_empty() {
         None

@@ -92,6 +92,9 @@ pub struct SlopePlan {
     /// With an accuracy: the answered surface is re-cut at the fewest slices (from 25,
     /// doubling) whose estimated discretisation error is at most this fraction of F.
     pub relative_error: Option<f64>,
+    /// Whether to estimate the answer's discretisation error (re-cutting it at other slice
+    /// counts); a study's samples skip it.
+    pub estimate_accuracy: bool,
     /// The most slices a refinement may reach.
     pub max_slices: usize,
     /// Whether to compute Spencer's curves F_f(θ), F_m(θ) around the answer.
@@ -126,6 +129,7 @@ impl SlopePlan {
             target,
             slice_tolerance: None,
             relative_error: None,
+            estimate_accuracy: true,
             max_slices: 10_000,
             curves: false,
             methods: Vec::new(),
@@ -284,12 +288,12 @@ fn at_slices(
         }
     };
     let (accuracy, recut) = match solution.factor_of_safety {
-        Some(f) => {
+        Some(f) if plan.estimate_accuracy => {
             let recut = Recut::of(&problem, budget);
             let spencer_at = |m: &SliceModel| solve_spencer(m, spencer).factor_of_safety;
             (estimate(&recut, f, &spencer_at), Some(recut))
         }
-        None => (
+        _ => (
             Accuracy {
                 slices: problem.slice_count(),
                 discretisation_error: None,

@@ -1,0 +1,188 @@
+//! Studies on the Spencer route (model §9.2–9.3): how a sample of the request is analysed.
+//!
+//! A sample is the request as JSON with the study's values written in: read as a request,
+//! validated as one, and analysed without what only the deterministic answer reports (the
+//! accuracy estimate, other methods, curves). With `surface: fixed` every sample keeps the
+//! deterministic answer's surface at its slice count (so a sample at the stated values is that
+//! answer); with `search` each sample runs the request's search and refinement again.
+
+use serde_json::{json, Value};
+use thrustline_solver::budget::Budget;
+use thrustline_solver::slope::analysis::{analyse, Analysed, SlopeAnswer, SlopeOutcome};
+use thrustline_solver::slope::section::SlipShape;
+use thrustline_solver::slope::spencer::SpencerStatus;
+use thrustline_solver::slope::Sliced;
+
+use super::request::SpencerRequest;
+use crate::error::ApiError;
+use crate::study::plan::{self, ProbabilisticPlan, SensitivityPlan};
+use crate::study::response::{ProbabilisticOutDto, SensitivityOutDto};
+use crate::study::run::{Sampled, StudyStop, Tally};
+
+/// The studies a Spencer request asks for, checked.
+#[derive(Debug, Clone)]
+pub struct SlopeStudy {
+    /// The request as JSON without its studies and what samples do not report.
+    pub base: Value,
+    /// The probabilistic study.
+    pub probabilistic: Option<ProbabilisticPlan>,
+    /// The sensitivity study.
+    pub sensitivity: Option<SensitivityPlan>,
+}
+
+/// What a request's studies answered.
+#[derive(Debug, Clone, Default)]
+pub struct StudyAnswers {
+    /// The probabilistic study, and the first refusal of a sample's values if any.
+    pub probabilistic: Option<(ProbabilisticOutDto, Option<String>)>,
+    /// The sensitivity study.
+    pub sensitivity: Option<SensitivityOutDto>,
+}
+
+/// The request's studies, checked against it (None without any).
+pub fn plan(request: &SpencerRequest) -> Result<Option<SlopeStudy>, ApiError> {
+    if request.probabilistic.is_none() && request.sensitivity.is_none() {
+        return Ok(None);
+    }
+    let mut base = serde_json::to_value(request)
+        .map_err(|e| ApiError::Internal(format!("the request as JSON: {e}")))?;
+    if let Some(object) = base.as_object_mut() {
+        for key in [
+            "probabilistic",
+            "sensitivity",
+            "include",
+            "methods",
+            "curves",
+        ] {
+            object.remove(key);
+        }
+    }
+    let probabilistic = match &request.probabilistic {
+        Some(_) if request.design.is_some() => {
+            return Err(ApiError::invalid(
+                "probabilistic",
+                "samples characteristic values: leave out design (partial factors and a \
+                 probability of failure answer the same question twice)",
+            ))
+        }
+        Some(dto) => Some(plan::probabilistic::<SpencerRequest>(dto, &base)?),
+        None => None,
+    };
+    let sensitivity = request
+        .sensitivity
+        .as_ref()
+        .map(|dto| plan::sensitivity::<SpencerRequest>(dto, &base))
+        .transpose()?;
+    Ok(Some(SlopeStudy {
+        base,
+        probabilistic,
+        sensitivity,
+    }))
+}
+
+/// Analyses the studies will run.
+pub fn analyses(study: &SlopeStudy) -> usize {
+    let samples = study.probabilistic.as_ref().map_or(0, |p| p.samples);
+    let points = study
+        .sensitivity
+        .as_ref()
+        .map_or(0, |s| s.variables.iter().map(|(_, v)| v.len()).sum());
+    samples + points
+}
+
+/// Runs the studies around `answer` (the deterministic one) within `budget`; a study that did
+/// not finish is the field that sets its work, and why.
+pub fn run(
+    study: &SlopeStudy,
+    answer: &SlopeAnswer,
+    budget: &Budget,
+    tally: &Tally,
+) -> Result<StudyAnswers, (&'static str, StudyStop)> {
+    let progress = |_: usize, _: usize| tally.count();
+    let probabilistic = match &study.probabilistic {
+        Some(p) => {
+            let base = match p.fixed {
+                true => with_fixed_surface(&study.base, answer),
+                false => study.base.clone(),
+            };
+            let out = crate::study::run::probabilistic(p, &base, evaluate, budget, &progress)
+                .map_err(|stop| ("probabilistic.samples", stop))?;
+            Some(out)
+        }
+        None => None,
+    };
+    let sensitivity = match &study.sensitivity {
+        Some(s) => Some(
+            crate::study::run::sensitivity(s, &study.base, evaluate, budget, &progress)
+                .map_err(|stop| ("sensitivity.variables", StudyStop::Stopped(stop)))?,
+        ),
+        None => None,
+    };
+    Ok(StudyAnswers {
+        probabilistic,
+        sensitivity,
+    })
+}
+
+/// `base` with the deterministic answer's surface fixed: the circle or polyline answered, at
+/// its slice count, without a search or refinement.
+pub fn with_fixed_surface(base: &Value, answer: &SlopeAnswer) -> Value {
+    let mut fixed = base.clone();
+    let Some(object) = fixed.as_object_mut() else {
+        return fixed;
+    };
+    let Analysed::Section(section_problem) = &answer.problem;
+    if object.get("search").is_some_and(|s| !s.is_null()) {
+        for key in ["search", "circle", "surface", "moment_centre"] {
+            object.remove(key);
+        }
+        match section_problem.shape() {
+            SlipShape::Circle { centre, radius } => {
+                object.insert(
+                    "circle".to_owned(),
+                    json!({"centre": [centre.0, centre.1], "radius": radius}),
+                );
+            }
+            SlipShape::Polyline(line) => {
+                let points: Vec<Value> = line.points().iter().map(|p| json!([p.0, p.1])).collect();
+                object.insert("surface".to_owned(), Value::Array(points));
+            }
+        }
+    }
+    for key in ["slice_tolerance", "accuracy"] {
+        object.remove(key);
+    }
+    object.insert("slices".to_owned(), json!(answer.problem.slice_count()));
+    fixed
+}
+
+/// One sample: `request` read, validated and analysed; its F when Spencer's equations (or the
+/// φ = 0 moment equation) answer it with the strengths settled.
+pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
+    let typed: SpencerRequest = match serde_json::from_value(request) {
+        Ok(typed) => typed,
+        Err(e) => return Sampled::Refused(e.to_string()),
+    };
+    let mut plan = match typed.validate() {
+        Ok(plan) => plan,
+        Err(e) => return Sampled::Refused(e.to_string()),
+    };
+    plan.estimate_accuracy = false;
+    plan.methods.clear();
+    plan.curves = false;
+    match analyse(&plan, budget) {
+        Ok(SlopeOutcome::Answered(answer)) => {
+            let s = &answer.solution;
+            let answered = matches!(
+                s.status,
+                SpencerStatus::Converged | SpencerStatus::MomentOnly
+            );
+            match s.factor_of_safety {
+                Some(f) if answered && s.strength.settled => Sampled::Solved(f),
+                _ => Sampled::Unsolved,
+            }
+        }
+        Ok(SlopeOutcome::Stopped { .. }) => Sampled::Unsolved,
+        Err(e) => Sampled::Refused(e.to_string()),
+    }
+}
