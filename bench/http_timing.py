@@ -88,3 +88,15 @@ panel = {"geometry": {"kind": "assembly", "blocks": [{"polygon": p} for p in bri
     "friction_coefficient": 0.5, "friction": "non_associative",
     "loads": [{"block": i + 1, "x": (p[0][0] + p[1][0]) / 2, "y": p[0][1] + 0.25, "fx": (p[1][0] - p[0][0]) * 0.5} for i, p in enumerate(bricks)]}
 bench("running-bond panel 3 courses × 3 bricks, sideways λ × weight, μ = 0.5, non-associative (its steps, then the associative state)", "/arch/live-load", panel, lambda d: d["solver"]["time_ms"])
+
+# Studies (issue 43): the whole request's solve time, the deterministic answer included.
+cohesion = {"field": "soil.cohesion", "distribution": "normal", "std": 1.0, "min": 0}
+friction = {"field": "soil.friction_angle_deg", "distribution": "lognormal", "std": 3}
+bench("probabilistic: 10,000 samples on the fixed 100-slice circle (2 variables, Monte Carlo)", "/slope/spencer",
+      dict(sp, slices=100, include=[], probabilistic={"samples": 10000, "variables": [cohesion, friction]}), lambda d: d["solve_time_ms"])
+bench("probabilistic: 1,000 samples, each re-running the 21 × 21 search, 50 slices", "/slope/spencer",
+      dict(sp, slices=50, circle=None, search={"nx": 21, "ny": 21}, include=[],
+           probabilistic={"samples": 1000, "surface": "search", "variables": [cohesion, friction]}), lambda d: d["solve_time_ms"])
+bench("sensitivity: 2 variables × 11 values, each re-running the 21 × 21 search, 50 slices", "/slope/spencer",
+      dict(sp, slices=50, circle=None, search={"nx": 21, "ny": 21}, include=[],
+           sensitivity={"variables": [{"field": "soil.cohesion", "from": 4, "to": 8}, {"field": "soil.friction_angle_deg", "from": 30, "to": 45}]}), lambda d: d["solve_time_ms"])

@@ -192,6 +192,7 @@ pub fn solve_routes() -> Router<AppState> {
     Router::new()
         .route("/slope/spencer", post(slope::spencer))
         .route("/slope/spencer/svg", post(slope::spencer_svg))
+        .route("/slope/spencer/stream", post(slope::spencer_stream))
         .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
         .route("/slope/spencer/report", post(slope::report::spencer_report))
         .route("/arch/dead-load", post(arch::dead_load))

@@ -44,6 +44,7 @@ use crate::limits::Limit;
         crate::arch::minimum_thickness::minimum_thickness_csv,
         crate::slope::spencer,
         crate::slope::spencer_svg,
+        crate::slope::spencer_stream,
         crate::slope::tables::spencer_csv,
         crate::slope::report::spencer_report
     ),

@@ -223,40 +223,13 @@ async fn the_batch_time_limit_answers_the_lines_left_503() {
 async fn settled(server: &Server) -> u64 {
     let mut left = u64::MAX;
     for _ in 0..100 {
-        left = running(server).await;
+        left = server.solves_running().await;
         if left == 0 {
             break;
         }
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
     left
-}
-
-/// Solves running and waiting, from /metrics.
-async fn running(server: &Server) -> u64 {
-    let text = server
-        .client
-        .get(format!("{}/metrics", server.base))
-        .send()
-        .await
-        .unwrap()
-        .text()
-        .await
-        .unwrap();
-    [
-        "thrustline_solves_running ",
-        "thrustline_solve_queue_depth ",
-    ]
-    .iter()
-    .map(|name| {
-        text.lines()
-            .find_map(|l| l.strip_prefix(name))
-            .unwrap()
-            .trim()
-            .parse::<u64>()
-            .unwrap()
-    })
-    .sum()
 }
 
 #[tokio::test]
@@ -288,7 +261,7 @@ async fn a_client_that_goes_away_cancels_its_lines() {
     drop(response);
     let mut left = u64::MAX;
     for _ in 0..100 {
-        left = running(&server).await;
+        left = server.solves_running().await;
         if left == 0 {
             break;
         }

@@ -502,9 +502,9 @@ async fn a_study_over_its_time_limit_is_refused_naming_its_samples() {
         ..thrustline::Settings::default()
     })
     .await;
-    let mut body = json!({"slope": {"height": 10, "length": 20}, "search": {}, "slices": 60,
-        "soil": {"unit_weight": 19, "cohesion": 9, "friction_angle_deg": 22}, "include": []});
-    body["probabilistic"] = json!({"samples": 100_000, "surface": "search",
+    // One circle is a millisecond; 100,000 samples of it are seconds.
+    let mut body = undrained(30.0, 18.0);
+    body["probabilistic"] = json!({"samples": 100_000,
         "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1, "min": 1}]});
     let started = std::time::Instant::now();
     let (status, content_type, problem) = server.post("/slope/spencer", &body).await;
@@ -516,4 +516,112 @@ async fn a_study_over_its_time_limit_is_refused_naming_its_samples() {
         "probabilistic.samples",
     );
     assert!(started.elapsed().as_secs_f64() < 5.0);
+}
+
+/// The NDJSON lines of a streamed answer.
+async fn lines(server: &Server, path: &str, accept: &str, body: &Value) -> Vec<Value> {
+    let response = server
+        .client
+        .post(format!("{}{path}", server.base))
+        .header("accept", accept)
+        .json(body)
+        .send()
+        .await
+        .unwrap();
+    assert_eq!(response.status(), 200);
+    assert_eq!(Server::content_type(&response), "application/x-ndjson");
+    let text = response.text().await.unwrap();
+    text.lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+#[tokio::test]
+async fn a_streamed_study_reports_progress_then_the_answer() {
+    let server = Server::start().await;
+    let mut body = json!({"slope": {"height": 10, "length": 20}, "search": {}, "slices": 40,
+        "soil": {"unit_weight": 19, "cohesion": 5, "friction_angle_deg": 22}, "include": []});
+    body["probabilistic"] = json!({"samples": 150, "surface": "search", "seed": 8,
+        "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1, "min": 0.5}]});
+    let plain = answer(&server, &body).await;
+    for (path, accept) in [
+        ("/slope/spencer/stream", "*/*"),
+        (
+            "/slope/spencer",
+            "application/json;q=0.5, application/x-ndjson",
+        ),
+    ] {
+        let got = lines(&server, path, accept, &body).await;
+        let (last, progress) = got.split_last().unwrap();
+        assert!(!progress.is_empty(), "{path}: no progress line");
+        let mut before = 0;
+        for p in progress {
+            let (done, of) = (
+                p["progress"]["done"].as_u64().unwrap(),
+                p["progress"]["of"].as_u64().unwrap(),
+            );
+            assert_eq!(of, 150);
+            assert!(done >= before && done <= of, "{p}");
+            before = done;
+        }
+        let strip = |v: &Value| {
+            let mut v = v["probabilistic"].clone();
+            v.as_object_mut().unwrap().remove("time_ms");
+            v
+        };
+        assert_eq!(strip(last), strip(&plain), "{path}");
+        assert_eq!(last["factor_of_safety"], plain["factor_of_safety"]);
+    }
+    // A study stopped at the time limit: its problem is the last line.
+    let server = Server::start_with(thrustline::Settings {
+        solve_timeout: std::time::Duration::from_millis(300),
+        ..thrustline::Settings::default()
+    })
+    .await;
+    body = undrained(30.0, 18.0);
+    body["probabilistic"] = json!({"samples": 100_000,
+        "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1, "min": 1}]});
+    let got = lines(
+        &server,
+        "/slope/spencer/stream",
+        "application/x-ndjson",
+        &body,
+    )
+    .await;
+    let last = got.last().unwrap();
+    assert_eq!(last["status"], 422, "{last}");
+    assert_eq!(last["field"], "probabilistic.samples");
+    assert!(last["instance"].is_string(), "{last}");
+}
+
+#[tokio::test]
+async fn a_client_that_goes_away_cancels_its_study() {
+    let server = Server::start().await;
+    let mut body = json!({"slope": {"height": 10, "length": 20}, "search": {}, "slices": 60,
+        "soil": {"unit_weight": 19, "cohesion": 5, "friction_angle_deg": 22}, "include": []});
+    // Tens of seconds of searches.
+    body["probabilistic"] = json!({"samples": 100_000, "surface": "search",
+        "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1, "min": 0.5}]});
+    let mut response = server
+        .client
+        .post(format!("{}/slope/spencer/stream", server.base))
+        .json(&body)
+        .send()
+        .await
+        .unwrap();
+    let mut read = Vec::new();
+    while read.iter().filter(|&&b| b == b'\n').count() < 2 {
+        read.extend_from_slice(&response.chunk().await.unwrap().unwrap());
+    }
+    assert_eq!(server.solves_running().await, 1);
+    drop(response);
+    let mut left = u64::MAX;
+    for _ in 0..100 {
+        left = server.solves_running().await;
+        if left == 0 {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+    }
+    assert_eq!(left, 0, "the study kept running after the client left");
 }

@@ -30,10 +30,16 @@ pub mod tables;
 pub mod warnings;
 pub mod water;
 
+use std::sync::Arc;
+
 use axum::extract::State;
+use axum::http::HeaderMap;
+use axum::response::{IntoResponse, Response};
 
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
+use crate::headers::RequestId;
+use crate::study::run::Tally;
 use crate::svg::Svg;
 use crate::AppState;
 use request::SpencerRequest;
@@ -47,7 +53,10 @@ use solve::solve;
 /// (layers, bedrock, water, loads, tension crack); give exactly one of `circle` (relative to the
 /// lower end on the simple slope, or absolute: `centre` and `radius`), `surface` (any polyline)
 /// and `search` (the critical circle, with the F map). `converged: false` with a status when the equations have no
-/// solution; a search or refinement stopped at the time limit is 422 naming the field.
+/// solution; a search or refinement stopped at the time limit is 422 naming the field. A
+/// `probabilistic` or `sensitivity` study varies numbers of the request by their paths and
+/// answers the probability of failure or F at each value (docs/studies.md); with `Accept:
+/// application/x-ndjson` the answer streams after progress lines, as `/slope/spencer/stream`.
 #[utoipa::path(
     post,
     path = "/slope/spencer",
@@ -83,6 +92,14 @@ use solve::solve;
                                            "strength": {"model": "power_curve", "a": 3, "b": 0.6, "c": 1}}}],
                                        "piezometric_line": {"points": [[-20, -2], [0, -0.5], [20, 5], [50, 6]], "hu": "auto"}},
                            "circle": {"centre": [12, 22], "radius": 26}, "slices": 60}))),
+        ("probabilistic_study" = (summary = "Spencer's critical circle with c′ normal and φ′ lognormal, correlated, in 2000 Latin-hypercube samples on the fixed circle: F = 1.0146, probability of failure 0.3785",
+            value = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
+                           "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
+                                    "pore_pressure_ratio": 0.5},
+                           "probabilistic": {"samples": 2000, "sampling": "latin_hypercube", "seed": 7,
+                               "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1.0, "min": 0},
+                                             {"field": "soil.friction_angle_deg", "distribution": "lognormal", "std": 2}],
+                               "correlations": [{"fields": ["soil.cohesion", "soil.friction_angle_deg"], "coefficient": -0.5}]}}))),
         ("critical_circle" = (summary = "The critical circle of Spencer's embankment (automatic search bounds): F = 1.0146",
             value = json!({"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50,
                            "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0,
@@ -95,12 +112,54 @@ use solve::solve;
 )]
 pub async fn spencer(
     State(state): State<AppState>,
+    headers: HeaderMap,
+    RequestId(id): RequestId,
     ApiJson(request): ApiJson<SpencerRequest>,
-) -> Result<ApiJson<SpencerResponse>, ApiError> {
+) -> Result<Response, ApiError> {
+    if crate::study::stream::wants_stream(&headers) {
+        return Ok(streamed(state, id, request));
+    }
     let solved = solve(&state, &request, Default::default()).await?;
-    Ok(ApiJson(
-        SpencerResponse::new(&solved).with_details(request.include.as_deref()),
-    ))
+    Ok(
+        ApiJson(SpencerResponse::new(&solved).with_details(request.include.as_deref()))
+            .into_response(),
+    )
+}
+
+/// Spencer's method with its studies' progress streamed (model §9.4).
+///
+/// The same request and answer as `/slope/spencer` (which streams too when `Accept` names
+/// `application/x-ndjson`), as NDJSON: `{"progress": {"done": k, "of": n}}` lines at most
+/// every 100 ms while a `probabilistic` or `sensitivity` study runs, then the answer as the
+/// last line — or its problem (with `status`, `field` and `detail`) when the study stopped, e.g.
+/// at the time limit. Closing the connection cancels the work.
+#[utoipa::path(
+    post,
+    path = "/slope/spencer/stream",
+    tag = "slope",
+    request_body = SpencerRequest,
+    responses(
+        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = String, content_type = "application/x-ndjson"),
+        ProblemResponses,
+    )
+)]
+pub async fn spencer_stream(
+    State(state): State<AppState>,
+    RequestId(id): RequestId,
+    ApiJson(request): ApiJson<SpencerRequest>,
+) -> Response {
+    streamed(state, id, request)
+}
+
+/// The answer to `request` streamed after its progress lines.
+fn streamed(state: AppState, id: String, request: SpencerRequest) -> Response {
+    let tally = Arc::new(Tally::default());
+    let counted = tally.clone();
+    crate::study::stream::ndjson(tally, id, async move {
+        let solved = solve(&state, &request, counted).await?;
+        let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
+        serde_json::to_vec(&answer).map_err(|e| ApiError::Internal(e.to_string()))
+    })
 }
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and

@@ -10,6 +10,7 @@ pub mod plan;
 pub mod request;
 pub mod response;
 pub mod run;
+pub mod stream;
 
 use crate::warning::{Warning, WarningCode};
 use response::{ProbabilisticOutDto, SensitivityOutDto};

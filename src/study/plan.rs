@@ -149,19 +149,17 @@ pub fn sensitivity<R: DeserializeOwned>(
             v.points.unwrap_or(DEFAULT_POINTS),
             SENSITIVITY_POINTS,
         )?;
-        let values = (0..n)
-            .map(|j| {
-                let t = j as f64 / (n - 1) as f64;
-                if j + 1 == n {
-                    to
-                } else {
-                    from + t * (to - from)
-                }
-            })
-            .collect();
+        let values = (0..n).map(|j| evenly(from, to, j, n)).collect();
         variables.push((path, values));
     }
     Ok(SensitivityPlan { variables })
+}
+
+/// The j-th of n values from `from` to `to`, to 12 significant digits (0.3 + 0.1 is 0.4 here,
+/// as the engineer wrote it, not 0.39999999999999997).
+fn evenly(from: f64, to: f64, j: usize, n: usize) -> f64 {
+    let x = from + (to - from) * j as f64 / (n - 1) as f64;
+    format!("{x:.11e}").parse().unwrap_or(x)
 }
 
 /// The path `text` (the value of `field`) and the number it leads to in `request`, which must

@@ -98,6 +98,33 @@ impl Server {
             .unwrap_or_default()
     }
 
+    /// Solves running and waiting, from /metrics.
+    pub async fn solves_running(&self) -> u64 {
+        let text = self
+            .client
+            .get(format!("{}/metrics", self.base))
+            .send()
+            .await
+            .unwrap()
+            .text()
+            .await
+            .unwrap();
+        [
+            "thrustline_solves_running ",
+            "thrustline_solve_queue_depth ",
+        ]
+        .iter()
+        .map(|name| {
+            text.lines()
+                .find_map(|l| l.strip_prefix(name))
+                .unwrap()
+                .trim()
+                .parse::<u64>()
+                .unwrap()
+        })
+        .sum()
+    }
+
     async fn parts(response: reqwest::Response) -> (u16, String, Value) {
         let status = response.status().as_u16();
         let content_type = Self::content_type(&response);
