@@ -159,37 +159,73 @@ where
     type Rejection = ApiError;
 
     async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
-        // Read with every object's keys checked: a key given twice is 422 naming it.
-        let axum::Json(crate::json::UniqueKeys(value)) =
-            axum::Json::<crate::json::UniqueKeys>::from_request(request, state).await?;
-        if !value.is_object() {
+        Ok(Self(read(request, state).await?.0))
+    }
+}
+
+/// [`ApiJson`] that keeps the body as the client wrote it beside the request read from it: a
+/// study's variables are paths into what the client wrote (a field left out and the same
+/// field given as null may mean different things, so the request serialised back will not do).
+#[derive(Debug)]
+pub struct ApiJsonWithBody<T> {
+    /// The request.
+    pub request: T,
+    /// The body as sent (an object).
+    pub body: serde_json::Value,
+}
+
+impl<T, S> FromRequest<S> for ApiJsonWithBody<T>
+where
+    T: DeserializeOwned + Serialize,
+    S: Send + Sync,
+{
+    type Rejection = ApiError;
+
+    async fn from_request(request: axum::extract::Request, state: &S) -> Result<Self, ApiError> {
+        let (request, body) = read(request, state).await?;
+        Ok(Self { request, body })
+    }
+}
+
+/// The body read as [`ApiJson`] reads it, with the JSON it was read from.
+async fn read<T, S>(
+    request: axum::extract::Request,
+    state: &S,
+) -> Result<(T, serde_json::Value), ApiError>
+where
+    T: DeserializeOwned + Serialize,
+    S: Send + Sync,
+{
+    // Read with every object's keys checked: a key given twice is 422 naming it.
+    let axum::Json(crate::json::UniqueKeys(value)) =
+        axum::Json::<crate::json::UniqueKeys>::from_request(request, state).await?;
+    if !value.is_object() {
+        return Err(ApiError::BadRequest {
+            status: StatusCode::UNPROCESSABLE_ENTITY,
+            detail: format!("body: expected a JSON object, found {}", json_kind(&value)),
+            field: Some("body".to_owned()),
+        });
+    }
+    let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
+        let detail = bounded(joined_paths(in_plain_words(&e.to_string())));
+        let field = data_error_field(&detail);
+        ApiError::BadRequest {
+            status: StatusCode::UNPROCESSABLE_ENTITY,
+            detail,
+            field,
+        }
+    })?;
+    if let Ok(back) = serde_json::to_value(&typed) {
+        // The body itself is an object (checked above): the path is never empty.
+        if let Some(field) = array_for_object(&value, &back, String::new()) {
             return Err(ApiError::BadRequest {
                 status: StatusCode::UNPROCESSABLE_ENTITY,
-                detail: format!("body: expected a JSON object, found {}", json_kind(&value)),
-                field: Some("body".to_owned()),
+                detail: format!("{field}: expected an object, found an array"),
+                field: Some(field),
             });
         }
-        let typed: T = serde_path_to_error::deserialize(&value).map_err(|e| {
-            let detail = bounded(joined_paths(in_plain_words(&e.to_string())));
-            let field = data_error_field(&detail);
-            ApiError::BadRequest {
-                status: StatusCode::UNPROCESSABLE_ENTITY,
-                detail,
-                field,
-            }
-        })?;
-        if let Ok(back) = serde_json::to_value(&typed) {
-            // The body itself is an object (checked above): the path is never empty.
-            if let Some(field) = array_for_object(&value, &back, String::new()) {
-                return Err(ApiError::BadRequest {
-                    status: StatusCode::UNPROCESSABLE_ENTITY,
-                    detail: format!("{field}: expected an object, found an array"),
-                    field: Some(field),
-                });
-            }
-        }
-        Ok(Self(typed))
     }
+    Ok((typed, value))
 }
 
 /// A JSON value's kind in words ("null", "an array", …), for messages.

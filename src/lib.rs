@@ -204,6 +204,7 @@ pub fn solve_routes() -> Router<AppState> {
         )
         .route("/arch/live-load", post(arch::live_load))
         .route("/arch/live-load/svg", post(arch::live_load_svg))
+        .route("/arch/live-load/stream", post(arch::live_load_stream))
         .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
         .route(
             "/arch/live-load/report",

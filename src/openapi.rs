@@ -38,6 +38,7 @@ use crate::limits::Limit;
         crate::arch::report::dead_load_report,
         crate::arch::live_load,
         crate::arch::live_load_svg,
+        crate::arch::live_load_stream,
         crate::arch::tables::live_load_csv,
         crate::arch::report::live_load_report,
         crate::arch::minimum_thickness::minimum_thickness,

@@ -21,12 +21,21 @@ pub mod request;
 pub mod response;
 pub mod rolling;
 pub mod solve;
+pub mod study;
 pub mod tables;
+pub mod warnings;
+
+use std::sync::Arc;
 
 use axum::extract::State;
+use axum::http::HeaderMap;
+use axum::response::{IntoResponse, Response};
+use serde_json::Value;
 
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::{ApiJson, ApiJsonWithBody};
+use crate::headers::RequestId;
+use crate::study::run::Tally;
 use crate::svg::Svg;
 use crate::AppState;
 use request::{DeadLoadRequest, LiveLoadRequest};
@@ -126,15 +135,55 @@ pub async fn dead_load_svg(
 )]
 pub async fn live_load(
     State(state): State<AppState>,
-    ApiJson(request): ApiJson<LiveLoadRequest>,
-) -> Result<ApiJson<LiveLoadResponse>, ApiError> {
-    let solved = solve(
-        &state,
-        Problem::LiveLoad,
-        request.validate(state.solve_time_limit_secs())?,
+    headers: HeaderMap,
+    RequestId(id): RequestId,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
+) -> Result<Response, ApiError> {
+    if crate::study::stream::wants_stream(&headers) {
+        return Ok(live_load_streamed(state, id, request, body));
+    }
+    let solved = study::solve_live(&state, (&request, &body), Default::default()).await?;
+    Ok(ApiJson(LiveLoadResponse::new(&solved)).into_response())
+}
+
+/// Live-load limit analysis with its studies' progress streamed (model §9.4).
+///
+/// The same request and answer as `/arch/live-load` (which streams too when `Accept` names
+/// `application/x-ndjson`), as NDJSON: `{"progress": {"done": k, "of": n}}` lines at most
+/// every 100 ms while a `probabilistic` or `sensitivity` study runs, then the answer as the
+/// last line — or its problem when the study stopped. Closing the connection cancels the work.
+#[utoipa::path(
+    post,
+    path = "/arch/live-load/stream",
+    tag = "arch",
+    request_body = LiveLoadRequest,
+    responses(
+        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = String, content_type = "application/x-ndjson"),
+        ProblemResponses,
     )
-    .await?;
-    Ok(ApiJson(LiveLoadResponse::new(&solved)))
+)]
+pub async fn live_load_stream(
+    State(state): State<AppState>,
+    RequestId(id): RequestId,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
+) -> Response {
+    live_load_streamed(state, id, request, body)
+}
+
+/// The answer to `request` streamed after its progress lines.
+fn live_load_streamed(
+    state: AppState,
+    id: String,
+    request: LiveLoadRequest,
+    body: Value,
+) -> Response {
+    let tally = Arc::new(Tally::default());
+    let counted = tally.clone();
+    crate::study::stream::ndjson(tally, id, async move {
+        let solved = study::solve_live(&state, (&request, &body), counted).await?;
+        serde_json::to_vec(&LiveLoadResponse::new(&solved))
+            .map_err(|e| ApiError::Internal(e.to_string()))
+    })
 }
 
 /// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.
@@ -152,14 +201,9 @@ pub async fn live_load(
 )]
 pub async fn live_load_svg(
     State(state): State<AppState>,
-    ApiJson(request): ApiJson<LiveLoadRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
 ) -> Result<Svg, ApiError> {
-    let solved = solve(
-        &state,
-        Problem::LiveLoad,
-        request.validate(state.solve_time_limit_secs())?,
-    )
-    .await?;
+    let solved = study::solve_live(&state, (&request, &body), Default::default()).await?;
     Ok(Svg(drawing::draw(
         &solved,
         &drawing::live_load_title(&solved),

@@ -8,7 +8,7 @@ use super::request::{DeadLoadRequest, LiveLoadRequest};
 use super::response::{ArchOutcomeDto, DeadLoadResponse, LiveLoadResponse};
 use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::headers::RequestId;
 use crate::report::{table, without_nulls, Report, ReportTable};
 use crate::AppState;
@@ -80,10 +80,9 @@ pub async fn dead_load_report(
 pub async fn live_load_report(
     State(state): State<AppState>,
     RequestId(request_id): RequestId,
-    ApiJson(request): ApiJson<LiveLoadRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
 ) -> Result<Html<String>, ApiError> {
-    let input = request.validate(state.solve_time_limit_secs())?;
-    let solved = solve(&state, Problem::LiveLoad, input).await?;
+    let solved = super::study::solve_live(&state, (&request, &body), Default::default()).await?;
     let answer = LiveLoadResponse::new(&solved);
     let headline = drawing::live_load_title(&solved);
     let mut tables = tables(&answer.outcome);

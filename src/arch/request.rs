@@ -377,6 +377,13 @@ limit_request! {
         /// factor (λ on the factored live load) and whether it is at least 1.
         #[serde(default)]
         pub design: Option<super::design::ArchDesignDto>,
+        /// A probabilistic study of this analysis (model §9.2): numbers of this request as
+        /// variables, the analysis run on each sample, the probability of failure (λ < 1).
+        #[serde(default)]
+        pub probabilistic: Option<crate::study::request::ProbabilisticDto>,
+        /// A sensitivity study (model §9.3): λ at evenly spaced values of each variable.
+        #[serde(default)]
+        pub sensitivity: Option<crate::study::request::SensitivityDto>,
     }
 }
 

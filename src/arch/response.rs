@@ -16,7 +16,7 @@ use super::mechanism::{
 };
 use super::request::{ArchDetailDto, FormulationDto};
 use super::rolling::RollingOutDto;
-use crate::warning::{one_based, Warning, WarningCode};
+use crate::warning::{one_based, Warning};
 
 /// The resultant at one interface.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -218,6 +218,13 @@ pub struct LiveLoadResponse {
     /// whether it is at least 1.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub design: Option<super::design::ArchDesignOutDto>,
+    /// With `probabilistic`: the study's probability of failure (λ < 1), statistics and
+    /// histogram.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub probabilistic: Option<crate::study::response::ProbabilisticOutDto>,
+    /// With `sensitivity`: λ at each value of each variable.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sensitivity: Option<crate::study::response::SensitivityOutDto>,
     /// Details.
     #[serde(flatten)]
     pub outcome: ArchOutcomeDto,
@@ -239,12 +246,9 @@ pub struct SolvedArch {
     pub friction: Option<NonAssociative>,
     /// Where the rings lock: the bonded single ring's λ.
     pub bonded_load_factor: Option<f64>,
+    /// What the request's studies answered (nothing without studies).
+    pub studies: crate::study::StudyAnswers,
 }
-
-/// Locked rings whose λ exceeds the bonded single ring's by more than this factor are warned
-/// of (`rings_locked`): beyond a quarter more, the locking rather than the masonry carries the
-/// load (aligned rings bonded give the single ring's λ to 1e-8).
-const FAR_ABOVE_BONDED: f64 = 1.25;
 
 impl SolvedArch {
     /// The answer to `input` from the analysis' `outcome` with its `status`; the problem shown
@@ -264,6 +268,7 @@ impl SolvedArch {
             rolling,
             friction: outcome.friction,
             bonded_load_factor: None,
+            studies: Default::default(),
         }
     }
 }
@@ -292,6 +297,12 @@ impl LiveLoadResponse {
                 .input
                 .design
                 .map(|f| super::design::verdict(f, solved.solution.load_factor)),
+            probabilistic: solved
+                .studies
+                .probabilistic
+                .as_ref()
+                .map(|(p, _)| p.clone()),
+            sensitivity: solved.studies.sensitivity.clone(),
             outcome: ArchOutcomeDto::new(solved),
         }
     }
@@ -304,62 +315,6 @@ fn passive(solved: &SolvedArch) -> Option<Vec<PassiveOutDto>> {
         .input
         .has_passive
         .then(|| passive_out(forces, &solved.solution.passive))
-}
-
-/// What to look at before trusting the answer: `rings_locked` where locked rings answer
-/// unbounded, or far above the bonded single ring; `friction_may_overestimate` and
-/// `not_settled` from the friction check.
-fn warnings(solved: &SolvedArch) -> Vec<Warning> {
-    let mut warnings = Vec::new();
-    let advice = "the mortar between real rings shears — give ring_friction_coefficient (and \
-                  ring_interface_limits) for the ring joints";
-    if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
-        warnings.push(Warning::new(
-            WarningCode::RingsLocked,
-            format!(
-                "the rings cannot slip on each other (no ring_friction_coefficient), so their \
-                 staggered joints lock and no finite load forms a mechanism; {advice}"
-            ),
-        ));
-    }
-    let locked = solved.bonded_load_factor.zip(solved.solution.load_factor);
-    if let Some((bonded, lambda)) = locked.filter(|(b, l)| *l > FAR_ABOVE_BONDED * b) {
-        warnings.push(Warning::new(
-            WarningCode::RingsLocked,
-            format!(
-                "λ = {lambda:.6} is {:.2} times the {bonded:.6} of one ring of the whole \
-                 thickness: the rings cannot slip on each other (no \
-                 ring_friction_coefficient), so their staggered joints lock and hinges cannot \
-                 cross them; {advice}",
-                lambda / bonded
-            ),
-        ));
-    }
-    let friction = solved.friction.as_ref();
-    if !solved.input.non_associative && friction.is_some_and(|f| f.associative_may_overestimate()) {
-        let sliding = solved
-            .solution
-            .mechanism
-            .as_ref()
-            .map(|m| m.sliding.clone());
-        warnings.push(
-            Warning::new(
-                WarningCode::FrictionMayOverestimate,
-                "the mechanism slides, and without dilatancy the joints may not hold the \
-                 associative answer's state: λ may be over-estimated (friction: \
-                 non_associative answers without that assumption)",
-            )
-            .interfaces(one_based(&sliding.unwrap_or_default())),
-        );
-    }
-    if solved.status == ArchStatusDto::NotSettled {
-        warnings.push(Warning::new(
-            WarningCode::NotSettled,
-            "the non-associative friction iteration did not settle: no λ it can vouch for \
-             (its steps are in non_associative)",
-        ));
-    }
-    warnings
 }
 
 impl ArchOutcomeDto {
@@ -377,7 +332,7 @@ impl ArchOutcomeDto {
         } else {
             &[]
         };
-        let warnings = warnings(solved);
+        let warnings = super::warnings::warnings(solved);
         Self {
             warnings,
             stable: solution.dead_load_carried,

@@ -14,6 +14,8 @@ use super::rolling::Axles;
 use crate::error::ApiError;
 use crate::pool::Cost;
 use crate::stop::Work;
+use crate::study::run::StudyStop;
+use crate::study::StudyAnswers;
 use crate::AppState;
 
 /// Which of Livesley's two programmes a route asks for.
@@ -28,7 +30,7 @@ pub enum Problem {
 /// The plan of a validated request: the programme (a rolling load's stops for a live load that
 /// rolls: moved out of the input, which keeps the positions; a thousand stops of a long chain's
 /// loads are tens of MB) and the treatment of friction.
-fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
+pub fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
     let programme = match (which, input.rolling.as_mut()) {
         (Problem::DeadLoad, _) => Programme::DeadLoad,
         (Problem::LiveLoad, Some(rolling)) => {
@@ -83,15 +85,32 @@ fn cost(state: &AppState, input: &ArchInput, plan: &ArchPlan) -> Result<Cost, Ap
     Ok(Cost { light, memory })
 }
 
+/// A request's studies, run after its analysis within the same budget (the route builds it:
+/// the studies know how to analyse a sample of their route).
+pub type StudyJob =
+    Box<dyn FnOnce(&Budget) -> Result<StudyAnswers, (&'static str, StudyStop)> + Send>;
+
 /// Analyses the request on the pool within the solve time limit; a stop at the limit becomes
 /// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
 pub async fn solve(
     state: &AppState,
     which: Problem,
+    input: ArchInput,
+) -> Result<SolvedArch, ApiError> {
+    solve_studied(state, which, input, None).await
+}
+
+/// [`solve`], then the request's studies (`job`) within the same budget; a study stopped is
+/// the outcome rule's 422 naming the field that sets its work.
+pub async fn solve_studied(
+    state: &AppState,
+    which: Problem,
     mut input: ArchInput,
+    job: Option<StudyJob>,
 ) -> Result<SolvedArch, ApiError> {
     let plan = plan(which, &mut input);
-    let cost = cost(state, &input, &plan)?;
+    let mut cost = cost(state, &input, &plan)?;
+    cost.light &= job.is_none();
     let problem = input.problem.clone();
     let extra = Extra {
         // With refine_critical: the axles and the stops, to search between them.
@@ -104,10 +123,29 @@ pub async fn solve(
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            run(&problem, &plan, extra, budget)
+            let (outcome, bonded) = run(&problem, &plan, extra, budget)?;
+            let studied = match job {
+                Some(job) if outcome.stop.is_finished() => Some(job(budget)),
+                _ => None,
+            };
+            Ok::<_, ArchError>((outcome, bonded, studied))
         })
         .await?;
-    let (outcome, bonded_load_factor) = ran.value?;
+    let (outcome, bonded_load_factor, studied) = ran.value?;
+    let studies = match studied.transpose() {
+        Ok(answers) => answers.unwrap_or_default(),
+        Err((field, StudyStop::Stopped(stop))) => {
+            let work = Work {
+                field,
+                advice: "use fewer samples or points, or fewer blocks or stops",
+                no_candidate: "",
+            };
+            return Err(state.refuse(stop, work, ran.shared));
+        }
+        Err((field, StudyStop::Sampling(e))) => {
+            return Err(ApiError::invalid(field, e.to_string()))
+        }
+    };
     tracing::info!(
         problem = ?which,
         blocks = outcome.problem.assembly().blocks.len(),
@@ -130,6 +168,7 @@ pub async fn solve(
     };
     let mut solved = SolvedArch::new(input, outcome, status);
     solved.bonded_load_factor = bonded_load_factor;
+    solved.studies = studies;
     Ok(solved)
 }
 

@@ -13,7 +13,7 @@ use super::response::{
 use super::rolling::RollingOutDto;
 use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::report::{table, ReportTable};
 use crate::table::{csv, Csv, Row, Table, TableQuery};
 use crate::AppState;
@@ -61,10 +61,9 @@ pub async fn dead_load_csv(
 pub async fn live_load_csv(
     State(state): State<AppState>,
     Table(table): Table<ArchTableQuery>,
-    ApiJson(request): ApiJson<LiveLoadRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
 ) -> Result<Csv, ApiError> {
-    let input = request.validate(state.solve_time_limit_secs())?;
-    let solved = solve(&state, Problem::LiveLoad, input).await?;
+    let solved = super::study::solve_live(&state, (&request, &body), Default::default()).await?;
     let answer = LiveLoadResponse::new(&solved);
     arch_table(&answer.outcome, answer.rolling.as_ref(), table)
 }

@@ -35,9 +35,10 @@ use std::sync::Arc;
 use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::{IntoResponse, Response};
+use serde_json::Value;
 
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::headers::RequestId;
 use crate::study::run::Tally;
 use crate::svg::Svg;
@@ -114,12 +115,12 @@ pub async fn spencer(
     State(state): State<AppState>,
     headers: HeaderMap,
     RequestId(id): RequestId,
-    ApiJson(request): ApiJson<SpencerRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Result<Response, ApiError> {
     if crate::study::stream::wants_stream(&headers) {
-        return Ok(streamed(state, id, request));
+        return Ok(streamed(state, id, request, body));
     }
-    let solved = solve(&state, &request, Default::default()).await?;
+    let solved = solve(&state, (&request, &body), Default::default()).await?;
     Ok(
         ApiJson(SpencerResponse::new(&solved).with_details(request.include.as_deref()))
             .into_response(),
@@ -146,17 +147,17 @@ pub async fn spencer(
 pub async fn spencer_stream(
     State(state): State<AppState>,
     RequestId(id): RequestId,
-    ApiJson(request): ApiJson<SpencerRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Response {
-    streamed(state, id, request)
+    streamed(state, id, request, body)
 }
 
 /// The answer to `request` streamed after its progress lines.
-fn streamed(state: AppState, id: String, request: SpencerRequest) -> Response {
+fn streamed(state: AppState, id: String, request: SpencerRequest, body: Value) -> Response {
     let tally = Arc::new(Tally::default());
     let counted = tally.clone();
     crate::study::stream::ndjson(tally, id, async move {
-        let solved = solve(&state, &request, counted).await?;
+        let solved = solve(&state, (&request, &body), counted).await?;
         let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
         serde_json::to_vec(&answer).map_err(|e| ApiError::Internal(e.to_string()))
     })
@@ -178,8 +179,8 @@ fn streamed(state: AppState, id: String, request: SpencerRequest) -> Response {
 )]
 pub async fn spencer_svg(
     State(state): State<AppState>,
-    ApiJson(request): ApiJson<SpencerRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Result<Svg, ApiError> {
-    let solved = solve(&state, &request, Default::default()).await?;
+    let solved = solve(&state, (&request, &body), Default::default()).await?;
     Ok(Svg(drawing::draw(&solved, drawing::title(&solved))))
 }

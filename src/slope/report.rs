@@ -7,7 +7,7 @@ use super::request::SpencerRequest;
 use super::response::SpencerResponse;
 use super::solve::solve;
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::ApiJsonWithBody;
 use crate::headers::RequestId;
 use crate::report::{table, without_nulls, Report};
 use crate::AppState;
@@ -32,9 +32,9 @@ use axum::response::Html;
 pub async fn spencer_report(
     State(state): State<AppState>,
     RequestId(request_id): RequestId,
-    ApiJson(request): ApiJson<SpencerRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Result<Html<String>, ApiError> {
-    let solved = solve(&state, &request, Default::default()).await?;
+    let solved = solve(&state, (&request, &body), Default::default()).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
     let title = drawing::title(&solved);
     let headline = match (answer.factor_of_safety, answer.theta_deg) {

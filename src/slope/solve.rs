@@ -22,12 +22,12 @@ use crate::AppState;
 /// [`AppState::refuse`]). `tally` counts the studies' analyses as they finish.
 pub async fn solve(
     state: &AppState,
-    request: &SpencerRequest,
+    (request, body): (&SpencerRequest, &serde_json::Value),
     tally: Arc<Tally>,
 ) -> Result<SolvedSlope, ApiError> {
     let plan = request.validate()?;
-    let studies = study::plan(request)?;
-    tally.expect(studies.as_ref().map_or(0, study::analyses));
+    let studies = study::plan(request, body)?;
+    tally.expect(studies.as_ref().map_or(0, crate::study::analyses));
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
     let by_accuracy = plan.relative_error.is_some();
     // One surface at a stated slice count is milliseconds; searches and accuracy targets run

@@ -11,7 +11,7 @@ pub struct SolvedSlope {
     /// What the analysis answered.
     pub answer: SlopeAnswer,
     /// What the request's studies answered (nothing without studies).
-    pub studies: super::study::StudyAnswers,
+    pub studies: crate::study::StudyAnswers,
     /// Wall time of the whole solve in milliseconds.
     pub solve_time_ms: f64,
 }

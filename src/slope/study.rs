@@ -15,113 +15,38 @@ use thrustline_solver::slope::Sliced;
 
 use super::request::SpencerRequest;
 use crate::error::ApiError;
-use crate::study::plan::{self, ProbabilisticPlan, SensitivityPlan};
-use crate::study::response::{ProbabilisticOutDto, SensitivityOutDto};
 use crate::study::run::{Sampled, StudyStop, Tally};
+use crate::study::{Study, StudyAnswers};
 
-/// The studies a Spencer request asks for, checked.
-#[derive(Debug, Clone)]
-pub struct SlopeStudy {
-    /// The request as JSON without its studies and what samples do not report.
-    pub base: Value,
-    /// The probabilistic study.
-    pub probabilistic: Option<ProbabilisticPlan>,
-    /// The sensitivity study.
-    pub sensitivity: Option<SensitivityPlan>,
-}
-
-/// What a request's studies answered.
-#[derive(Debug, Clone, Default)]
-pub struct StudyAnswers {
-    /// The probabilistic study, and the first refusal of a sample's values if any.
-    pub probabilistic: Option<(ProbabilisticOutDto, Option<String>)>,
-    /// The sensitivity study.
-    pub sensitivity: Option<SensitivityOutDto>,
-}
-
-/// The request's studies, checked against it (None without any).
-pub fn plan(request: &SpencerRequest) -> Result<Option<SlopeStudy>, ApiError> {
-    if request.probabilistic.is_none() && request.sensitivity.is_none() {
-        return Ok(None);
-    }
-    let mut base = serde_json::to_value(request)
-        .map_err(|e| ApiError::Internal(format!("the request as JSON: {e}")))?;
-    if let Some(object) = base.as_object_mut() {
-        for key in [
+/// The request's studies, checked against its `body` as sent (None without any).
+pub fn plan(request: &SpencerRequest, body: &Value) -> Result<Option<Study>, ApiError> {
+    if request.probabilistic.is_some() && request.design.is_some() {
+        return Err(ApiError::invalid(
             "probabilistic",
-            "sensitivity",
-            "include",
-            "methods",
-            "curves",
-        ] {
-            object.remove(key);
-        }
+            "samples characteristic values: leave out design (partial factors and a \
+             probability of failure answer the same question twice)",
+        ));
     }
-    let probabilistic = match &request.probabilistic {
-        Some(_) if request.design.is_some() => {
-            return Err(ApiError::invalid(
-                "probabilistic",
-                "samples characteristic values: leave out design (partial factors and a \
-                 probability of failure answer the same question twice)",
-            ))
-        }
-        Some(dto) => Some(plan::probabilistic::<SpencerRequest>(dto, &base)?),
-        None => None,
-    };
-    let sensitivity = request
-        .sensitivity
-        .as_ref()
-        .map(|dto| plan::sensitivity::<SpencerRequest>(dto, &base))
-        .transpose()?;
-    Ok(Some(SlopeStudy {
-        base,
-        probabilistic,
-        sensitivity,
-    }))
+    crate::study::plan::<SpencerRequest>(
+        body,
+        (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
+        &["include", "methods", "curves"],
+    )
 }
 
-/// Analyses the studies will run.
-pub fn analyses(study: &SlopeStudy) -> usize {
-    let samples = study.probabilistic.as_ref().map_or(0, |p| p.samples);
-    let points = study
-        .sensitivity
-        .as_ref()
-        .map_or(0, |s| s.variables.iter().map(|(_, v)| v.len()).sum());
-    samples + points
-}
-
-/// Runs the studies around `answer` (the deterministic one) within `budget`; a study that did
-/// not finish is the field that sets its work, and why.
+/// Runs the studies around `answer` (the deterministic one) within `budget`.
 pub fn run(
-    study: &SlopeStudy,
+    study: &Study,
     answer: &SlopeAnswer,
     budget: &Budget,
     tally: &Tally,
 ) -> Result<StudyAnswers, (&'static str, StudyStop)> {
-    let progress = |_: usize, _: usize| tally.count();
-    let probabilistic = match &study.probabilistic {
-        Some(p) => {
-            let base = match p.fixed {
-                true => with_fixed_surface(&study.base, answer),
-                false => study.base.clone(),
-            };
-            let out = crate::study::run::probabilistic(p, &base, evaluate, budget, &progress)
-                .map_err(|stop| ("probabilistic.samples", stop))?;
-            Some(out)
-        }
-        None => None,
+    let fixed = study.probabilistic.as_ref().is_some_and(|p| p.fixed);
+    let sampled = match fixed {
+        true => with_fixed_surface(&study.base, answer),
+        false => study.base.clone(),
     };
-    let sensitivity = match &study.sensitivity {
-        Some(s) => Some(
-            crate::study::run::sensitivity(s, &study.base, evaluate, budget, &progress)
-                .map_err(|stop| ("sensitivity.variables", StudyStop::Stopped(stop)))?,
-        ),
-        None => None,
-    };
-    Ok(StudyAnswers {
-        probabilistic,
-        sensitivity,
-    })
+    crate::study::run(study, &sampled, evaluate, budget, tally)
 }
 
 /// `base` with the deterministic answer's surface fixed: the circle or polyline answered, at

@@ -11,7 +11,7 @@ use super::response::{
 };
 use super::solve::solve;
 use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::extract::ApiJsonWithBody;
 use crate::table::{csv, Csv, Row, Table, TableQuery};
 use crate::AppState;
 
@@ -34,9 +34,9 @@ use crate::AppState;
 pub async fn spencer_csv(
     State(state): State<AppState>,
     Table(table): Table<SlopeTableQuery>,
-    ApiJson(request): ApiJson<SpencerRequest>,
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Result<Csv, ApiError> {
-    let solved = solve(&state, &request, Default::default()).await?;
+    let solved = solve(&state, (&request, &body), Default::default()).await?;
     let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
     slope_table(&answer, table)
 }

@@ -12,8 +12,111 @@ pub mod response;
 pub mod run;
 pub mod stream;
 
+use serde::de::DeserializeOwned;
+use serde_json::Value;
+use thrustline_solver::budget::Budget;
+
+use crate::error::ApiError;
 use crate::warning::{Warning, WarningCode};
+use plan::{ProbabilisticPlan, SensitivityPlan};
+use request::{ProbabilisticDto, SensitivityDto};
 use response::{ProbabilisticOutDto, SensitivityOutDto};
+use run::{Sampled, StudyStop, Tally};
+
+/// The studies a request asks for, checked.
+#[derive(Debug, Clone)]
+pub struct Study {
+    /// The request as JSON without its studies and what samples do not report.
+    pub base: Value,
+    /// The probabilistic study.
+    pub probabilistic: Option<ProbabilisticPlan>,
+    /// The sensitivity study.
+    pub sensitivity: Option<SensitivityPlan>,
+}
+
+/// What a request's studies answered.
+#[derive(Debug, Clone, Default)]
+pub struct StudyAnswers {
+    /// The probabilistic study, and the first refusal of a sample's values if any.
+    pub probabilistic: Option<(ProbabilisticOutDto, Option<String>)>,
+    /// The sensitivity study.
+    pub sensitivity: Option<SensitivityOutDto>,
+}
+
+/// The studies of a request of the route's type `R`, checked against `body` (the request as the
+/// client wrote it); None without any. `unsampled` are the request's keys samples leave out
+/// (what only the deterministic answer reports).
+pub fn plan<R: DeserializeOwned>(
+    body: &Value,
+    studies: (Option<&ProbabilisticDto>, Option<&SensitivityDto>),
+    unsampled: &[&str],
+) -> Result<Option<Study>, ApiError> {
+    let (probabilistic, sensitivity) = studies;
+    if probabilistic.is_none() && sensitivity.is_none() {
+        return Ok(None);
+    }
+    let mut base = body.clone();
+    if let Some(object) = base.as_object_mut() {
+        for key in ["probabilistic", "sensitivity"].iter().chain(unsampled) {
+            object.remove(*key);
+        }
+    }
+    let probabilistic = probabilistic
+        .map(|dto| plan::probabilistic::<R>(dto, &base))
+        .transpose()?;
+    let sensitivity = sensitivity
+        .map(|dto| plan::sensitivity::<R>(dto, &base))
+        .transpose()?;
+    Ok(Some(Study {
+        base,
+        probabilistic,
+        sensitivity,
+    }))
+}
+
+/// Analyses the studies will run.
+pub fn analyses(study: &Study) -> usize {
+    let samples = study.probabilistic.as_ref().map_or(0, |p| p.samples);
+    let points = study
+        .sensitivity
+        .as_ref()
+        .map_or(0, |s| s.variables.iter().map(|(_, v)| v.len()).sum());
+    samples + points
+}
+
+/// Runs the studies within `budget`, each sample analysed by `evaluate`; the probabilistic
+/// samples start from `sampled` (the base, its surface fixed where the plan says). A study that
+/// did not finish is the field that sets its work, and why.
+pub fn run<E>(
+    study: &Study,
+    sampled: &Value,
+    evaluate: E,
+    budget: &Budget,
+    tally: &Tally,
+) -> Result<StudyAnswers, (&'static str, StudyStop)>
+where
+    E: Fn(Value, &Budget) -> Sampled + Sync,
+{
+    let progress = |_: usize, _: usize| tally.count();
+    let probabilistic = match &study.probabilistic {
+        Some(p) => Some(
+            run::probabilistic(p, sampled, &evaluate, budget, &progress)
+                .map_err(|stop| ("probabilistic.samples", stop))?,
+        ),
+        None => None,
+    };
+    let sensitivity = match &study.sensitivity {
+        Some(s) => Some(
+            run::sensitivity(s, &study.base, &evaluate, budget, &progress)
+                .map_err(|stop| ("sensitivity.variables", StudyStop::Stopped(stop)))?,
+        ),
+        None => None,
+    };
+    Ok(StudyAnswers {
+        probabilistic,
+        sensitivity,
+    })
+}
 
 /// What a study's answer asks the engineer to look at: samples or values without an answer,
 /// and values the route refuses (with the first refusal's words).
@@ -27,9 +130,9 @@ pub fn warnings(
             out.push(Warning::new(
                 WarningCode::SamplesUnsolved,
                 format!(
-                    "{} of {} samples have no answer (no root, strengths not settled, or no \
-                     candidate surface): they are neither safe nor failed, and the probability \
-                     of failure is of the {} answered",
+                    "{} of {} samples have no answer (the analysis' status says why when each \
+                     is sent alone): they are neither safe nor failed, and the probability of \
+                     failure is of the {} answered",
                     p.unsolved,
                     p.samples,
                     p.samples - p.unsolved - p.refused

@@ -1,0 +1,97 @@
+//! Studies on the live-load route (model §9.2–9.3): how a sample of the request is analysed.
+//!
+//! A sample is the request as JSON with the study's values written in, read and validated as a
+//! request and analysed as the route's plan says (a rolling load at every stop; the critical
+//! position's refinement is the deterministic answer's alone). Its answer is λ; an arch whose
+//! dead load is not carried fails without any live load (λ = 0), and one that no finite live
+//! load collapses has no λ (counted unsolved, neither safe nor failed).
+
+use std::sync::Arc;
+
+use serde_json::Value;
+use thrustline_solver::arch::analysis::{analyse, ArchStatus};
+use thrustline_solver::arch::LimitStatus;
+use thrustline_solver::budget::Budget;
+
+use super::request::LiveLoadRequest;
+use super::response::SolvedArch;
+use super::solve::{plan as route_plan, solve_studied, Problem, StudyJob};
+use crate::error::ApiError;
+use crate::study::request::StudySurfaceDto;
+use crate::study::run::{Sampled, Tally};
+use crate::study::Study;
+use crate::AppState;
+
+/// Validates a live-load request and its studies, and solves both on the pool within one
+/// budget; `tally` counts the studies' analyses as they finish.
+pub async fn solve_live(
+    state: &AppState,
+    (request, body): (&LiveLoadRequest, &Value),
+    tally: Arc<Tally>,
+) -> Result<SolvedArch, ApiError> {
+    let secs = state.solve_time_limit_secs();
+    let input = request.validate(secs)?;
+    let job = plan(request, body)?.map(|study| {
+        tally.expect(crate::study::analyses(&study));
+        job(study, secs, tally)
+    });
+    solve_studied(state, Problem::LiveLoad, input, job).await
+}
+
+/// The request's studies, checked against its `body` as sent (None without any).
+pub fn plan(request: &LiveLoadRequest, body: &Value) -> Result<Option<Study>, ApiError> {
+    if let Some(p) = &request.probabilistic {
+        if p.surface == Some(StudySurfaceDto::Search) {
+            return Err(ApiError::invalid(
+                "probabilistic.surface",
+                "an arch has no surface to search: leave it out (each sample is analysed under \
+                 the stated loads)",
+            ));
+        }
+        if request.design.is_some() {
+            return Err(ApiError::invalid(
+                "probabilistic",
+                "samples characteristic values: leave out design (partial factors and a \
+                 probability of failure answer the same question twice)",
+            ));
+        }
+    }
+    crate::study::plan::<LiveLoadRequest>(
+        body,
+        (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
+        &["include"],
+    )
+}
+
+/// The studies as the job the route's solve runs after its analysis.
+fn job(study: Study, time_limit_secs: f64, tally: Arc<Tally>) -> StudyJob {
+    Box::new(move |budget: &Budget| {
+        let evaluate = |request: Value, budget: &Budget| evaluate(request, budget, time_limit_secs);
+        crate::study::run(&study, &study.base, evaluate, budget, &tally)
+    })
+}
+
+/// One sample: `request` read, validated and analysed; its λ.
+pub fn evaluate(request: Value, budget: &Budget, time_limit_secs: f64) -> Sampled {
+    let typed: LiveLoadRequest = match serde_json::from_value(request) {
+        Ok(typed) => typed,
+        Err(e) => return Sampled::Refused(e.to_string()),
+    };
+    let mut input = match typed.validate(time_limit_secs) {
+        Ok(input) => input,
+        Err(e) => return Sampled::Refused(e.to_string()),
+    };
+    let plan = route_plan(Problem::LiveLoad, &mut input);
+    match analyse(&input.problem, &plan, budget) {
+        Ok(outcome) if outcome.stop.is_finished() => match outcome.status {
+            ArchStatus::Limit(LimitStatus::Solved) => outcome
+                .solution
+                .load_factor
+                .map_or(Sampled::Unsolved, Sampled::Solved),
+            ArchStatus::Limit(LimitStatus::DeadLoadNotCarried) => Sampled::Solved(0.0),
+            _ => Sampled::Unsolved,
+        },
+        Ok(_) => Sampled::Unsolved,
+        Err(e) => Sampled::Refused(e.to_string()),
+    }
+}
