@@ -7,6 +7,7 @@ use std::fmt::Write;
 
 mod labels;
 mod numbers;
+pub mod study;
 
 pub use numbers::{escape, heat};
 use numbers::{nice_step, tick};

@@ -182,5 +182,6 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     if let Some(curve) = &solved.rolling {
         rolling::rolling_curve(&mut canvas, curve);
     }
+    crate::svg::study::panels(&mut canvas, &solved.studies, "λ");
     canvas.finish(title)
 }

@@ -249,6 +249,7 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     if let Some(verdict) = &solved.design {
         canvas.key(&design_caption(verdict), "#37474f", 11.0, true);
     }
+    crate::svg::study::panels(&mut canvas, &solved.studies, "F");
     canvas.finish(title)
 }
 
