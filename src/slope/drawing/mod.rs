@@ -221,21 +221,8 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     );
     thrust::surface(&mut canvas, &scene, solved, size, &mut legend);
     let supports = supports::supports(&mut canvas, &solved.problem, size);
-    let caption = match (solution.factor_of_safety, solution.theta_rad) {
-        (Some(f), Some(theta)) => {
-            let bishop = solution
-                .bishop_factor_of_safety
-                .filter(|b| b.is_finite())
-                .map_or(String::new(), |b| format!("; Bishop {b:.4}"));
-            format!(
-                "F = {f:.4}, θ = {:.2}° (Spencer){bishop}",
-                theta.to_degrees()
-            )
-        }
-        _ => "no solution for this slip surface".to_owned(),
-    };
     canvas.key(
-        &format!("— line of thrust. {caption}"),
+        &format!("— line of thrust. {}", caption(solution)),
         "#c62828",
         12.0,
         true,
@@ -251,6 +238,23 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
     }
     crate::svg::study::panels(&mut canvas, &solved.studies, "F");
     canvas.finish(title)
+}
+
+/// F and θ in the key, Bishop's F beside.
+fn caption(solution: &thrustline_solver::slope::SpencerSolution) -> String {
+    match (solution.factor_of_safety, solution.theta_rad) {
+        (Some(f), Some(theta)) => {
+            let bishop = solution
+                .bishop_factor_of_safety
+                .filter(|b| b.is_finite())
+                .map_or(String::new(), |b| format!("; Bishop {b:.4}"));
+            format!(
+                "F = {f:.4}, θ = {:.2}° (Spencer){bishop}",
+                theta.to_degrees()
+            )
+        }
+        _ => "no solution for this slip surface".to_owned(),
+    }
 }
 
 /// A design check in the key: the approach, its factors, the over-design factor.
