@@ -572,6 +572,21 @@ async fn a_streamed_study_reports_progress_then_the_answer() {
         assert_eq!(strip(last), strip(&plain), "{path}");
         assert_eq!(last["factor_of_safety"], plain["factor_of_safety"]);
     }
+    // A request the route refuses is its 422, not a line of a stream.
+    let mut bad = body.clone();
+    bad["probabilistic"]["samples"] = json!(0);
+    for path in ["/slope/spencer/stream", "/slope/spencer"] {
+        let response = server
+            .client
+            .post(format!("{}{path}", server.base))
+            .header("accept", "application/x-ndjson")
+            .json(&bad)
+            .send()
+            .await
+            .unwrap();
+        assert_eq!(response.status(), 422, "{path}");
+        assert_eq!(Server::content_type(&response), "application/problem+json");
+    }
     // A study stopped at the time limit: its problem is the last line.
     let server = Server::start_with(thrustline::Settings {
         solve_timeout: std::time::Duration::from_millis(300),

@@ -140,7 +140,7 @@ pub async fn live_load(
     ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
 ) -> Result<Response, ApiError> {
     if crate::study::stream::wants_stream(&headers) {
-        return Ok(live_load_streamed(state, id, request, body));
+        return live_load_streamed(state, id, request, body);
     }
     let solved = study::solve_live(&state, (&request, &body), Default::default()).await?;
     Ok(ApiJson(LiveLoadResponse::new(&solved)).into_response())
@@ -158,7 +158,7 @@ pub async fn live_load(
     tag = "arch",
     request_body = LiveLoadRequest,
     responses(
-        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = String, content_type = "application/x-ndjson"),
+        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = response::LiveLoadStreamLine, content_type = "application/x-ndjson"),
         ProblemResponses,
     )
 )]
@@ -166,24 +166,26 @@ pub async fn live_load_stream(
     State(state): State<AppState>,
     RequestId(id): RequestId,
     ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
-) -> Response {
+) -> Result<Response, ApiError> {
     live_load_streamed(state, id, request, body)
 }
 
-/// The answer to `request` streamed after its progress lines.
+/// The answer to `request` streamed after its progress lines; the input is checked first, so
+/// a request the route refuses is its 4xx, not a line.
 fn live_load_streamed(
     state: AppState,
     id: String,
     request: LiveLoadRequest,
     body: Value,
-) -> Response {
+) -> Result<Response, ApiError> {
+    let prepared = study::prepare_live(&state, (&request, &body))?;
     let tally = Arc::new(Tally::default());
     let counted = tally.clone();
-    crate::study::stream::ndjson(tally, id, async move {
-        let solved = study::solve_live(&state, (&request, &body), counted).await?;
+    Ok(crate::study::stream::ndjson(tally, id, async move {
+        let solved = study::run_live(&state, prepared, counted).await?;
         serde_json::to_vec(&LiveLoadResponse::new(&solved))
             .map_err(|e| ApiError::Internal(e.to_string()))
-    })
+    }))
 }
 
 /// Live-load limit analysis drawn: voussoirs, loads, thrust line, hinges, mechanism.

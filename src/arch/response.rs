@@ -400,3 +400,15 @@ impl ArchOutcomeDto {
         }
     }
 }
+
+/// A line of `/arch/live-load/stream`: progress, then the answer or its problem.
+#[derive(Debug, Serialize, ToSchema)]
+#[serde(untagged)]
+pub enum LiveLoadStreamLine {
+    /// How far the studies have come.
+    Progress(crate::study::stream::ProgressLine),
+    /// The answer, the last line.
+    Answer(Box<LiveLoadResponse>),
+    /// The problem of a study stopped after the stream began, the last line.
+    Problem(crate::error::Problem),
+}

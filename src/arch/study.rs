@@ -13,6 +13,7 @@ use thrustline_solver::arch::analysis::{analyse, ArchStatus};
 use thrustline_solver::arch::LimitStatus;
 use thrustline_solver::budget::Budget;
 
+use super::input::ArchInput;
 use super::request::LiveLoadRequest;
 use super::response::SolvedArch;
 use super::solve::{plan as route_plan, solve_studied, Problem, StudyJob};
@@ -22,16 +23,45 @@ use crate::study::run::{Sampled, Tally};
 use crate::study::Study;
 use crate::AppState;
 
-/// Validates a live-load request and its studies, and solves both on the pool within one
-/// budget; `tally` counts the studies' analyses as they finish.
-pub async fn solve_live(
+/// A live-load request read into what runs: its input and its studies.
+pub struct PreparedLive {
+    input: ArchInput,
+    study: Option<Study>,
+    secs: f64,
+}
+
+/// Validates a live-load request and its studies (its `body` as sent): every 4xx of the input.
+pub fn prepare_live(
     state: &AppState,
     (request, body): (&LiveLoadRequest, &Value),
+) -> Result<PreparedLive, ApiError> {
+    let secs = state.solve_time_limit_secs();
+    Ok(PreparedLive {
+        input: request.validate(secs)?,
+        study: plan(request, body)?,
+        secs,
+    })
+}
+
+/// Validates a live-load request and its studies, and solves both on the pool within one
+/// budget ([`prepare_live`], [`run_live`]).
+pub async fn solve_live(
+    state: &AppState,
+    request: (&LiveLoadRequest, &Value),
     tally: Arc<Tally>,
 ) -> Result<SolvedArch, ApiError> {
-    let secs = state.solve_time_limit_secs();
-    let input = request.validate(secs)?;
-    let job = plan(request, body)?.map(|study| {
+    run_live(state, prepare_live(state, request)?, tally).await
+}
+
+/// Solves a prepared request and its studies on the pool within one budget; `tally` counts the
+/// studies' analyses as they finish.
+pub async fn run_live(
+    state: &AppState,
+    prepared: PreparedLive,
+    tally: Arc<Tally>,
+) -> Result<SolvedArch, ApiError> {
+    let PreparedLive { input, study, secs } = prepared;
+    let job = study.map(|study| {
         tally.expect(crate::study::analyses(&study));
         job(study, secs, tally)
     });

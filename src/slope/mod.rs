@@ -118,7 +118,7 @@ pub async fn spencer(
     ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
 ) -> Result<Response, ApiError> {
     if crate::study::stream::wants_stream(&headers) {
-        return Ok(streamed(state, id, request, body));
+        return streamed(state, id, request, body);
     }
     let solved = solve(&state, (&request, &body), Default::default()).await?;
     Ok(
@@ -140,7 +140,7 @@ pub async fn spencer(
     tag = "slope",
     request_body = SpencerRequest,
     responses(
-        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = String, content_type = "application/x-ndjson"),
+        (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = response::SpencerStreamLine, content_type = "application/x-ndjson"),
         ProblemResponses,
     )
 )]
@@ -148,19 +148,26 @@ pub async fn spencer_stream(
     State(state): State<AppState>,
     RequestId(id): RequestId,
     ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
-) -> Response {
+) -> Result<Response, ApiError> {
     streamed(state, id, request, body)
 }
 
-/// The answer to `request` streamed after its progress lines.
-fn streamed(state: AppState, id: String, request: SpencerRequest, body: Value) -> Response {
+/// The answer to `request` streamed after its progress lines; the input is checked first, so
+/// a request the route refuses is its 4xx, not a line.
+fn streamed(
+    state: AppState,
+    id: String,
+    request: SpencerRequest,
+    body: Value,
+) -> Result<Response, ApiError> {
+    let prepared = solve::prepare(&request, &body)?;
     let tally = Arc::new(Tally::default());
     let counted = tally.clone();
-    crate::study::stream::ndjson(tally, id, async move {
-        let solved = solve(&state, (&request, &body), counted).await?;
+    Ok(crate::study::stream::ndjson(tally, id, async move {
+        let solved = solve::run(&state, prepared, counted).await?;
         let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
         serde_json::to_vec(&answer).map_err(|e| ApiError::Internal(e.to_string()))
-    })
+    }))
 }
 
 /// Spencer's method drawn: embankment, slip circle and centre, slices, line of thrust, and

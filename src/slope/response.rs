@@ -369,3 +369,15 @@ fn search_out(search: &SearchReport) -> SearchOutDto {
         path_ms: search.path_ms.clone(),
     }
 }
+
+/// A line of `/slope/spencer/stream`: progress, then the answer or its problem.
+#[derive(Debug, Serialize, ToSchema)]
+#[serde(untagged)]
+pub enum SpencerStreamLine {
+    /// How far the studies have come.
+    Progress(crate::study::stream::ProgressLine),
+    /// The answer, the last line.
+    Answer(Box<SpencerResponse>),
+    /// The problem of a study stopped after the stream began, the last line.
+    Problem(crate::error::Problem),
+}

@@ -2,7 +2,7 @@
 //! request's budget → the solved slope every answer (JSON, CSV, SVG, report) is built from; a
 //! stage that stopped without an answer becomes the 422 naming the field that sets its work.
 
-use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopeStage, Target};
+use thrustline_solver::slope::analysis::{analyse, SlopeOutcome, SlopePlan, SlopeStage, Target};
 use thrustline_solver::slope::Sliced;
 
 use std::sync::Arc;
@@ -16,17 +16,38 @@ use crate::stop::Work;
 use crate::study::run::{StudyStop, Tally};
 use crate::AppState;
 
-/// Validates the request and analyses it on the pool within the solve time limit, then its
-/// studies within the same budget; a stage that stopped without an answer becomes the outcome
-/// rule's 422 naming the field that sets the work (503 when other solves ran beside it,
-/// [`AppState::refuse`]). `tally` counts the studies' analyses as they finish.
+/// A request read into what runs: the analysis' plan and its studies.
+pub struct Prepared {
+    plan: SlopePlan,
+    studies: Option<crate::study::Study>,
+}
+
+/// Validates the request and its studies (its `body` as sent): every 4xx of the input.
+pub fn prepare(request: &SpencerRequest, body: &serde_json::Value) -> Result<Prepared, ApiError> {
+    Ok(Prepared {
+        plan: request.validate()?,
+        studies: study::plan(request, body)?,
+    })
+}
+
+/// Validates the request and analyses it ([`prepare`], [`run`]).
 pub async fn solve(
     state: &AppState,
     (request, body): (&SpencerRequest, &serde_json::Value),
     tally: Arc<Tally>,
 ) -> Result<SolvedSlope, ApiError> {
-    let plan = request.validate()?;
-    let studies = study::plan(request, body)?;
+    run(state, prepare(request, body)?, tally).await
+}
+
+/// Analyses the plan on the pool within the solve time limit, then its studies within the same
+/// budget; a stage that stopped without an answer becomes the outcome rule's 422 naming the
+/// field that sets the work (503 when other solves ran beside it, [`AppState::refuse`]).
+/// `tally` counts the studies' analyses as they finish.
+pub async fn run(
+    state: &AppState,
+    Prepared { plan, studies }: Prepared,
+    tally: Arc<Tally>,
+) -> Result<SolvedSlope, ApiError> {
     tally.expect(studies.as_ref().map_or(0, crate::study::analyses));
     let is_simple_search = matches!(plan.target, Target::SimpleSearch { .. });
     let by_accuracy = plan.relative_error.is_some();

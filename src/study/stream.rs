@@ -13,11 +13,29 @@ use axum::body::{Body, Bytes};
 use axum::http::{header, HeaderMap, HeaderValue};
 use axum::response::{IntoResponse, Response};
 use futures_util::stream;
+use serde::Serialize;
 use serde_json::json;
+use utoipa::ToSchema;
 
 use super::run::Tally;
 use crate::batch::NDJSON;
 use crate::error::ApiError;
+
+/// A progress line.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct ProgressLine {
+    /// The analyses done of all.
+    pub progress: ProgressDto,
+}
+
+/// The analyses of a request's studies done of all.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct ProgressDto {
+    /// Analyses done.
+    pub done: usize,
+    /// Analyses in all.
+    pub of: usize,
+}
 
 /// The least time between two progress lines.
 pub const PROGRESS_INTERVAL: Duration = Duration::from_millis(100);
@@ -84,7 +102,7 @@ where
                     let now = s.tally.read();
                     if now != s.last && now.1 > 0 {
                         s.last = now;
-                        let line = json!({"progress": {"done": now.0, "of": now.1}});
+                        let line = json!(ProgressLine { progress: ProgressDto { done: now.0, of: now.1 } });
                         return Some((Ok(Bytes::from(format!("{line}\n"))), s));
                     }
                 }
