@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
-# loads the page from a running release server; the page solves its seven examples on load
+# loads the page from a running release server; the page solves its eight examples on load
 # (Milankovitch's dead load, a live load, the minimum thickness, a bridge with fill, passive
-# restraint and rolling axles, Spencer's circle, the critical circle, a layered section). The
-# test reads the rendered DOM for the numbers and the seven drawings, and keeps a screenshot in
+# restraint and rolling axles, Spencer's circle, the critical circle, a probabilistic study streamed
+# with its progress bar, a layered section). The
+# test reads the rendered DOM for the numbers and the eight drawings, and keeps a screenshot in
 # target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed)
 set -euo pipefail
@@ -25,9 +26,11 @@ for _ in $(seq 50); do
     curl -fsS "http://127.0.0.1:$port/healthz" > /dev/null 2>&1 && break
     sleep 0.2
 done
+# Virtual time runs on while a streamed body is read (the study panel's progress lines): a
+# budget of 600 s of it is still about a second of real time, and lets the stream end.
 flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run
        --disable-background-networking --disable-component-update --disable-sync
-       --user-data-dir="$profile" --virtual-time-budget=60000)
+       --user-data-dir="$profile" --virtual-time-budget=600000)
 url="http://127.0.0.1:$port/"
 dom=$(timeout 180 chromium "${flags[@]}" --dump-dom "$url" 2> /dev/null)
 mkdir -p target/ci-artifacts
@@ -55,11 +58,15 @@ expect "solver: solved, assembly, 37 stops"
 expect "thickness_to_radius: 0.1074"
 expect "search: 1053 circles, 0 unsolved"
 expect "factor_of_safety: 1.01457"
+# The study panel (issue 43): streamed through /slope/spencer/stream, the bar full at the end.
+expect "probability_of_failure: 0.3785 ±"
+expect 'max="2000"'
+expect 'data-done="2000"'
 drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer"[^>]*src="blob:' <<< "$dom" || true) | wc -l)
-if [ "$drawings" -eq 7 ]; then echo "ok: seven drawings"; else echo "FAILED: $drawings drawings, expected 7" >&2; failures=$((failures + 1)); fi
+if [ "$drawings" -eq 8 ]; then echo "ok: eight drawings"; else echo "FAILED: $drawings drawings, expected 8" >&2; failures=$((failures + 1)); fi
 # Each drawing decoded: its onload recorded a non-zero naturalWidth (a broken SVG stays at 0).
 decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
-if [ "$decoded" -eq 7 ]; then echo "ok: seven drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 7" >&2; failures=$((failures + 1)); fi
+if [ "$decoded" -eq 8 ]; then echo "ok: eight drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 8" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
 
 # The calculation reports (SPEC §11): each route's report of an example renders (its headline in
@@ -102,6 +109,10 @@ report_check live-load /arch/live-load/report \
 report_check reinforced /slope/spencer/report \
     '{"section": {"ground": [[0, 0], [10, 0], [20, 10], [40, 10]], "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 5, "friction_angle_deg": 30}}], "supports": [{"kind": "soil_nail", "head": [15, 5], "end": [26.6, 1.9], "spacing": 1.5, "tensile_capacity": 150, "plate_capacity": 50, "bond_strength": 20, "application": "active"}]}, "surface": [[10, 0], [27.3205, 10]], "slices": 40, "design": {"approach": "DA1-2"}}' \
     "F = 1.2420, θ = 31.59°"
-passed=$((24 - failures))
+# A probabilistic and sensitivity study: its histogram and plots are drawn in the report.
+report_check study /slope/spencer/report \
+    '{"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50, "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}, "probabilistic": {"samples": 2000, "sampling": "latin_hypercube", "seed": 7, "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1.0, "min": 0}, {"field": "soil.friction_angle_deg", "distribution": "lognormal", "std": 2}], "correlations": [{"fields": ["soil.cohesion", "soil.friction_angle_deg"], "coefficient": -0.5}]}, "sensitivity": {"variables": [{"field": "soil.cohesion", "from": 3, "to": 9, "points": 7}]}}' \
+    "probability of failure 0.3785 ± 0.0108"
+passed=$((30 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]
