@@ -9,8 +9,8 @@ mod labels;
 mod numbers;
 pub mod study;
 
-pub use numbers::{escape, heat};
-use numbers::{nice_step, tick};
+use numbers::nice_step;
+pub use numbers::{escape, heat, tick};
 
 pub use labels::Labels;
 
@@ -51,6 +51,8 @@ pub struct Canvas {
     key: Vec<(String, String, f64, bool)>,
     /// Arrowheads in colours of their own ([`Canvas::arrow_in`]), as `#rrggbb`.
     heads: std::collections::BTreeSet<String>,
+    /// The x of the axes' ticks, for a band under the picture to share them.
+    x_ticks: Vec<f64>,
 }
 
 /// Baseline of the key's first line, and the distance between its lines (pixels).
@@ -96,6 +98,7 @@ impl Canvas {
             scale_bar: String::new(),
             key: Vec::new(),
             heads: std::collections::BTreeSet::new(),
+            x_ticks: Vec::new(),
         };
         let (a, b) = (canvas.px((x0, y1)), canvas.px((x1, y0)));
         canvas.plot = [a.0, a.1, b.0, b.1];
@@ -126,6 +129,12 @@ impl Canvas {
             WIDTH - 4.0,
             self.height - MARGIN - 2.0,
         ]
+    }
+
+    /// The x of the axes' ticks and the left and right ends of the plot in pixels: a band under
+    /// the picture on the same x axis.
+    pub fn x_axis(&self) -> (&[f64], f64, f64) {
+        (&self.x_ticks, self.plot[0], self.plot[2])
     }
 
     /// A length of the section in pixels.
@@ -306,6 +315,7 @@ impl Canvas {
         let (left, bottom) = (x0, y0);
         let mut x = (x0 / step).ceil() * step;
         while x <= x1 {
+            self.x_ticks.push(x);
             let (px, py) = self.px((x, bottom));
             self.raw(&format!(
                 "<line x1=\"{px:.2}\" y1=\"{py:.2}\" x2=\"{px:.2}\" y2=\"{:.2}\" {style}/>",

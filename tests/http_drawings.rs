@@ -610,3 +610,91 @@ async fn contour_labels_do_not_overlap_each_other() {
         }
     }
 }
+
+#[tokio::test]
+async fn the_rolling_curve_shares_the_bridge_axis_and_has_ticks() {
+    // Each stop's point lies under its x on the bridge's axis (the root's data-frame maps x to
+    // pixels), the band's x ticks are the bridge's, and λ is labelled; stops beyond the arch
+    // widen the picture so that they stay on it.
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 60},
+        "fill": {"unit_weight": 1.8, "surface": 11.5},
+        "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],
+                    "x_start": -14.0, "x_end": 12.0, "positions": 27}, "include": []});
+    let (status, _, answer) = server.post("/arch/live-load", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let text = svg(&server, "/arch/live-load/svg", &body).await;
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let frame: Vec<f64> = doc
+        .root_element()
+        .attribute("data-frame")
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let (x0, scale) = (frame[0], frame[3]);
+    let to_px = |x: f64| 60.0 + (x - x0) * scale;
+    let band = doc
+        .descendants()
+        .find(|n| n.attribute("data-kind") == Some("rolling"))
+        .unwrap();
+    let line = band
+        .children()
+        .find(|n| n.has_tag_name("polyline"))
+        .unwrap();
+    let xs: Vec<f64> = line
+        .attribute("points")
+        .unwrap()
+        .split(' ')
+        .map(|p| p.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    let stops: Vec<f64> = answer["rolling"]["positions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(answer["rolling"]["load_factor"].as_array().unwrap())
+        .filter(|(_, l)| !l.is_null())
+        .map(|(x, _)| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(xs.len(), stops.len());
+    for (px, x) in xs.iter().zip(&stops) {
+        assert!(
+            (px - to_px(*x)).abs() < 0.01,
+            "stop {x}: {px} vs {}",
+            to_px(*x)
+        );
+    }
+    let [left, _, right, _] = plot_rect(&doc);
+    assert!(
+        xs.iter().all(|&px| px >= left - 0.01 && px <= right + 0.01),
+        "{xs:?} in {left}..{right}"
+    );
+    let ticks: Vec<(f64, f64)> = band
+        .descendants()
+        .filter(|n| n.attribute("data-tick").is_some())
+        .map(|n| {
+            let x: f64 = n.attribute("data-tick").unwrap().parse().unwrap();
+            (x, n.attribute("x").unwrap().parse().unwrap())
+        })
+        .collect();
+    assert!(ticks.len() >= 3, "{ticks:?}");
+    for (x, px) in &ticks {
+        assert!((px - to_px(*x)).abs() < 0.01, "tick {x}");
+    }
+    // The bridge's own axis labels the same x values.
+    let labels: Vec<String> = ticks.iter().map(|(x, _)| format!("{x}")).collect();
+    for label in &labels {
+        assert!(
+            doc.descendants()
+                .filter(|n| n.attribute("data-tick").is_none())
+                .any(|n| n.text() == Some(label.as_str())),
+            "{label}"
+        );
+    }
+    assert!(
+        band.descendants()
+            .filter(|n| n.attribute("data-lambda").is_some())
+            .count()
+            >= 2
+    );
+}

@@ -15,7 +15,7 @@ pub(super) fn nice_step(raw: f64) -> f64 {
 }
 
 /// A tick label: up to six decimals, no trailing zeros, never "-0".
-pub(super) fn tick(v: f64) -> String {
+pub fn tick(v: f64) -> String {
     let s = format!("{v:.6}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" {

@@ -108,7 +108,16 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             (a.min(p.0), b.max(p.0))
         });
     let road = fill.map(|(f, _, _)| [(x_hi, f.road), (x_lo, f.road)]);
-    let mut canvas = fitted(assembly, loads, &corners, road);
+    // A rolling load's stops lie on the drawing's x axis, which the curve under it shares.
+    let y_low = corners.iter().fold(f64::INFINITY, |m, p| m.min(p.1));
+    let stops = solved.rolling.iter().flat_map(|r| {
+        [r.positions.first(), r.positions.last()]
+            .into_iter()
+            .flatten()
+            .map(move |&x| (x, y_low))
+    });
+    let reach: Vec<(f64, f64)> = corners.iter().copied().chain(stops).collect();
+    let mut canvas = fitted(assembly, loads, &reach, road);
     let mut legend: Legend = Vec::new();
     if let (Some(fill), Some(road)) = (fill, road) {
         parts::fill(&mut canvas, assembly, fill, road, &mut legend);
