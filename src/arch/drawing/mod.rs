@@ -6,6 +6,7 @@ mod parts;
 mod rolling;
 
 use super::response::SolvedArch;
+use super::rolling::RollingOutDto;
 use crate::svg::Canvas;
 
 /// The key's entries: colour and text.
@@ -70,23 +71,32 @@ pub fn live_load_title(solved: &SolvedArch) -> String {
     }
 }
 
-/// The canvas holding the blocks' corners, the road and the live loads' arrows (so that no
-/// arrow runs into the key above the plot).
+/// The canvas holding the blocks' corners, the road, the live loads' arrows (so that no arrow
+/// runs into the key above the plot) and a rolling load's first and last stops (on the x axis
+/// the curve under the bridge shares).
 fn fitted(
     assembly: &thrustline_solver::arch::Assembly,
     loads: &[thrustline_solver::arch::LiveLoad],
     corners: &[(f64, f64)],
-    road: Option<[(f64, f64); 2]>,
+    (road, rolling): (Option<[(f64, f64); 2]>, Option<&RollingOutDto>),
 ) -> Canvas {
     let tails = parts::load_arrows(assembly, loads)
         .into_iter()
         .map(|(from, _)| from);
+    let y_low = corners.iter().fold(f64::INFINITY, |m, p| m.min(p.1));
+    let stops = rolling.into_iter().flat_map(|r| {
+        [r.positions.first(), r.positions.last()]
+            .into_iter()
+            .flatten()
+            .map(move |&x| (x, y_low))
+    });
     Canvas::fitting(
         corners
             .iter()
             .copied()
             .chain(road.into_iter().flatten())
-            .chain(tails),
+            .chain(tails)
+            .chain(stops),
     )
 }
 
@@ -108,16 +118,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             (a.min(p.0), b.max(p.0))
         });
     let road = fill.map(|(f, _, _)| [(x_hi, f.road), (x_lo, f.road)]);
-    // A rolling load's stops lie on the drawing's x axis, which the curve under it shares.
-    let y_low = corners.iter().fold(f64::INFINITY, |m, p| m.min(p.1));
-    let stops = solved.rolling.iter().flat_map(|r| {
-        [r.positions.first(), r.positions.last()]
-            .into_iter()
-            .flatten()
-            .map(move |&x| (x, y_low))
-    });
-    let reach: Vec<(f64, f64)> = corners.iter().copied().chain(stops).collect();
-    let mut canvas = fitted(assembly, loads, &reach, road);
+    let mut canvas = fitted(assembly, loads, &corners, (road, solved.rolling.as_ref()));
     let mut legend: Legend = Vec::new();
     if let (Some(fill), Some(road)) = (fill, road) {
         parts::fill(&mut canvas, assembly, fill, road, &mut legend);
