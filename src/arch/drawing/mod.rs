@@ -71,6 +71,9 @@ pub fn live_load_title(solved: &SolvedArch) -> String {
     }
 }
 
+/// The road's two ends.
+type Road = [(f64, f64); 2];
+
 /// The canvas holding the blocks' corners, the road, the live loads' arrows (so that no arrow
 /// runs into the key above the plot) and a rolling load's first and last stops (on the x axis
 /// the curve under the bridge shares).
@@ -78,7 +81,7 @@ fn fitted(
     assembly: &thrustline_solver::arch::Assembly,
     loads: &[thrustline_solver::arch::LiveLoad],
     corners: &[(f64, f64)],
-    (road, rolling): (Option<[(f64, f64); 2]>, Option<&RollingOutDto>),
+    (road, rolling): (Option<Road>, Option<&RollingOutDto>),
 ) -> Canvas {
     let tails = parts::load_arrows(assembly, loads)
         .into_iter()
