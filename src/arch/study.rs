@@ -78,18 +78,11 @@ pub fn plan(request: &LiveLoadRequest, body: &Value) -> Result<Option<Study>, Ap
                  the stated loads)",
             ));
         }
-        if request.design.is_some() {
-            return Err(ApiError::invalid(
-                "probabilistic",
-                "samples characteristic values: leave out design (partial factors and a \
-                 probability of failure answer the same question twice)",
-            ));
-        }
     }
     crate::study::plan::<LiveLoadRequest>(
         body,
         (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
-        &["include"],
+        (&["include"], request.design.is_some()),
     )
 }
 

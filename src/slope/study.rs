@@ -20,17 +20,10 @@ use crate::study::{Study, StudyAnswers};
 
 /// The request's studies, checked against its `body` as sent (None without any).
 pub fn plan(request: &SpencerRequest, body: &Value) -> Result<Option<Study>, ApiError> {
-    if request.probabilistic.is_some() && request.design.is_some() {
-        return Err(ApiError::invalid(
-            "probabilistic",
-            "samples characteristic values: leave out design (partial factors and a \
-             probability of failure answer the same question twice)",
-        ));
-    }
     crate::study::plan::<SpencerRequest>(
         body,
         (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
-        &["include", "methods", "curves"],
+        (&["include", "methods", "curves"], request.design.is_some()),
     )
 }
 

@@ -45,15 +45,23 @@ pub struct StudyAnswers {
 
 /// The studies of a request of the route's type `R`, checked against `body` (the request as the
 /// client wrote it); None without any. `unsampled` are the request's keys samples leave out
-/// (what only the deterministic answer reports).
+/// (what only the deterministic answer reports); `design` whether the request is a design check
+/// (which a probabilistic study refuses).
 pub fn plan<R: DeserializeOwned>(
     body: &Value,
     studies: (Option<&ProbabilisticDto>, Option<&SensitivityDto>),
-    unsampled: &[&str],
+    (unsampled, design): (&[&str], bool),
 ) -> Result<Option<Study>, ApiError> {
     let (probabilistic, sensitivity) = studies;
     if probabilistic.is_none() && sensitivity.is_none() {
         return Ok(None);
+    }
+    if probabilistic.is_some() && design {
+        return Err(ApiError::invalid(
+            "probabilistic",
+            "samples characteristic values: leave out design (partial factors and a \
+             probability of failure answer the same question twice)",
+        ));
     }
     let mut base = body.clone();
     if let Some(object) = base.as_object_mut() {
