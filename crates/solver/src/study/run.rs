@@ -1,4 +1,4 @@
-//! Running a study: each sample's analysis, in parallel across the worker's threads, within
+//! Running a study: each sample's analysis, in parallel on a pool of the study's own, within
 //! the solver's one budget (a sample not started when time runs out or the client goes is not
 //! run, and the study says it stopped), with progress reported as samples finish.
 
@@ -26,6 +26,27 @@ impl<F: Fn(usize, usize) + Sync> Progress for F {
 pub fn run<T, A, E>(
     items: &[T],
     evaluate: E,
+    budget: &Budget,
+    progress: &dyn Progress,
+) -> (Vec<A>, Result<(), Stop>)
+where
+    T: Sync,
+    A: Send,
+    E: Fn(&T) -> A + Sync,
+{
+    // A pool of its own: the study's items are not queued behind other work on the global
+    // pool (another request's study), so its budget is seen as soon as it is spent.
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+        Ok(pool) => pool.install(|| run_here(items, &evaluate, budget, progress)),
+        Err(_) => run_here(items, &evaluate, budget, progress),
+    }
+}
+
+/// [`run`] on the current rayon pool.
+fn run_here<T, A, E>(
+    items: &[T],
+    evaluate: &E,
     budget: &Budget,
     progress: &dyn Progress,
 ) -> (Vec<A>, Result<(), Stop>)
