@@ -218,6 +218,10 @@ pub fn solve_routes() -> Router<AppState> {
             "/arch/minimum-thickness/csv",
             post(arch::minimum_thickness::minimum_thickness_csv),
         )
+        .route(
+            "/arch/minimum-thickness/svg",
+            post(arch::minimum_thickness::minimum_thickness_svg),
+        )
 }
 
 /// CORS for the configured origins (`*` for any); `None` when none are configured.

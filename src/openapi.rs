@@ -43,6 +43,7 @@ use crate::limits::Limit;
         crate::arch::report::live_load_report,
         crate::arch::minimum_thickness::minimum_thickness,
         crate::arch::minimum_thickness::minimum_thickness_csv,
+        crate::arch::minimum_thickness::minimum_thickness_svg,
         crate::slope::spencer,
         crate::slope::spencer_svg,
         crate::slope::spencer_stream,

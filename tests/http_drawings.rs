@@ -698,3 +698,65 @@ async fn the_rolling_curve_shares_the_bridge_axis_and_has_ticks() {
             >= 2
     );
 }
+
+#[tokio::test]
+async fn the_minimum_thickness_drawing_marks_its_hinges() {
+    // /arch/minimum-thickness/svg draws the arch just too thin with its collapse: a dot on each
+    // hinge of the JSON answer (mapped back through the data-frame) labelled with its angle and
+    // side, and the minimum thickness in the title.
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 40}});
+    let (status, _, answer) = server.post("/arch/minimum-thickness", &body).await;
+    assert_eq!(status, 200, "{answer}");
+    let text = svg(&server, "/arch/minimum-thickness/svg", &body).await;
+    let document = roxmltree::Document::parse(&text).unwrap();
+    let frame: Vec<f64> = document
+        .root_element()
+        .attribute("data-frame")
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let [x0, top, y1, scale] = frame[..] else {
+        panic!("{frame:?}")
+    };
+    let shift = plot_shift(&document);
+    let dots: Vec<(f64, f64)> = document
+        .descendants()
+        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("#1b5e20"))
+        .map(|n| {
+            let (cx, cy): (f64, f64) = (
+                n.attribute("cx").unwrap().parse().unwrap(),
+                n.attribute("cy").unwrap().parse().unwrap(),
+            );
+            (x0 + (cx - 60.0) / scale, y1 - (cy + shift - top) / scale)
+        })
+        .collect();
+    let hinges = answer["hinges"].as_array().unwrap();
+    assert_eq!(hinges.len(), 5, "{answer}");
+    assert_eq!(dots.len(), hinges.len());
+    let tolerance = 0.011 / scale;
+    let texts: Vec<&str> = document.descendants().filter_map(|n| n.text()).collect();
+    for h in hinges {
+        let (x, y) = (h["x"].as_f64().unwrap(), h["y"].as_f64().unwrap());
+        assert!(
+            dots.iter()
+                .any(|d| (d.0 - x).abs() <= tolerance && (d.1 - y).abs() <= tolerance),
+            "hinge ({x}, {y}) not among {dots:?}"
+        );
+        let label = format!(
+            "{:.1}° {}",
+            h["angle_deg"].as_f64().unwrap(),
+            h["location"].as_str().unwrap()
+        );
+        assert!(texts.contains(&label.as_str()), "{label}");
+    }
+    let thickness = answer["thickness"].as_f64().unwrap();
+    let title = format!("Minimum thickness: D = {thickness:.6}");
+    assert!(texts.iter().any(|t| t.starts_with(&title)), "{title}");
+    // Without a minimum the arch is drawn as given, the reason in the key.
+    let three =
+        json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 3}});
+    let text = svg(&server, "/arch/minimum-thickness/svg", &three).await;
+    assert!(text.contains("Minimum thickness: none found"), "{text}");
+}

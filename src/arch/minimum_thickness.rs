@@ -22,6 +22,7 @@ use crate::extract::ApiJson;
 use crate::limits::{LENGTH, THICKNESS_TOLERANCE};
 use crate::pool::Cost;
 use crate::stop::Work;
+use crate::svg::Svg;
 use crate::table::{csv, Csv, Table};
 use crate::validation::within;
 use crate::AppState;
@@ -167,6 +168,68 @@ pub async fn minimum_thickness_csv(
         MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
         MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
     }
+}
+
+/// Minimum thickness drawn: the arch just too thin to stand, with its collapse mechanism.
+///
+/// The same request and search as `/arch/minimum-thickness`, answered as an SVG picture: the
+/// arch at the thickest thickness that does not stand (the lower end of the final bracket),
+/// its voussoirs, the displaced blocks of its mechanism and the hinges labelled by angle and
+/// side, the minimum thickness in the title. Without a minimum, the arch as given and why.
+#[utoipa::path(
+    post,
+    path = "/arch/minimum-thickness/svg",
+    tag = "arch",
+    request_body = MinimumThicknessRequest,
+    responses(
+        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+        ProblemResponses,
+    )
+)]
+pub async fn minimum_thickness_svg(
+    State(state): State<AppState>,
+    ApiJson(request): ApiJson<MinimumThicknessRequest>,
+) -> Result<Svg, ApiError> {
+    let planned = plan(&request)?;
+    let given = planned.given;
+    let curved = request.geometry.is_curved_single();
+    let (arch, result) = solve(&state, planned).await?;
+    let answer = response(&arch, &result, given);
+    let (shown, mechanism) = match &result.outcome {
+        MinimumThicknessOutcome::Found {
+            thickness_below,
+            mechanism,
+            ..
+        } => (
+            arch.with_thickness(*thickness_below).ok(),
+            mechanism.as_ref(),
+        ),
+        _ => (None, None),
+    };
+    let title = match (answer.thickness, answer.thickness_to_radius) {
+        (Some(d), Some(ratio)) => format!("Minimum thickness: D = {d:.6}, D/R = {ratio:.6}"),
+        _ => "Minimum thickness: none found".to_owned(),
+    };
+    let caption = match (&shown, answer.thickness_below) {
+        (Some(_), Some(below)) => format!(
+            "the arch at D = {below:.6}, just too thin to stand, and its collapse (the arch \
+             stands from D = {:.6} on)",
+            answer.thickness.unwrap_or(f64::NAN)
+        ),
+        _ => answer.detail.clone(),
+    };
+    let drawn = match shown {
+        Some(collapsing) => collapsing,
+        None => given
+            .and_then(|d| arch.with_thickness(d).ok())
+            .unwrap_or(arch),
+    };
+    Ok(Svg(super::drawing::minimum_thickness(
+        &drawn.assembly(),
+        mechanism.filter(|_| answer.thickness_below.is_some()),
+        curved,
+        (&title, &caption),
+    )))
 }
 
 /// A validated minimum-thickness request: the arch whose shape is searched, its material, the

@@ -74,6 +74,48 @@ pub fn live_load_title(solved: &SolvedArch) -> String {
 /// The road's two ends.
 type Road = [(f64, f64); 2];
 
+/// The drawing of a minimum-thickness answer: the arch just too thin to stand, its voussoirs
+/// and its collapse mechanism with the hinges labelled by angle (`mechanism` is that arch's),
+/// or the arch alone when there is none.
+pub fn minimum_thickness(
+    assembly: &thrustline_solver::arch::Assembly,
+    mechanism: Option<&thrustline_solver::arch::Mechanism>,
+    curved: bool,
+    (title, caption): (&str, &str),
+) -> String {
+    let corners: Vec<(f64, f64)> = assembly
+        .blocks
+        .iter()
+        .flat_map(|b| b.corners.iter().copied())
+        .collect();
+    let mut canvas = fitted(assembly, &[], &corners, (None, None));
+    parts::blocks(&mut canvas, assembly, curved);
+    if let Some(mechanism) = mechanism {
+        if assembly.blocks.len() <= MECHANISM_DRAWN_UP_TO {
+            parts::mechanism(&mut canvas, assembly, mechanism, curved);
+        }
+    }
+    let count = parts::hinges_and_loads(&mut canvas, assembly, mechanism, &[]);
+    canvas.key(caption, "#37474f", 12.0, true);
+    if mechanism.is_some_and(|m| !m.hinges.is_empty()) {
+        let hinges = match count > MAX_HINGE_LABELS {
+            true => "● hinges of its collapse (unlabelled: too many)",
+            false => "● hinges of its collapse",
+        };
+        canvas.key(hinges, "#1b5e20", 11.0, true);
+        canvas.key("- - collapse mechanism", "#546e7a", 11.0, false);
+    }
+    if let Some((blocks, step)) = parts::joints_drawn(assembly) {
+        canvas.key(
+            &format!("| {blocks} voussoirs: one joint in {step} drawn"),
+            "#8d6e63",
+            11.0,
+            false,
+        );
+    }
+    canvas.finish(title)
+}
+
 /// The canvas holding the blocks' corners, the road, the live loads' arrows (so that no arrow
 /// runs into the key above the plot) and a rolling load's first and last stops (on the x axis
 /// the curve under the bridge shares).
