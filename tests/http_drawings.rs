@@ -571,7 +571,7 @@ async fn load_arrows_stay_inside_the_plot_clear_of_the_key() {
 }
 
 #[tokio::test]
-async fn contour_labels_do_not_overlap_each_other() {
+async fn contour_labels_overlap_neither_each_other_nor_the_centre_label() {
     // Issue 46: nested contours of a search's F map could put their labels on top of each
     // other. Each label's box (0.6 em a character at 9 px, from its baseline up) must be clear
     // of every other label's.
@@ -602,6 +602,24 @@ async fn contour_labels_do_not_overlap_each_other() {
             })
             .collect();
         assert!(boxes.len() >= 3, "{} labels: {body}", boxes.len());
+        // Nor the critical centre's label ("centre, R = …", 11 px), drawn after the map.
+        let centre = document
+            .descendants()
+            .find(|n| n.text().is_some_and(|t| t.starts_with("centre, R =")))
+            .unwrap();
+        let (x, y) = (number(centre, "x"), number(centre, "y"));
+        let w = 0.6 * 11.0 * centre.text().unwrap().chars().count() as f64;
+        let centre_box = [x, y - 11.0, x + w, y];
+        for a in &boxes {
+            let overlap = a[0] < centre_box[2]
+                && centre_box[0] < a[2]
+                && a[1] < centre_box[3]
+                && centre_box[1] < a[3];
+            assert!(
+                !overlap,
+                "a contour label at {a:?} overlaps the centre's {centre_box:?}: {body}"
+            );
+        }
         for (i, a) in boxes.iter().enumerate() {
             for b in &boxes[i + 1..] {
                 let overlap = a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];

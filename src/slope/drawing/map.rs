@@ -11,9 +11,9 @@ use crate::svg::{heat, Canvas};
 pub fn factor_map(
     canvas: &mut Canvas,
     grid: &FactorGrid,
-    lower_end: (f64, f64),
-    visible: [f64; 4],
+    (lower_end, visible): ((f64, f64), [f64; 4]),
     critical: String,
+    reserved: &[[f64; 4]],
 ) {
     canvas.clip_begin();
     let values: Vec<f64> = grid.factors.iter().flatten().flatten().copied().collect();
@@ -48,7 +48,8 @@ pub fn factor_map(
     let absolute_ys: Vec<f64> = grid.ys.iter().map(|y| lower_end.1 + y).collect();
     let (fine_xs, fine_ys, fine) = refine(&absolute_xs, &absolute_ys, &grid.factors, 4);
     let mut labelled = 0;
-    let mut placed: Vec<[f64; 4]> = Vec::new();
+    // Labels drawn later (the critical centre's) are kept clear too.
+    let mut placed: Vec<[f64; 4]> = reserved.to_vec();
     for factor in [1.02, 1.05, 1.1, 1.2, 1.4, 1.7] {
         let level = lo * factor;
         let segments = contour(&fine_xs, &fine_ys, &fine, level);

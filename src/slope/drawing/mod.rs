@@ -210,7 +210,12 @@ pub fn draw(solved: &SolvedSlope, title: &str) -> String {
             ),
             _ => String::new(),
         };
-        map::factor_map(&mut canvas, grid, lower_end, visible, critical);
+        let reserved: Vec<[f64; 4]> = scene
+            .circle
+            .iter()
+            .map(|c| thrust::centre_label_box(&canvas, c.centre, c.radius))
+            .collect();
+        map::factor_map(&mut canvas, grid, (lower_end, visible), critical, &reserved);
     }
     let mut legend = ground::ground(
         &mut canvas,

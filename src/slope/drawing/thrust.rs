@@ -38,8 +38,8 @@ pub fn surface(
         canvas.dot(centre, 4.0, "fill=\"#212121\"");
         canvas.text(
             centre,
-            (8.0, -6.0),
-            &format!("centre, R = {radius:.3}"),
+            CENTRE_LABEL_OFFSET,
+            &centre_label(radius),
             "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
         );
     }
@@ -99,4 +99,25 @@ pub fn surface(
                 .to_owned(),
         ));
     }
+}
+
+/// Where the centre's label starts, from the centre (pixels).
+const CENTRE_LABEL_OFFSET: (f64, f64) = (8.0, -6.0);
+
+/// The label of a circle's centre.
+fn centre_label(radius: f64) -> String {
+    format!("centre, R = {radius:.3}")
+}
+
+/// The pixel box of the centre's dot and label (11 px, 0.6 em a character, padded by 1 px),
+/// for the map's contour labels to keep clear of.
+pub fn centre_label_box(canvas: &Canvas, centre: (f64, f64), radius: f64) -> [f64; 4] {
+    let (x, y) = canvas.px(centre);
+    let chars = centre_label(radius).chars().count() as f64;
+    [
+        x - 5.0,
+        y + CENTRE_LABEL_OFFSET.1 - 11.0 - 1.0,
+        x + CENTRE_LABEL_OFFSET.0 + 0.6 * 11.0 * chars + 1.0,
+        y + 5.0,
+    ]
 }
