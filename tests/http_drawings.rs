@@ -203,6 +203,35 @@ fn plot_rect(document: &roxmltree::Document) -> [f64; 4] {
     [x0, y0, x0 + number("width"), y0 + number("height")]
 }
 
+/// The hinge dots of an arch drawing mapped back to coordinates through the root's data-frame
+/// ("x0 top y1 scale"; dots are drawn inside the plot's group, so its shift is added), and the
+/// scale.
+fn hinge_dots(document: &roxmltree::Document) -> (Vec<(f64, f64)>, f64) {
+    let frame: Vec<f64> = document
+        .root_element()
+        .attribute("data-frame")
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let [x0, top, y1, scale] = frame[..] else {
+        panic!("{frame:?}")
+    };
+    let shift = plot_shift(document);
+    let dots = document
+        .descendants()
+        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("#1b5e20"))
+        .map(|n| {
+            let (cx, cy): (f64, f64) = (
+                n.attribute("cx").unwrap().parse().unwrap(),
+                n.attribute("cy").unwrap().parse().unwrap(),
+            );
+            (x0 + (cx - 60.0) / scale, y1 - (cy + shift - top) / scale)
+        })
+        .collect();
+    (dots, scale)
+}
+
 fn plot_shift(document: &roxmltree::Document) -> f64 {
     let group = document
         .root_element()
@@ -302,29 +331,7 @@ async fn the_data_frame_maps_pixels_back_to_coordinates() {
     assert_eq!(status, 200, "{answer}");
     let text = svg(&server, "/arch/live-load/svg", &body).await;
     let document = roxmltree::Document::parse(&text).unwrap();
-    let frame: Vec<f64> = document
-        .root_element()
-        .attribute("data-frame")
-        .unwrap()
-        .split(' ')
-        .map(|v| v.parse().unwrap())
-        .collect();
-    let [x0, top, y1, scale] = frame[..] else {
-        panic!("{frame:?}")
-    };
-    let shift = plot_shift(&document);
-    let dots: Vec<(f64, f64)> = document
-        .descendants()
-        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("#1b5e20"))
-        .map(|n| {
-            let (cx, cy): (f64, f64) = (
-                n.attribute("cx").unwrap().parse().unwrap(),
-                n.attribute("cy").unwrap().parse().unwrap(),
-            );
-            // Dots are drawn inside the plot's group: add its shift to reach the picture's pixels.
-            (x0 + (cx - 60.0) / scale, y1 - (cy + shift - top) / scale)
-        })
-        .collect();
+    let (dots, scale) = hinge_dots(&document);
     let hinges = answer["hinges"].as_array().unwrap();
     assert_eq!(dots.len(), hinges.len());
     let tolerance = 0.011 / scale;
@@ -728,28 +735,7 @@ async fn the_minimum_thickness_drawing_marks_its_hinges() {
     assert_eq!(status, 200, "{answer}");
     let text = svg(&server, "/arch/minimum-thickness/svg", &body).await;
     let document = roxmltree::Document::parse(&text).unwrap();
-    let frame: Vec<f64> = document
-        .root_element()
-        .attribute("data-frame")
-        .unwrap()
-        .split(' ')
-        .map(|v| v.parse().unwrap())
-        .collect();
-    let [x0, top, y1, scale] = frame[..] else {
-        panic!("{frame:?}")
-    };
-    let shift = plot_shift(&document);
-    let dots: Vec<(f64, f64)> = document
-        .descendants()
-        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("#1b5e20"))
-        .map(|n| {
-            let (cx, cy): (f64, f64) = (
-                n.attribute("cx").unwrap().parse().unwrap(),
-                n.attribute("cy").unwrap().parse().unwrap(),
-            );
-            (x0 + (cx - 60.0) / scale, y1 - (cy + shift - top) / scale)
-        })
-        .collect();
+    let (dots, scale) = hinge_dots(&document);
     let hinges = answer["hinges"].as_array().unwrap();
     assert_eq!(hinges.len(), 5, "{answer}");
     assert_eq!(dots.len(), hinges.len());

@@ -71,6 +71,27 @@ pub fn live_load_title(solved: &SolvedArch) -> String {
     }
 }
 
+/// A dense chain's key entry: how many of its joints are drawn.
+fn joints_key(canvas: &mut Canvas, assembly: &thrustline_solver::arch::Assembly) {
+    if let Some((blocks, step)) = parts::joints_drawn(assembly) {
+        canvas.key(
+            &format!("| {blocks} voussoirs: one joint in {step} drawn"),
+            "#8d6e63",
+            11.0,
+            false,
+        );
+    }
+}
+
+/// Every block's corners.
+fn corners(assembly: &thrustline_solver::arch::Assembly) -> Vec<(f64, f64)> {
+    assembly
+        .blocks
+        .iter()
+        .flat_map(|b| b.corners.iter().copied())
+        .collect()
+}
+
 /// The road's two ends.
 type Road = [(f64, f64); 2];
 
@@ -83,11 +104,7 @@ pub fn minimum_thickness(
     curved: bool,
     (title, caption): (&str, &str),
 ) -> String {
-    let corners: Vec<(f64, f64)> = assembly
-        .blocks
-        .iter()
-        .flat_map(|b| b.corners.iter().copied())
-        .collect();
+    let corners = corners(assembly);
     let mut canvas = fitted(assembly, &[], &corners, (None, None));
     parts::blocks(&mut canvas, assembly, curved);
     if let Some(mechanism) = mechanism {
@@ -105,14 +122,7 @@ pub fn minimum_thickness(
         canvas.key(hinges, "#1b5e20", 11.0, true);
         canvas.key("- - collapse mechanism", "#546e7a", 11.0, false);
     }
-    if let Some((blocks, step)) = parts::joints_drawn(assembly) {
-        canvas.key(
-            &format!("| {blocks} voussoirs: one joint in {step} drawn"),
-            "#8d6e63",
-            11.0,
-            false,
-        );
-    }
+    joints_key(&mut canvas, assembly);
     canvas.finish(title)
 }
 
@@ -150,11 +160,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     let assembly = solved.input.problem.assembly();
     let loads = solved.input.problem.live_loads();
     let mechanism = solved.solution.mechanism.as_ref();
-    let corners: Vec<(f64, f64)> = assembly
-        .blocks
-        .iter()
-        .flat_map(|b| b.corners.iter().copied())
-        .collect();
+    let corners = corners(assembly);
     // With fill: the fill between the extrados and the road, over the span.
     let fill = solved.input.fill.as_ref();
     let (x_lo, x_hi) = corners
@@ -226,14 +232,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     for (colour, text) in &legend {
         canvas.key(text, colour, 11.0, false);
     }
-    if let Some((blocks, step)) = parts::joints_drawn(assembly) {
-        canvas.key(
-            &format!("| {blocks} voussoirs: one joint in {step} drawn"),
-            "#8d6e63",
-            11.0,
-            false,
-        );
-    }
+    joints_key(&mut canvas, assembly);
     if let Some(curve) = &solved.rolling {
         rolling::rolling_curve(&mut canvas, curve);
     }
