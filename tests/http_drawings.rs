@@ -758,6 +758,11 @@ async fn the_minimum_thickness_drawing_marks_its_hinges() {
     let thickness = answer["thickness"].as_f64().unwrap();
     let title = format!("Minimum thickness: D = {thickness:.6}");
     assert!(texts.iter().any(|t| t.starts_with(&title)), "{title}");
+    // A dense chain's mechanism is not drawn, and the key says so.
+    let dense = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}});
+    let text = svg(&server, "/arch/minimum-thickness/svg", &dense).await;
+    assert!(text.contains("collapse mechanism not drawn: too many blocks"));
+    assert!(!text.contains("- - collapse mechanism"));
     // Without a minimum the arch is drawn as given, the reason in the key.
     let three =
         json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 3}});

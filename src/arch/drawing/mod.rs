@@ -120,7 +120,12 @@ pub fn minimum_thickness(
             false => "● hinges of its collapse",
         };
         canvas.key(hinges, "#1b5e20", 11.0, true);
-        canvas.key("- - collapse mechanism", "#546e7a", 11.0, false);
+        let drawn = assembly.blocks.len() <= MECHANISM_DRAWN_UP_TO;
+        let mechanism = match drawn {
+            true => "- - collapse mechanism",
+            false => "collapse mechanism not drawn: too many blocks",
+        };
+        canvas.key(mechanism, "#546e7a", 11.0, false);
     }
     joints_key(&mut canvas, assembly);
     canvas.finish(title)
