@@ -453,6 +453,12 @@ async fn bad_studies_are_refused_naming_the_field() {
             {"fields": ["soil.cohesion", "soil.cohesion"], "coefficient": 0.5}]}),
             "probabilistic.correlations[0].fields",
         ),
+        (
+            json!({"samples": 10, "variables": pair, "correlations": [
+            {"fields": ["soil.cohesion", "soil.unit_weight"], "coefficient": 0.0},
+            {"fields": ["soil.unit_weight", "soil.cohesion"], "coefficient": 0.3}]}),
+            "probabilistic.correlations[1].fields",
+        ),
     ];
     for (study, field) in cases {
         let mut body = common::spencer_example();
@@ -639,4 +645,26 @@ async fn a_client_that_goes_away_cancels_its_study() {
         tokio::time::sleep(std::time::Duration::from_millis(50)).await;
     }
     assert_eq!(left, 0, "the study kept running after the client left");
+}
+
+#[tokio::test]
+async fn samples_of_a_request_with_other_methods_are_analysed() {
+    // The methods and Morgenstern–Price's inter-slice function stay in each sample (it is
+    // validated as the request is, then runs Spencer's method alone): none is refused.
+    let server = Server::start().await;
+    let body = json!({"section": {"ground": [[0, 60], [60, 60], [140, 20], [180, 20]],
+            "layers": [{"top": null, "soil": {"unit_weight": 120, "cohesion": 600, "friction_angle_deg": 20}}]},
+        "circle": {"centre": [120, 90], "radius": 80}, "slices": 50, "include": [], "curves": true,
+        "methods": ["morgenstern_price"], "interslice_function": [[0, 0], [0.5, 1], [1, 0]],
+        "probabilistic": {"samples": 50, "variables": [{"field": "section.layers[0].soil.cohesion",
+            "distribution": "uniform", "min": 599.999999, "max": 600.000001}]}});
+    let a = answer(&server, &body).await;
+    let p = &a["probabilistic"];
+    assert_eq!(
+        (p["refused"].as_u64(), p["unsolved"].as_u64()),
+        (Some(0), Some(0)),
+        "{p}"
+    );
+    let f0 = num(&a, "factor_of_safety");
+    assert!((num(p, "mean") - f0).abs() < 1e-6 * f0, "{p} vs {f0}");
 }

@@ -23,7 +23,9 @@ pub fn plan(request: &SpencerRequest, body: &Value) -> Result<Option<Study>, Api
     crate::study::plan::<SpencerRequest>(
         body,
         (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
-        (&["include", "methods", "curves"], request.design.is_some()),
+        // `methods` and `curves` stay: a sample is validated as the request is (an
+        // `interslice_function` needs Morgenstern–Price among the methods), then runs without them.
+        (&["include"], request.design.is_some()),
     )
 }
 

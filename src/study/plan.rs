@@ -298,6 +298,7 @@ fn correlations(dto: &ProbabilisticDto, paths: &[JsonPath]) -> Result<Vec<f64>, 
     let k = paths.len();
     let mut rho = vec![0.0; k * k];
     (0..k).for_each(|i| rho[i * k + i] = 1.0);
+    let mut given: Vec<(usize, usize)> = Vec::with_capacity(pairs.len());
     for (n, pair) in pairs.iter().enumerate() {
         let at = format!("probabilistic.correlations[{n}]");
         let index = |name: &str| {
@@ -315,13 +316,14 @@ fn correlations(dto: &ProbabilisticDto, paths: &[JsonPath]) -> Result<Vec<f64>, 
                 "names one variable twice: a correlation is between two",
             ));
         }
-        if rho[i * k + j] != 0.0 {
+        if given.contains(&(i.min(j), i.max(j))) {
             return Err(ApiError::invalid(
                 format!("{at}.fields"),
                 "this pair's correlation is already given",
             ));
         }
         let c = within(&format!("{at}.coefficient"), pair.coefficient, CORRELATION)?;
+        given.push((i.min(j), i.max(j)));
         rho[i * k + j] = c;
         rho[j * k + i] = c;
     }
