@@ -132,20 +132,11 @@ pub async fn solve_studied(
         })
         .await?;
     let (outcome, bonded_load_factor, studied) = ran.value?;
-    let studies = match studied.transpose() {
-        Ok(answers) => answers.unwrap_or_default(),
-        Err((field, StudyStop::Stopped(stop))) => {
-            let work = Work {
-                field,
-                advice: "use fewer samples or points, or fewer blocks or stops",
-                no_candidate: "",
-            };
-            return Err(state.refuse(stop, work, ran.shared));
-        }
-        Err((field, StudyStop::Sampling(e))) => {
-            return Err(ApiError::invalid(field, e.to_string()))
-        }
-    };
+    let advice = "use fewer samples or points, or fewer blocks or stops";
+    let studies = studied
+        .transpose()
+        .map_err(|stopped| crate::study::refusal(state, stopped, advice, ran.shared))?
+        .unwrap_or_default();
     tracing::info!(
         problem = ?which,
         blocks = outcome.problem.assembly().blocks.len(),

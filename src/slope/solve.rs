@@ -13,7 +13,7 @@ use super::study;
 use crate::error::ApiError;
 use crate::pool::Cost;
 use crate::stop::Work;
-use crate::study::run::{StudyStop, Tally};
+use crate::study::run::Tally;
 use crate::AppState;
 
 /// A request read into what runs: the analysis' plan and its studies.
@@ -71,20 +71,10 @@ pub async fn run(
         })
         .await?;
     let (outcome, studied) = ran.value?;
-    let studies = match studied.transpose() {
-        Ok(answers) => answers,
-        Err((field, StudyStop::Stopped(stop))) => {
-            let work = Work {
-                field,
-                advice: "use fewer samples or points, surface: fixed, or a smaller search",
-                no_candidate: "",
-            };
-            return Err(state.refuse(stop, work, ran.shared));
-        }
-        Err((field, StudyStop::Sampling(e))) => {
-            return Err(ApiError::invalid(field, e.to_string()))
-        }
-    };
+    let advice = "use fewer samples or points, surface: fixed, or a smaller search";
+    let studies = studied
+        .transpose()
+        .map_err(|stopped| crate::study::refusal(state, stopped, advice, ran.shared))?;
     let answer = match outcome {
         SlopeOutcome::Answered(answer) => *answer,
         SlopeOutcome::Stopped { stage, stop } => {

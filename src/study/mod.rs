@@ -17,7 +17,9 @@ use serde_json::Value;
 use thrustline_solver::budget::Budget;
 
 use crate::error::ApiError;
+use crate::stop::Work;
 use crate::warning::{Warning, WarningCode};
+use crate::AppState;
 use plan::{ProbabilisticPlan, SensitivityPlan};
 use request::{ProbabilisticDto, SensitivityDto};
 use response::{ProbabilisticOutDto, SensitivityOutDto};
@@ -124,6 +126,28 @@ where
         probabilistic,
         sensitivity,
     })
+}
+
+/// A study that did not finish, as the client is told: the budget's end is the outcome rule's
+/// 422 naming the field that sets its work, with `advice` (503 when other solves shared the
+/// machine, [`AppState::refuse`]); samples that could not be drawn are 422 naming it.
+pub fn refusal(
+    state: &AppState,
+    (field, stop): (&'static str, StudyStop),
+    advice: &'static str,
+    shared: bool,
+) -> ApiError {
+    match stop {
+        StudyStop::Stopped(stop) => {
+            let work = Work {
+                field,
+                advice,
+                no_candidate: "",
+            };
+            state.refuse(stop, work, shared)
+        }
+        StudyStop::Sampling(e) => ApiError::invalid(field, e.to_string()),
+    }
 }
 
 /// What a study's answer asks the engineer to look at: samples or values without an answer,
