@@ -25,6 +25,10 @@ pub fn arch_field(parameter: ArchParameter) -> String {
         ArchParameter::SupportPolygon { support } => {
             format!("geometry.supports[{support}].polygon")
         }
+        ArchParameter::Span => "geometry.span".to_owned(),
+        ArchParameter::Rise => "geometry.rise".to_owned(),
+        ArchParameter::HaunchRadius => "geometry.haunch_radius".to_owned(),
+        ArchParameter::Intrados => "geometry.intrados".to_owned(),
         ArchParameter::Rings => "geometry.rings".to_owned(),
         ArchParameter::Spans => "geometry.spans".to_owned(),
         ArchParameter::PierWidth => "geometry.pier_width".to_owned(),

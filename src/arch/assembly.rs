@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::generators::{bridge, Bridge, Piers, RingJoints};
-use thrustline_solver::arch::{Assembly, CircularArch};
+use thrustline_solver::arch::{ArchError, Assembly, CircularArch};
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
@@ -88,18 +88,28 @@ impl Generated {
 
 /// A circular arch with rings or spans: the generated assembly.
 pub fn generated(arch: &CircularArch, g: Generated) -> Result<Bridge, ApiError> {
+    generated_by(arch.voussoirs(), g, |rings, joints, piers| {
+        bridge(arch, rings, joints, piers)
+    })
+}
+
+/// The rings and spans of `g` checked and built by `build` (rings, joints, piers), for an arch
+/// of `voussoirs` voussoirs per ring.
+pub fn generated_by(
+    voussoirs: usize,
+    g: Generated,
+    build: impl FnOnce(usize, RingJoints, Piers) -> Result<Bridge, ArchError>,
+) -> Result<Bridge, ApiError> {
     count_within("geometry.rings", g.rings, RINGS)?;
     count_within("geometry.spans", g.spans, SPANS)?;
-    let per_span = arch.voussoirs() * g.rings + g.rings / 2;
+    let per_span = voussoirs * g.rings + g.rings / 2;
     if per_span * g.spans > MAX_GENERATED_BLOCKS {
         return Err(ApiError::invalid(
             "geometry.voussoirs",
             format!(
-                "{} is too many for {} rings and {} spans: at most {MAX_GENERATED_BLOCKS} blocks \
-                 in all",
-                arch.voussoirs(),
-                g.rings,
-                g.spans
+                "{voussoirs} is too many for {} rings and {} spans: at most \
+                 {MAX_GENERATED_BLOCKS} blocks in all",
+                g.rings, g.spans
             ),
         ));
     }
@@ -134,5 +144,5 @@ pub fn generated(arch: &CircularArch, g: Generated) -> Result<Bridge, ApiError> 
         RingJointsDto::Staggered => RingJoints::Staggered,
         RingJointsDto::Aligned => RingJoints::Aligned,
     };
-    Ok(bridge(arch, g.rings, joints, piers)?)
+    Ok(build(g.rings, joints, piers)?)
 }

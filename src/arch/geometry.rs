@@ -1,4 +1,4 @@
-//! The structure of an arch request: three named geometry objects told apart by `kind` (an
+//! The structure of an arch request: four named geometry objects told apart by `kind` (an
 //! OpenAPI discriminator), the circular one shared by every arch route. Read by hand so that an
 //! error inside names its full path (`geometry.blocks[3].corners`), which serde's internally
 //! tagged enums lose.
@@ -28,6 +28,98 @@ pub enum VoussoirDto {
 pub enum CircularKind {
     /// The circular arch generator.
     Circular,
+}
+
+/// `kind` of an arch given by its intrados profile.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ProfileKind {
+    /// An intrados of a named shape, or measured.
+    Profile,
+}
+
+/// The shape of an intrados (model §10).
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ProfileShapeDto {
+    /// A circular arc through both springings and the crown; rise < span/2.
+    Segmental,
+    /// A half circle; rise = span/2 (may be left out).
+    Semicircular,
+    /// The half ellipse of semi-axes span/2 and rise.
+    Elliptical,
+    /// Haunch arcs of `haunch_radius` centred on the springing line, tangent to a crown arc
+    /// centred on the vertical through the crown; 0 < haunch_radius < rise < span/2.
+    ThreeCentred,
+    /// Two arcs centred on the springing line, each through its springing and the crown; rise
+    /// > span/2, or `radius` > span/2 instead of the rise (radius = span: equilateral).
+    Pointed,
+    /// y = rise·(1 − (2x/span)²).
+    Parabolic,
+    /// The catenary through both springings and the crown.
+    Catenary,
+    /// A measured intrados: the polyline through `intrados`.
+    Points,
+}
+
+/// An arch by its intrados (model §10): span and rise of the intrados, springings at
+/// (±span/2, 0), joints normal to the intrados at equal arc lengths along it, the extrados at
+/// `thickness` along those normals. Blocks are numbered from the right springing (x = span/2),
+/// ring by ring. `shape: points` takes a measured intrados instead of span and rise.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ProfileGeometryDto {
+    /// Always `profile`.
+    pub kind: ProfileKind,
+    /// The intrados' shape.
+    pub shape: ProfileShapeDto,
+    /// Span between the intrados springings, 1e-9 ≤ span ≤ 1e9 (not with `points`).
+    #[serde(default)]
+    #[schema(examples(10.0))]
+    pub span: Option<f64>,
+    /// Rise of the intrados crown above the springings, 1e-3·span ≤ rise ≤ 100·span, within
+    /// what the shape allows (not with `points`; optional for `semicircular`; `pointed` takes
+    /// it or `radius`).
+    #[serde(default)]
+    #[schema(examples(2.5))]
+    pub rise: Option<f64>,
+    /// `pointed` only: the radius of its two arcs, > span/2, instead of the rise.
+    #[serde(default)]
+    pub radius: Option<f64>,
+    /// `three_centred` only: the radius of the haunch arcs, 0 < haunch_radius < rise.
+    #[serde(default)]
+    pub haunch_radius: Option<f64>,
+    /// `points` only: the measured intrados, 3 to 10000 points [x, y] with x running one way,
+    /// rising to one crown above both springings and falling after it.
+    #[serde(default)]
+    pub intrados: Option<Vec<[f64; 2]>>,
+    /// Thickness along the joints, 0 < thickness < span. Required by the dead- and live-load
+    /// routes; the minimum-thickness route finds it.
+    #[serde(default)]
+    #[schema(examples(0.6))]
+    pub thickness: Option<f64>,
+    /// Voussoirs per ring N, 1 ≤ N ≤ 10000.
+    #[schema(examples(40))]
+    #[serde(deserialize_with = "crate::nullable::integer")]
+    pub voussoirs: usize,
+    /// Rings the thickness is split into, 1 ≤ rings ≤ 16, as for `circular`. Defaults to 1.
+    #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+    #[schema(nullable)]
+    pub rings: usize,
+    /// How the joints of neighbouring rings lie. Defaults to `staggered`.
+    #[serde(default, deserialize_with = "crate::nullable::name_or_default")]
+    #[schema(nullable)]
+    pub ring_joints: RingJointsDto,
+    /// Spans on piers, 1 ≤ spans ≤ 20, as for `circular`. Defaults to 1.
+    #[serde(default = "one", deserialize_with = "crate::nullable::integer_or_one")]
+    #[schema(nullable)]
+    pub spans: usize,
+    /// With `spans` > 1: each pier's width between the intrados springings of its two spans.
+    #[serde(default)]
+    pub pier_width: Option<f64>,
+    /// With `spans` > 1: each pier's height below its lower springing, > 0.
+    #[serde(default)]
+    pub pier_height: Option<f64>,
 }
 
 /// `kind` of a chain of quadrilateral blocks.
@@ -180,14 +272,16 @@ pub struct AssemblyGeometryDto {
     pub supports: Vec<PolygonDto>,
 }
 
-/// The structure, by `kind`: the thesis' circular arch (`circular`), any chain of
-/// quadrilateral blocks (`blocks`), or any polygons on supports (`assembly`).
+/// The structure, by `kind`: the thesis' circular arch (`circular`), an arch by its intrados
+/// profile (`profile`), any chain of quadrilateral blocks (`blocks`), or any polygons on
+/// supports (`assembly`).
 #[derive(Debug, Clone, Serialize, ToSchema)]
 #[serde(untagged)]
 #[schema(discriminator(property_name = "kind", mapping(
     ("circular" = "#/components/schemas/CircularGeometryDto"),
     ("blocks" = "#/components/schemas/BlocksGeometryDto"),
     ("assembly" = "#/components/schemas/AssemblyGeometryDto"),
+    ("profile" = "#/components/schemas/ProfileGeometryDto"),
 )))]
 pub enum GeometryDto {
     /// `kind: circular`.
@@ -196,6 +290,8 @@ pub enum GeometryDto {
     Blocks(BlocksGeometryDto),
     /// `kind: assembly`.
     Assembly(AssemblyGeometryDto),
+    /// `kind: profile`.
+    Profile(ProfileGeometryDto),
 }
 
 impl<'de> Deserialize<'de> for GeometryDto {
@@ -215,13 +311,15 @@ impl<'de> Deserialize<'de> for GeometryDto {
                 "circular" => variant(&value).map(Self::Circular),
                 "blocks" => variant(&value).map(Self::Blocks),
                 "assembly" => variant(&value).map(Self::Assembly),
+                "profile" => variant(&value).map(Self::Profile),
                 other => Err(D::Error::custom(format!(
-                    "kind: unknown variant `{other}`, expected one of `circular`, `blocks`, \
-                     `assembly`"
+                    "kind: unknown variant `{other}`, expected one of `circular`, `profile`, \
+                     `blocks`, `assembly`"
                 ))),
             },
             Some(other) => Err(D::Error::custom(format!(
-                "kind: invalid type: {}, expected one of `circular`, `blocks`, `assembly`",
+                "kind: invalid type: {}, expected one of `circular`, `profile`, `blocks`, \
+                 `assembly`",
                 json_kind(other)
             ))),
         }

@@ -14,7 +14,8 @@ use thrustline_solver::arch::{
 use super::assembly::Generated;
 use super::fill::{fill_faces, fill_loads, FillDto, FillLoads, RoadLoadDto};
 use super::geometry::{
-    AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, VoussoirDto,
+    AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, ProfileGeometryDto,
+    VoussoirDto,
 };
 use super::material::{material, ring_material};
 use super::request::{
@@ -24,7 +25,7 @@ use super::rolling::{Rolling, RollingDto};
 use crate::error::ApiError;
 use crate::limits::{
     BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, LENGTH, LOADS, POSITIVE_STRESS,
-    SOLVER_TOLERANCE,
+    SOLVER_TOLERANCE, THICKNESS,
 };
 use crate::validation::{count, count_within, finite, within};
 
@@ -234,17 +235,26 @@ fn bonded(
     extras: Extras,
     time_limit_secs: f64,
 ) -> Option<ArchProblem> {
-    let GeometryDto::Circular(circular) = fields.geometry else {
-        return None;
+    let (rings, spans) = match fields.geometry {
+        GeometryDto::Circular(c) => (c.rings, c.spans),
+        GeometryDto::Profile(p) => (p.rings, p.spans),
+        _ => return None,
     };
-    let locked = circular.rings > 1 && circular.spans == 1 && problem.has_locked_rings();
+    let locked = rings > 1 && spans == 1 && problem.has_locked_rings();
     if !locked || extras.rolling.is_some() {
         return None;
     }
-    let single = GeometryDto::Circular(CircularGeometryDto {
-        rings: 1,
-        ..circular.clone()
-    });
+    let single = match fields.geometry {
+        GeometryDto::Circular(circular) => GeometryDto::Circular(CircularGeometryDto {
+            rings: 1,
+            ..circular.clone()
+        }),
+        GeometryDto::Profile(profile) => GeometryDto::Profile(ProfileGeometryDto {
+            rings: 1,
+            ..profile.clone()
+        }),
+        _ => return None,
+    };
     let fields = LimitFields {
         geometry: &single,
         ..*fields
@@ -370,6 +380,17 @@ fn assembly(geometry: &GeometryDto) -> Result<(Assembly, Option<Faces>), ApiErro
         GeometryDto::Assembly(AssemblyGeometryDto {
             blocks, supports, ..
         }) => Ok((super::assembly::assembly(blocks, supports)?, None)),
+        GeometryDto::Profile(profile) => {
+            let thickness = profile.thickness.ok_or_else(|| {
+                ApiError::invalid(
+                    "geometry.thickness",
+                    "is required here (0 < thickness < span); only the minimum-thickness route \
+                     finds it",
+                )
+            })?;
+            let thickness = within("geometry.thickness", thickness, THICKNESS)?;
+            super::profile::profile_assembly(profile, thickness)
+        }
     }
 }
 

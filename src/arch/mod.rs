@@ -16,6 +16,7 @@ pub mod input;
 pub mod material;
 pub mod mechanism;
 pub mod minimum_thickness;
+pub mod profile;
 pub mod report;
 pub mod request;
 pub mod response;

@@ -250,6 +250,10 @@ pub const SLOPE_SUPPORTS: Count = Count::new(0, MAX_SUPPORTS);
 pub const LOADS: Count = Count::new(0, MAX_LOADS);
 /// Corners of an assembly's polygon.
 pub const POLYGON_CORNERS: Count = Count::new(3, 256);
+/// Points of a measured intrados.
+pub const INTRADOS_POINTS: Count = Count::new(3, MAX_VOUSSOIRS);
+/// A profile's rise, or a pointed arch's radius, as a multiple of its span.
+pub const RISE_PER_SPAN: Range = Range::closed(1e-3, 100.0);
 /// Supports of an assembly.
 pub const SUPPORTS: Count = Count::new(1, 1000);
 /// Points of a Morgenstern–Price inter-slice function.

@@ -39,6 +39,14 @@ pub enum ArchParameter {
         /// Index of the support.
         support: usize,
     },
+    /// The span of a profile.
+    Span,
+    /// The rise of a profile.
+    Rise,
+    /// The haunch radius of a three-centred profile.
+    HaunchRadius,
+    /// The points of a measured intrados.
+    Intrados,
     /// The number of rings of a circular arch.
     Rings,
     /// The number of spans.
@@ -93,6 +101,10 @@ impl std::fmt::Display for ArchParameter {
             Self::BlockPolygon { block } => write!(f, "polygon of block {}", block + 1),
             Self::Supports => write!(f, "supports"),
             Self::SupportPolygon { support } => write!(f, "polygon of support {}", support + 1),
+            Self::Span => write!(f, "span"),
+            Self::Rise => write!(f, "rise"),
+            Self::HaunchRadius => write!(f, "haunch radius"),
+            Self::Intrados => write!(f, "intrados"),
             Self::Rings => write!(f, "rings"),
             Self::Spans => write!(f, "spans"),
             Self::PierWidth => write!(f, "pier width"),

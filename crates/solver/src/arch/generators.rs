@@ -12,6 +12,7 @@
 use super::contacts::CONTACT_TOLERANCE;
 use super::error::{ArchError, ArchParameter};
 use super::geometry::{Assembly, CircularArch, Interface, InterfaceKind};
+use super::profile::{Profile, Station};
 
 type Point = (f64, f64);
 
@@ -51,34 +52,101 @@ pub struct Bridge {
     pub extrados: Vec<(usize, Vec<Point>)>,
 }
 
-fn polar(centre: Point, r: f64, degrees: f64) -> Point {
-    let a = degrees.to_radians();
-    (centre.0 + r * a.cos(), centre.1 + r * a.sin())
+/// What the generator needs of one span: its voussoirs, thickness and the corner at each
+/// half-voussoir step j (0..=2N, from the right springing) and depth along the joint (0 at the
+/// intrados), in the span's own frame.
+trait SpanShape {
+    fn voussoirs(&self) -> usize;
+    fn thickness(&self) -> f64;
+    fn corner(&self, j: usize, depth: f64) -> Point;
+    /// The joint's unit direction at step j, from the intrados out.
+    fn normal(&self, j: usize) -> Point;
+    /// A length for the ranges: the extrados radius of a circle, half the span plus the
+    /// thickness of a profile.
+    fn scale(&self) -> f64;
 }
 
-/// The voussoirs of one span about `centre`: (polygon, ring) per block, ring by ring.
-fn span_blocks(
-    arch: &CircularArch,
-    rings: usize,
-    joints: RingJoints,
-    centre: Point,
-) -> Vec<(Vec<Point>, usize)> {
-    let n = arch.voussoirs();
-    let (r0, d) = (arch.radius() - 0.5 * arch.thickness(), arch.thickness());
-    let half = |j: usize| {
-        // The angle of half-voussoir step j (0..=2n).
-        let whole = arch.interface_angle_deg(j / 2);
+/// A circular arch: corners on circles about the origin, joints radial.
+struct Circle<'a> {
+    arch: &'a CircularArch,
+    inner: f64,
+}
+
+impl Circle<'_> {
+    /// The polar angle of half-voussoir step j (0..=2N).
+    fn half(&self, j: usize) -> f64 {
+        let whole = self.arch.interface_angle_deg(j / 2);
         if j.is_multiple_of(2) {
             whole
         } else {
-            0.5 * (whole + arch.interface_angle_deg(j / 2 + 1))
+            0.5 * (whole + self.arch.interface_angle_deg(j / 2 + 1))
         }
-    };
+    }
+}
+
+impl SpanShape for Circle<'_> {
+    fn voussoirs(&self) -> usize {
+        self.arch.voussoirs()
+    }
+    fn thickness(&self) -> f64 {
+        self.arch.thickness()
+    }
+    fn corner(&self, j: usize, depth: f64) -> Point {
+        let a = self.half(j).to_radians();
+        let r = self.inner + depth;
+        (r * a.cos(), r * a.sin())
+    }
+    fn normal(&self, j: usize) -> Point {
+        let a = self.half(j).to_radians();
+        (a.cos(), a.sin())
+    }
+    fn scale(&self) -> f64 {
+        self.arch.radius() + 0.5 * self.arch.thickness()
+    }
+}
+
+/// A profile's stations at every half voussoir.
+struct Stations {
+    stations: Vec<Station>,
+    thickness: f64,
+    scale: f64,
+}
+
+impl SpanShape for Stations {
+    fn voussoirs(&self) -> usize {
+        (self.stations.len() - 1) / 2
+    }
+    fn thickness(&self) -> f64 {
+        self.thickness
+    }
+    fn corner(&self, j: usize, depth: f64) -> Point {
+        self.stations[j].at(depth)
+    }
+    fn normal(&self, j: usize) -> Point {
+        self.stations[j].normal
+    }
+    fn scale(&self) -> f64 {
+        self.scale
+    }
+}
+
+/// One generated voussoir: its polygon (in the span's frame), ring, and the half-voussoir
+/// steps of its start and end joints.
+struct Voussoir {
+    polygon: Vec<Point>,
+    ring: usize,
+    joints: [usize; 2],
+}
+
+/// The voussoirs of one span, ring by ring.
+fn span_blocks(shape: &impl SpanShape, rings: usize, joints: RingJoints) -> Vec<Voussoir> {
+    let n = shape.voussoirs();
+    let d = shape.thickness();
     let mut out = Vec::new();
     for ring in 0..rings {
         let (inner, outer) = (
-            r0 + d * ring as f64 / rings as f64,
-            r0 + d * (ring + 1) as f64 / rings as f64,
+            d * ring as f64 / rings as f64,
+            d * (ring + 1) as f64 / rings as f64,
         );
         // Block boundaries as half-steps.
         let shifted = joints == RingJoints::Staggered && ring % 2 == 1;
@@ -97,11 +165,15 @@ fn span_blocks(
                 RingJoints::Aligned => vec![w[0], w[1]],
             };
             let mut polygon: Vec<Point> = Vec::with_capacity(2 * steps.len());
-            polygon.push(polar(centre, inner, half(w[0])));
-            polygon.extend(steps.iter().map(|&j| polar(centre, outer, half(j))));
-            polygon.extend(steps.iter().rev().map(|&j| polar(centre, inner, half(j))));
+            polygon.push(shape.corner(w[0], inner));
+            polygon.extend(steps.iter().map(|&j| shape.corner(j, outer)));
+            polygon.extend(steps.iter().rev().map(|&j| shape.corner(j, inner)));
             polygon.pop();
-            out.push((polygon, ring));
+            out.push(Voussoir {
+                polygon,
+                ring,
+                joints: [w[0], w[1]],
+            });
         }
     }
     out
@@ -118,27 +190,14 @@ fn abutment(intrados: Point, extrados: Point, away: Point, depth: f64) -> Vec<Po
     ]
 }
 
-/// A joint along a radius of its span (between voussoirs, at a springing) runs from its
-/// intrados end (nearer the span's centre) to its extrados end, and its angle is its polar
-/// angle about that centre, as on a chain (model §1.3): contacts are found in either direction,
+/// A joint of the generator (between voussoirs of a ring, at a springing) runs from its
+/// intrados end to its extrados end along the joint's direction, and its angle is that
+/// direction's polar angle, as on a chain (model §1.3): contacts are found in either direction,
 /// and a hinge's face and angle are read from this orientation. Other contacts (between rings,
 /// under piers) keep theirs.
-fn orient_radially(interface: &mut Interface, centres: &[Point], radius: f64) {
-    let middle = (
-        0.5 * (interface.intrados.0 + interface.extrados.0),
-        0.5 * (interface.intrados.1 + interface.extrados.1),
-    );
-    let away = |c: &Point| ((middle.0 - c.0).hypot(middle.1 - c.1) - radius).abs();
-    let Some(centre) = centres.iter().min_by(|a, b| away(a).total_cmp(&away(b))) else {
-        return;
-    };
-    let (dx, dy) = (middle.0 - centre.0, middle.1 - centre.1);
-    let distance = dx.hypot(dy);
-    if distance == 0.0 {
-        return;
-    }
-    let along = (interface.tangent.0 * dx + interface.tangent.1 * dy) / distance;
-    // Radial to 1e-9 (a joint of the generator lies on its radius up to rounding).
+fn orient(interface: &mut Interface, direction: Point) {
+    let along = interface.tangent.0 * direction.0 + interface.tangent.1 * direction.1;
+    // Along the joint to 1e-9 (a contact found on a joint lies on it up to rounding).
     if along.abs() < 1.0 - 1e-9 {
         return;
     }
@@ -153,9 +212,42 @@ fn orient_radially(interface: &mut Interface, centres: &[Point], radius: f64) {
     interface.angle_deg = angle_deg;
 }
 
+/// The half-voussoir step of the joint an interface lies on: the step two voussoirs of one
+/// ring share, or a voussoir's springing step against a support or a pier (the one nearer the
+/// contact when the voussoir spans the arch).
+fn joint_step(
+    interface: &Interface,
+    voussoirs: &[Option<(usize, &Voussoir)>],
+    springing: impl Fn(usize, usize) -> Point,
+    last: usize,
+) -> Option<(usize, usize)> {
+    let of = |b: Option<usize>| b.and_then(|b| voussoirs[b]);
+    match (of(interface.lower), of(interface.upper)) {
+        (Some((span_a, a)), Some((span_b, b))) => {
+            let same = span_a == span_b && a.ring == b.ring;
+            let shared = a.joints.iter().find(|j| b.joints.contains(j));
+            shared.filter(|_| same).map(|&j| (span_a, j))
+        }
+        (Some((span, v)), None) | (None, Some((span, v))) => {
+            let middle = interface.middle();
+            let away = |j: usize| {
+                let p = springing(span, j);
+                (p.0 - middle.0).hypot(p.1 - middle.1)
+            };
+            v.joints
+                .iter()
+                .copied()
+                .filter(|&j| j == 0 || j == last)
+                .min_by(|&a, &b| away(a).total_cmp(&away(b)))
+                .map(|j| (span, j))
+        }
+        (None, None) => None,
+    }
+}
+
 /// The ranges of a bridge: 1 to 16 rings, 1 to 20 spans, piers wide enough that the springings
-/// of two spans do not cross and no higher than 1000 times the extrados radius.
-fn check_bridge(arch: &CircularArch, rings: usize, piers: &Piers) -> Result<(), ArchError> {
+/// of two spans do not cross and no higher than 1000 times the shape's scale.
+fn check_bridge(shape: &impl SpanShape, rings: usize, piers: &Piers) -> Result<(), ArchError> {
     if !(1..=16).contains(&rings) {
         return Err(ArchError::range(
             ArchParameter::Rings,
@@ -170,30 +262,30 @@ fn check_bridge(arch: &CircularArch, rings: usize, piers: &Piers) -> Result<(), 
             "an integer 1 ≤ spans ≤ 20",
         ));
     }
-    let r_out = arch.radius() + 0.5 * arch.thickness();
-    let (right, left) = (
-        arch.interface_angle_deg(0),
-        arch.interface_angle_deg(arch.voussoirs()),
-    );
-    let (c, b) = (right.to_radians(), (180.0 - left).to_radians());
+    let (n, d, scale) = (shape.voussoirs(), shape.thickness(), shape.scale());
     if piers.spans > 1 {
-        // The extrados springings of the two spans on a pier must not cross.
-        let least = arch.thickness() * (c.cos() + b.cos());
+        // The extrados springings of the two spans on a pier must not cross: each leans out
+        // over the pier by its joint's horizontal extent.
+        let least = (shape.corner(0, d).0 - shape.corner(0, 0.0).0)
+            + (shape.corner(2 * n, 0.0).0 - shape.corner(2 * n, d).0);
         let width_ok = piers.width.is_finite()
-            && piers.width >= least.max(0.0) + CONTACT_TOLERANCE * r_out
-            && piers.width <= 1e3 * r_out;
+            && piers.width >= least.max(0.0) + CONTACT_TOLERANCE * scale
+            && piers.width <= 1e3 * scale;
         if !width_ok {
             return Err(ArchError::range(
                 ArchParameter::PierWidth,
                 piers.width,
-                format!("{least} < width ≤ 1000·(R + D/2) (the springings must not overlap)"),
+                format!(
+                    "{least} < width ≤ {} (the springings must not overlap)",
+                    1e3 * scale
+                ),
             ));
         }
-        if !(piers.height.is_finite() && piers.height > 0.0 && piers.height <= 1e3 * r_out) {
+        if !(piers.height.is_finite() && piers.height > 0.0 && piers.height <= 1e3 * scale) {
             return Err(ArchError::range(
                 ArchParameter::PierHeight,
                 piers.height,
-                "0 < height ≤ 1000·(R + D/2)",
+                format!("0 < height ≤ {}", 1e3 * scale),
             ));
         }
     }
@@ -207,65 +299,87 @@ pub fn bridge(
     joints: RingJoints,
     piers: Piers,
 ) -> Result<Bridge, ArchError> {
-    check_bridge(arch, rings, &piers)?;
-    let (r_in, r_out) = (
-        arch.radius() - 0.5 * arch.thickness(),
-        arch.radius() + 0.5 * arch.thickness(),
-    );
-    let (right, left) = (
-        arch.interface_angle_deg(0),
-        arch.interface_angle_deg(arch.voussoirs()),
-    );
-    let (c, b) = (right.to_radians(), (180.0 - left).to_radians());
-    let pitch = r_in * c.cos() + piers.width + r_in * b.cos();
+    let shape = Circle {
+        arch,
+        inner: arch.radius() - 0.5 * arch.thickness(),
+    };
+    build(&shape, rings, joints, piers)
+}
+
+/// An arch of `profile`'s intrados, `thickness` thick, of `voussoirs` voussoirs per ring,
+/// `rings` rings (1 to 16) and `piers.spans` spans (1 to 20).
+pub fn profile_bridge(
+    profile: &Profile,
+    thickness: f64,
+    voussoirs: usize,
+    rings: usize,
+    joints: RingJoints,
+    piers: Piers,
+) -> Result<Bridge, ArchError> {
+    profile.check_thickness(thickness)?;
+    let shape = Stations {
+        stations: profile.stations(2 * voussoirs.max(1)),
+        thickness,
+        scale: 0.5 * profile.span() + thickness,
+    };
+    build(&shape, rings, joints, piers)
+}
+
+fn build(
+    shape: &impl SpanShape,
+    rings: usize,
+    joints: RingJoints,
+    piers: Piers,
+) -> Result<Bridge, ArchError> {
+    check_bridge(shape, rings, &piers)?;
+    let (n, depth) = (shape.voussoirs(), shape.thickness());
+    let last = 2 * n;
+    let at = |span: usize, j: usize, d: f64| {
+        let p = shape.corner(j, d);
+        (span as f64 * pitch(shape, &piers) + p.0, 0.0 + p.1)
+    };
+    let voussoirs = span_blocks(shape, rings, joints);
     let mut polygons = Vec::new();
-    let mut ring_of = Vec::new();
+    let mut generated: Vec<Option<(usize, &Voussoir)>> = Vec::new();
     let mut extrados = Vec::new();
     for span in 0..piers.spans {
-        let centre = (span as f64 * pitch, 0.0);
-        for (polygon, ring) in span_blocks(arch, rings, joints, centre) {
-            if ring + 1 == rings {
-                // The corners on the outer circle, in order (a run: the polygon goes inner
-                // start, outer corners, inner corners back).
-                let on_outer = |p: &&Point| {
-                    ((p.0 - centre.0).hypot(p.1 - centre.1) - r_out).abs() <= 1e-9 * r_out
-                };
-                extrados.push((
-                    polygons.len(),
-                    polygon.iter().filter(on_outer).copied().collect(),
-                ));
+        let shift = span as f64 * pitch(shape, &piers);
+        for v in &voussoirs {
+            let polygon: Vec<Point> = v.polygon.iter().map(|p| (shift + p.0, 0.0 + p.1)).collect();
+            if v.ring + 1 == rings {
+                // The outer corners follow the first: the polygon goes inner start, outer
+                // corners, inner corners back.
+                let outer = polygon.len().div_ceil(2);
+                extrados.push((polygons.len(), polygon[1..=outer].to_vec()));
             }
             polygons.push(polygon);
-            ring_of.push(Some(ring));
+            generated.push(Some((span, v)));
         }
     }
-    let depth = arch.thickness();
     let mut supports = Vec::new();
-    // The abutments at the two ends: the last span's right springing, the first's left.
-    let first = (0.0, 0.0);
-    let last = ((piers.spans - 1) as f64 * pitch, 0.0);
+    // The abutments at the two ends: the last span's right springing, the first's left,
+    // extending back along the arch's direction there.
+    let (right, left) = (shape.normal(0), shape.normal(last));
     supports.push(abutment(
-        polar(last, r_in, right),
-        polar(last, r_out, right),
-        (c.sin(), -c.cos()),
+        at(piers.spans - 1, 0, 0.0),
+        at(piers.spans - 1, 0, depth),
+        (right.1, -right.0),
         depth,
     ));
-    let away_left = (-(left.to_radians()).sin(), left.to_radians().cos());
     supports.push(abutment(
-        polar(first, r_in, left),
-        polar(first, r_out, left),
-        away_left,
+        at(0, last, 0.0),
+        at(0, last, depth),
+        (-left.1, left.0),
         depth,
     ));
     // Piers between spans i (right springing) and i + 1 (left springing), on the ground.
     for span in 0..piers.spans.saturating_sub(1) {
-        let (a, z) = ((span as f64 * pitch, 0.0), ((span + 1) as f64 * pitch, 0.0));
-        let (i_l, e_l) = (polar(a, r_in, right), polar(a, r_out, right));
-        let (i_r, e_r) = (polar(z, r_in, left), polar(z, r_out, left));
+        let (i_l, e_l) = (at(span, 0, 0.0), at(span, 0, depth));
+        let (i_r, e_r) = (at(span + 1, last, 0.0), at(span + 1, last, depth));
         let bottom = i_l.1.min(i_r.1) - piers.height;
         extrados.push((polygons.len(), vec![e_r, e_l]));
         polygons.push(vec![(i_l.0, bottom), (i_r.0, bottom), i_r, e_r, e_l, i_l]);
-        ring_of.push(None);
+        generated.push(None);
         let ground = piers.width.max(depth);
         supports.push(vec![
             (i_l.0, bottom - ground),
@@ -275,22 +389,29 @@ pub fn bridge(
         ]);
     }
     let mut assembly = Assembly::from_polygons(&polygons, &supports)?;
-    let centres: Vec<Point> = (0..piers.spans)
-        .map(|span| (span as f64 * pitch, 0.0))
-        .collect();
     for interface in &mut assembly.interfaces {
-        if let (Some(x), Some(y)) = (interface.lower, interface.upper) {
-            if let (Some(p), Some(q)) = (ring_of[x], ring_of[y]) {
-                if p != q {
-                    interface.kind = InterfaceKind::Ring;
-                }
+        if let (Some(Some((_, a))), Some(Some((_, b)))) = (
+            interface.lower.map(|x| generated[x]),
+            interface.upper.map(|y| generated[y]),
+        ) {
+            if a.ring != b.ring {
+                interface.kind = InterfaceKind::Ring;
             }
         }
-        orient_radially(interface, &centres, arch.radius());
+        if let Some((_, j)) = joint_step(interface, &generated, |s, j| at(s, j, 0.0), last) {
+            orient(interface, shape.normal(j));
+        }
     }
     Ok(Bridge {
         assembly,
-        ring: ring_of,
+        ring: generated.iter().map(|g| g.map(|(_, v)| v.ring)).collect(),
         extrados,
     })
+}
+
+/// The distance between neighbouring spans' frames: the span between the intrados springings
+/// and the pier's width.
+fn pitch(shape: &impl SpanShape, piers: &Piers) -> f64 {
+    let last = 2 * shape.voussoirs();
+    shape.corner(0, 0.0).0 + piers.width - shape.corner(last, 0.0).0
 }

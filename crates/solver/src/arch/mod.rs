@@ -18,6 +18,7 @@
 //! - [`mechanism`]: the collapse mechanism read from the multipliers.
 //! - [`memory`]: the memory an analysis may take, bounded before it runs.
 //! - [`minimum_thickness`]: the thinnest circular arch that carries its own weight.
+//! - [`profile`]: arches by their intrados (segmental … catenary, measured points).
 //! - [`rolling`]: the live-load factor at each stop of a rolling load.
 //! - [`refine`]: a rolling load's critical position narrowed between the stops.
 //! - [`thrust_line`]: the points of action of the interface resultants.
@@ -34,6 +35,7 @@ pub mod limit;
 pub mod mechanism;
 pub mod memory;
 pub mod minimum_thickness;
+pub mod profile;
 pub mod refine;
 pub mod resultant;
 pub mod rolling;
