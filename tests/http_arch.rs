@@ -224,8 +224,8 @@ async fn minimum_thickness_edges_and_bad_inputs() {
     let blocks = json!({"geometry": {"kind": "blocks", "blocks": [
         {"corners": [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]}]}});
     let (status, content_type, body) = server.post("/arch/minimum-thickness", &blocks).await;
-    // Only the circular geometry has a minimum thickness: the blocks are an unknown field of it.
-    assert_problem(status, &content_type, &body, 422, "geometry.blocks");
+    // Only circular and profile geometries have a minimum thickness: `blocks` is refused.
+    assert_problem(status, &content_type, &body, 422, "geometry.kind");
 
     // A given thickness is checked as on the dead-load route (0 < D < 2R): it is the D of the
     // geometric factor of safety.

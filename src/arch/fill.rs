@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::fill::{
     fill_dead_loads, passive_forces, road_load_on, Extrados, ExtradosFaces, ExtradosProfile, Fill,
-    Passive, PassiveForce, RoadLoad,
+    FillLayer, Passive, PassiveForce, RoadLoad,
 };
 use thrustline_solver::arch::{Assembly, LiveLoad};
 use utoipa::ToSchema;
@@ -12,7 +12,8 @@ use utoipa::ToSchema;
 use super::rolling::{rolling_loads, Rolling, RollingDto};
 use crate::error::ApiError;
 use crate::limits::{
-    COORDINATE, FILL_ANGLE_DEG, FORCE, LOADS, MOBILISATION, PATCH_LENGTH, UNIT_WEIGHT_OR_ZERO,
+    COORDINATE, FILL_ANGLE_DEG, FILL_LAYERS, FORCE, LOADS, MOBILISATION, PATCH_LENGTH,
+    UNIT_WEIGHT_OR_ZERO,
 };
 use crate::validation::{count_within, within};
 
@@ -38,6 +39,25 @@ pub struct FillDto {
     #[serde(default)]
     #[schema(nullable)]
     pub passive: Option<PassiveDto>,
+    /// Denser layers below given levels (masonry backing at the haunches, a denser lower
+    /// fill), 1 to 20 of them at distinct levels below the road: below each `below` (down to
+    /// the next lower layer's) the column weighs that layer's unit weight, above the highest
+    /// the fill's. The weights, the passive pressure's σ_v and the drawing follow them.
+    #[serde(default)]
+    #[schema(nullable)]
+    pub layers: Option<Vec<FillLayerDto>>,
+}
+
+/// A layer of the fill below a level (model §10).
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FillLayerDto {
+    /// The layer's top (absolute y), below the road.
+    #[schema(examples(2.0))]
+    pub below: f64,
+    /// Its unit weight, 0 ≤ γ ≤ 1e12.
+    #[schema(examples(22.0))]
+    pub unit_weight: f64,
 }
 
 /// Passive restraint of the fill (model §5.1).
@@ -176,10 +196,11 @@ pub fn fill_loads(
     count_within("road_loads", road_loads.len(), LOADS)?;
     // Without fill, axles stand on the extrados: a weightless "fill" at the crown with no
     // dispersal puts each on the voussoir under it.
-    let carrier = fill.unwrap_or(Fill {
+    let carrier = fill.clone().unwrap_or(Fill {
         unit_weight: 0.0,
         road: top,
         dispersal_angle_deg: 0.0,
+        layers: Vec::new(),
     });
     // The extrados sampled once for the road loads and the rolling stops.
     let profile =
@@ -214,8 +235,10 @@ pub fn fill_loads(
         .zip(profile.as_ref())
         .map(|(r, profile)| rolling_loads(profile, &carrier, r))
         .transpose()?;
-    let dead = fill.map_or(Vec::new(), |f| fill_dead_loads(faces, &f));
-    let passive = match (fill, dto_passive) {
+    let dead = fill
+        .as_ref()
+        .map_or(Vec::new(), |f| fill_dead_loads(faces, f));
+    let passive = match (&fill, dto_passive) {
         (Some(fill), Some(p)) => {
             let passive = Passive {
                 friction_angle_deg: within(
@@ -225,7 +248,7 @@ pub fn fill_loads(
                 )?,
                 mobilisation: within("fill.passive.mobilisation", p.mobilisation, MOBILISATION)?,
             };
-            Some(passive_forces(assembly, faces, &fill, &passive))
+            Some(passive_forces(assembly, faces, fill, &passive))
         }
         _ => None,
     };
@@ -258,5 +281,50 @@ fn fill_from(dto: &FillDto, top: f64) -> Result<Fill, ApiError> {
         unit_weight,
         road: surface,
         dispersal_angle_deg: within("fill.dispersal_angle_deg", angle, FILL_ANGLE_DEG)?,
+        layers: fill_layers(dto.layers.as_deref(), surface)?,
     })
+}
+
+/// The fill's layers, lowest first: each below the road, at distinct levels.
+fn fill_layers(given: Option<&[FillLayerDto]>, road: f64) -> Result<Vec<FillLayer>, ApiError> {
+    let Some(given) = given else {
+        return Ok(Vec::new());
+    };
+    count_within("fill.layers", given.len(), FILL_LAYERS)?;
+    let mut layers = given
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            let field = |name: &str| format!("fill.layers[{i}].{name}");
+            let below = within(&field("below"), l.below, COORDINATE)?;
+            if below >= road {
+                return Err(ApiError::invalid(
+                    field("below"),
+                    format!(
+                        "{below} is out of range: a layer lies below the road (fill.surface = \
+                         {road})"
+                    ),
+                ));
+            }
+            Ok(FillLayer {
+                below,
+                unit_weight: within(&field("unit_weight"), l.unit_weight, UNIT_WEIGHT_OR_ZERO)?,
+            })
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    layers.sort_by(|a, b| a.below.total_cmp(&b.below));
+    if let Some(w) = layers.windows(2).find(|w| w[0].below == w[1].below) {
+        let i = given
+            .iter()
+            .rposition(|l| l.below == w[0].below)
+            .unwrap_or(0);
+        return Err(ApiError::invalid(
+            format!("fill.layers[{i}].below"),
+            format!(
+                "{} is given twice: each layer has a level of its own",
+                w[0].below
+            ),
+        ));
+    }
+    Ok(layers)
 }

@@ -327,7 +327,7 @@ impl<'de> Deserialize<'de> for GeometryDto {
 }
 
 /// A geometry object read as `T`, an error prefixed with its path inside the object.
-fn variant<T: DeserializeOwned, E: serde::de::Error>(value: &Value) -> Result<T, E> {
+pub(crate) fn variant<T: DeserializeOwned, E: serde::de::Error>(value: &Value) -> Result<T, E> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
         if path.is_empty() || path == "." {

@@ -1,25 +1,24 @@
-//! `POST /arch/minimum-thickness`: the thinnest circular arch that carries its own weight
-//! (model §3; Milankovitch 1904). A dead-load request with circular geometry whose `thickness`
-//! is optional (given, the answer adds the geometric factor of safety), plus an optional
-//! `tolerance` relative to the radius.
+//! `POST /arch/minimum-thickness`: the thinnest arch of a shape that carries its own weight
+//! (model §3; Milankovitch 1904). A dead-load request with circular or profile geometry whose
+//! `thickness` is optional (given, the answer adds the geometric factor of safety), plus an
+//! optional `tolerance` relative to the radius (half the span of a profile).
 
 use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
-    rupture_angle_deg, solve_minimum_thickness, CircularArch, LimitSettings, MinimumThickness,
+    rupture_angle_deg, solve_minimum_thickness_of, LimitSettings, MinimumThickness,
     MinimumThicknessOutcome, MinimumThicknessSettings, SolverFailure,
 };
 use utoipa::ToSchema;
 
-use super::geometry::CircularGeometryDto;
-use super::input::circular_arch;
 use super::material::{material, ring_material, Material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
 use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
+use super::thinnest::{thinnest, Thinnest, ThinnestGeometryDto};
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
-use crate::limits::{LENGTH, THICKNESS_TOLERANCE};
+use crate::limits::THICKNESS_TOLERANCE;
 use crate::pool::Cost;
 use crate::stop::Work;
 use crate::svg::Svg;
@@ -30,7 +29,7 @@ use thrustline_solver::arch::memory::chain_memory_bound;
 use thrustline_solver::budget::Stop;
 
 arch_request! {
-    /// The minimum-thickness question for a circular arch.
+    /// The minimum-thickness question for a circular arch or a profile.
     #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
     #[serde(deny_unknown_fields)]
     #[schema(examples(json!({
@@ -39,11 +38,11 @@ arch_request! {
         "tolerance": 1e-6
     })))]
     pub struct MinimumThicknessRequest {
-        /// The circular arch (one ring, one span); its `thickness`, if given, is the D of the
-        /// geometric factor of safety.
-        pub geometry: CircularGeometryDto,
-        /// Accuracy of the thickness relative to the radius, 1e-9 ≤ tolerance ≤ 1e-2. Defaults
-        /// to 1e-6.
+        /// The arch, circular or a profile (one ring, one span); its `thickness`, if given, is
+        /// the D of the geometric factor of safety.
+        pub geometry: ThinnestGeometryDto,
+        /// Accuracy of the thickness relative to the radius (half the span of a profile),
+        /// 1e-9 ≤ tolerance ≤ 1e-2. Defaults to 1e-6.
         #[serde(default = "default_tolerance", deserialize_with = "crate::nullable::thickness_tolerance")]
         #[schema(nullable)]
         pub tolerance: f64,
@@ -80,10 +79,13 @@ pub struct MinimumThicknessResponse {
     #[schema(examples(1.0747802))]
     #[schema(required = true)]
     pub thickness: Option<f64>,
-    /// thickness / radius.
+    /// thickness / radius (circular arches).
     #[schema(examples(0.10747802))]
     #[schema(required = true)]
     pub thickness_to_radius: Option<f64>,
+    /// thickness / span of the intrados (profiles).
+    #[schema(required = true)]
+    pub thickness_to_span: Option<f64>,
     /// The thickest thickness found not to carry it (the other end of the final bracket).
     #[schema(required = true)]
     pub thickness_below: Option<f64>,
@@ -93,7 +95,8 @@ pub struct MinimumThicknessResponse {
     #[schema(examples(1.5))]
     #[schema(required = true)]
     pub geometric_factor_of_safety: Option<f64>,
-    /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees.
+    /// Angle from the crown of the intrados hinge of the mechanism at the limit, in degrees
+    /// (circular arches).
     #[schema(examples(54.5))]
     #[schema(required = true)]
     pub rupture_angle_deg: Option<f64>,
@@ -136,8 +139,8 @@ pub async fn minimum_thickness(
 ) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
     let planned = plan(&request)?;
     let given = planned.given;
-    let (arch, result) = solve(&state, planned).await?;
-    Ok(ApiJson(response(&arch, &result, given)))
+    let (shape, result) = solve(&state, planned).await?;
+    Ok(ApiJson(response(&shape, &result, given)))
 }
 
 /// A table of the minimum-thickness answer as CSV.
@@ -162,8 +165,8 @@ pub async fn minimum_thickness_csv(
 ) -> Result<Csv, ApiError> {
     let planned = plan(&request)?;
     let given = planned.given;
-    let (arch, result) = solve(&state, planned).await?;
-    let answer = response(&arch, &result, given);
+    let (shape, result) = solve(&state, planned).await?;
+    let answer = response(&shape, &result, given);
     match table {
         MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
         MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
@@ -192,22 +195,24 @@ pub async fn minimum_thickness_svg(
 ) -> Result<Svg, ApiError> {
     let planned = plan(&request)?;
     let given = planned.given;
-    let curved = request.geometry.is_curved_single();
-    let (arch, result) = solve(&state, planned).await?;
-    let answer = response(&arch, &result, given);
+    let curved = request.geometry.is_curved();
+    let (shape, result) = solve(&state, planned).await?;
+    let answer = response(&shape, &result, given);
     let (shown, mechanism) = match &result.outcome {
         MinimumThicknessOutcome::Found {
             thickness_below,
             mechanism,
             ..
-        } => (
-            arch.with_thickness(*thickness_below).ok(),
-            mechanism.as_ref(),
-        ),
+        } => (shape.assembly(*thickness_below).ok(), mechanism.as_ref()),
         _ => (None, None),
     };
-    let title = match (answer.thickness, answer.thickness_to_radius) {
-        (Some(d), Some(ratio)) => format!("Minimum thickness: D = {d:.6}, D/R = {ratio:.6}"),
+    let title = match (
+        answer.thickness,
+        answer.thickness_to_radius,
+        answer.thickness_to_span,
+    ) {
+        (Some(d), Some(ratio), _) => format!("Minimum thickness: D = {d:.6}, D/R = {ratio:.6}"),
+        (Some(d), _, Some(ratio)) => format!("Minimum thickness: t = {d:.6}, t/span = {ratio:.6}"),
         _ => "Minimum thickness: none found".to_owned(),
     };
     let caption = match (&shown, answer.thickness_below) {
@@ -219,13 +224,14 @@ pub async fn minimum_thickness_svg(
         _ => answer.detail.clone(),
     };
     let drawn = match shown {
-        Some(collapsing) => collapsing,
+        Some(collapsing) => Some(collapsing),
         None => given
-            .and_then(|d| arch.with_thickness(d).ok())
-            .unwrap_or(arch),
+            .and_then(|d| shape.assembly(d).ok())
+            .or_else(|| shape.assembly(0.1 * shape.scale()).ok()),
     };
+    let drawn = drawn.ok_or_else(|| ApiError::invalid("geometry", "the arch cannot be drawn"))?;
     Ok(Svg(super::drawing::minimum_thickness(
-        &drawn.assembly(),
+        &drawn,
         mechanism.filter(|_| answer.thickness_below.is_some()),
         curved,
         (&title, &caption),
@@ -235,7 +241,7 @@ pub async fn minimum_thickness_svg(
 /// A validated minimum-thickness request: the arch whose shape is searched, its material, the
 /// search's settings and the thickness given (for the geometric factor of safety).
 struct Planned {
-    arch: CircularArch,
+    shape: Thinnest,
     material: Material,
     settings: MinimumThicknessSettings,
     given: Option<f64>,
@@ -243,28 +249,7 @@ struct Planned {
 
 /// Validates the request once: one ring and one span, the material, the tolerance.
 fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
-    let g = &request.geometry;
-    let radius = within("geometry.radius", g.radius, LENGTH)?;
-    for (field, many) in [
-        ("geometry.rings", g.rings != 1),
-        ("geometry.spans", g.spans != 1),
-        ("geometry.pier_width", g.pier_width.is_some()),
-        ("geometry.pier_height", g.pier_height.is_some()),
-    ] {
-        if many {
-            return Err(ApiError::invalid(
-                field,
-                "the minimum-thickness search takes one ring and one span: leave it out",
-            ));
-        }
-    }
-    // A given thickness is checked (0 < D < 2R) for the geometric factor; any valid one serves
-    // as the template of the search.
-    let given = g
-        .thickness
-        .map(|d| circular_arch(g, d).map(|_| d))
-        .transpose()?;
-    let arch = circular_arch(g, 0.1 * radius)?;
+    let (shape, given) = thinnest(&request.geometry)?;
     let material = material(request.material())?;
     // One ring: the ring fields have nothing to act on, but a value out of range is still an
     // error, as on the other routes.
@@ -281,7 +266,7 @@ fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
         ..MinimumThicknessSettings::default()
     };
     Ok(Planned {
-        arch,
+        shape,
         material,
         settings,
         given,
@@ -293,9 +278,9 @@ fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
 async fn solve(
     state: &AppState,
     planned: Planned,
-) -> Result<(CircularArch, MinimumThickness), ApiError> {
+) -> Result<(Thinnest, MinimumThickness), ApiError> {
     let Planned {
-        arch,
+        shape,
         material,
         settings,
         ..
@@ -303,7 +288,7 @@ async fn solve(
     // A search of dead-load programmes on the chain formulation.
     let cost = Cost {
         light: false,
-        memory: chain_memory_bound(arch.voussoirs()),
+        memory: chain_memory_bound(shape.voussoirs()),
     };
     let ran = state
         .pool
@@ -315,17 +300,18 @@ async fn solve(
                 },
                 ..settings
             };
-            let result = solve_minimum_thickness(
-                &arch,
+            let result = solve_minimum_thickness_of(
+                &|d| shape.assembly(d),
+                shape.scale(),
                 material.unit_weight,
                 material.limits,
                 material.friction,
                 &settings,
             );
-            (arch, result)
+            (shape, result)
         })
         .await?;
-    let (arch, result) = ran.value;
+    let (shape, result) = ran.value;
     let result = result?;
     tracing::info!(
         evaluations = result.evaluations,
@@ -340,20 +326,25 @@ async fn solve(
         };
         return Err(state.refuse(Stop::TimeLimit, work, ran.shared));
     }
-    Ok((arch, result))
+    Ok((shape, result))
 }
 
 /// The answer, built whole for each outcome.
 fn response(
-    arch: &CircularArch,
+    shape: &Thinnest,
     result: &MinimumThickness,
     given: Option<f64>,
 ) -> MinimumThicknessResponse {
-    let radius = arch.radius();
+    let scale = shape.scale();
+    let (least, most) = match shape {
+        Thinnest::Circle(_) => ("1e-6·R", "2·radius"),
+        Thinnest::Profile { .. } => ("1e-6·span/2", "the span"),
+    };
     let none = MinimumThicknessResponse {
         outcome: MinimumThicknessOutcomeDto::SolverFailed,
         thickness: None,
         thickness_to_radius: None,
+        thickness_to_span: None,
         thickness_below: None,
         geometric_factor_of_safety: None,
         rupture_angle_deg: None,
@@ -372,13 +363,17 @@ fn response(
         } => MinimumThicknessResponse {
             outcome: MinimumThicknessOutcomeDto::Found,
             thickness: Some(*thickness),
-            thickness_to_radius: Some(thickness / radius),
+            thickness_to_radius: shape.circle(*thickness).map(|a| thickness / a.radius()),
+            thickness_to_span: shape.span().map(|span| thickness / span),
             thickness_below: Some(*thickness_below),
             geometric_factor_of_safety: given.map(|d| d / thickness),
-            rupture_angle_deg: mechanism.as_ref().and_then(|m| rupture_angle_deg(arch, m)),
+            rupture_angle_deg: match (mechanism, shape.circle(*thickness_below)) {
+                (Some(m), Some(arch)) => rupture_angle_deg(&arch, m),
+                _ => None,
+            },
             // The mechanism is the collapse of the arch just too thin.
-            hinges: match (mechanism, arch.with_thickness(*thickness_below)) {
-                (Some(m), Ok(collapsing)) => hinges(&collapsing.assembly(), m),
+            hinges: match (mechanism, shape.assembly(*thickness_below)) {
+                (Some(m), Ok(collapsing)) => hinges(&collapsing, m),
                 _ => Vec::new(),
             },
             active_constraints: mechanism
@@ -393,9 +388,9 @@ fn response(
         MinimumThicknessOutcome::StandsHoweverThin => MinimumThicknessResponse {
             outcome: MinimumThicknessOutcomeDto::StandsHoweverThin,
             detail: format!(
-                "no finite minimum: even thickness {} (1e-6·R) carries the dead load ({})",
-                1e-6 * radius,
-                if arch.voussoirs() <= 3 {
+                "no finite minimum: even thickness {} ({least}) carries the dead load ({})",
+                1e-6 * scale,
+                if shape.voussoirs() <= 3 {
                     "with three or fewer voussoirs no mechanism can form under symmetric dead load"
                 } else {
                     "no mechanism of these voussoirs forms under their own weight: base angles \
@@ -406,9 +401,10 @@ fn response(
         },
         MinimumThicknessOutcome::NeverStands => MinimumThicknessResponse {
             outcome: MinimumThicknessOutcomeDto::NeverStands,
-            detail: "no thickness below 2·radius carries the dead load (with friction: the \
-                     coefficient is too low for the joints at the springings)"
-                .to_owned(),
+            detail: format!(
+                "no thickness below {most} carries the dead load (with friction: the \
+                 coefficient is too low for the joints at the springings)"
+            ),
             ..none
         },
         MinimumThicknessOutcome::SolverFailed(failure) => MinimumThicknessResponse {

@@ -24,6 +24,7 @@ pub mod rolling;
 pub mod solve;
 pub mod study;
 pub mod tables;
+pub mod thinnest;
 pub mod warnings;
 
 use std::sync::Arc;

@@ -133,7 +133,7 @@ pub fn rolling_loads(
     // of 1001 stops of 20 axles spread over 10,000 voussoirs made 9 GB of them).
     let axles = Axles {
         profile: profile.clone(),
-        carrier: *carrier,
+        carrier: carrier.clone(),
         axles,
     };
     let mut loads = Vec::with_capacity(n);

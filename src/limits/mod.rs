@@ -250,6 +250,8 @@ pub const SLOPE_SUPPORTS: Count = Count::new(0, MAX_SUPPORTS);
 pub const LOADS: Count = Count::new(0, MAX_LOADS);
 /// Corners of an assembly's polygon.
 pub const POLYGON_CORNERS: Count = Count::new(3, 256);
+/// Layers of an arch's fill.
+pub const FILL_LAYERS: Count = Count::new(1, 20);
 /// Points of a measured intrados.
 pub const INTRADOS_POINTS: Count = Count::new(3, MAX_VOUSSOIRS);
 /// A profile's rise, or a pointed arch's radius, as a multiple of its span.

@@ -24,6 +24,7 @@ fn the_fill_weighs_what_lies_between_the_extrados_and_the_road() {
         unit_weight: 18.0,
         road: 12.0,
         dispersal_angle_deg: 30.0,
+        layers: Vec::new(),
     };
     let loads = fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill);
     let total: f64 = loads.iter().map(|l| -l.fy).sum();
@@ -52,6 +53,7 @@ fn the_supports_carry_the_arch_the_fill_and_the_live_load() {
         unit_weight: 1.0,
         road: 11.5,
         dispersal_angle_deg: 30.0,
+        layers: Vec::new(),
     };
     let dead = fill_dead_loads(&ExtradosFaces::of_chain(&arch, ARC), &fill);
     let live = road_load(
@@ -94,6 +96,7 @@ fn weightless_fill_without_dispersal_is_the_plain_live_load_on_the_extrados() {
         unit_weight: 0.0,
         road: 12.0,
         dispersal_angle_deg: 0.0,
+        layers: Vec::new(),
     };
     let x: f64 = -4.3;
     let loads = road_load(
@@ -157,6 +160,7 @@ fn dispersal_spreads_the_load_over_the_width_the_angle_gives() {
         unit_weight: 0.0,
         road: 12.5,
         dispersal_angle_deg: 30.0,
+        layers: Vec::new(),
     };
     let loads = road_load(
         &ExtradosFaces::of_chain(&arch, ARC),
@@ -195,6 +199,7 @@ fn a_road_load_beyond_the_springing_puts_only_its_share_on_the_arch() {
         unit_weight: 1.0,
         road: 11.5,
         dispersal_angle_deg: 30.0,
+        layers: Vec::new(),
     };
     let line = |x: f64| 11.5 - 3f64.sqrt() * (x + 12.0) - (10.5f64 * 10.5 - x * x).max(0.0).sqrt();
     let (mut a, mut b) = (-10.5, 0.0);

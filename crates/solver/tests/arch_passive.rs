@@ -18,6 +18,7 @@ fn fill() -> Fill {
         unit_weight: 1.0,
         road: 11.5,
         dispersal_angle_deg: 30.0,
+        layers: Vec::new(),
     }
 }
 
@@ -65,6 +66,7 @@ fn capacities_follow_the_passive_pressure_on_a_vertical_face() {
         unit_weight: 18.0,
         road: 3.0,
         dispersal_angle_deg: 0.0,
+        layers: Vec::new(),
     };
     let p = Passive {
         friction_angle_deg: 30.0,

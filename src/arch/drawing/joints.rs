@@ -19,7 +19,7 @@ pub fn passive(canvas: &mut Canvas, problem: &ArchProblem, mobilised: &[f64], le
             let from = (force.point.0 - force.direction * length, force.point.1);
             canvas.arrow_in(from, force.point, "#6d4c41", 1.6);
         }
-        legend.push(("#6d4c41", "→ passive pressure"));
+        legend.push(("#6d4c41", "→ passive pressure".into()));
     }
 }
 
@@ -42,7 +42,7 @@ pub fn crushing(
             false,
             "fill=\"none\" stroke=\"#ef6c00\" stroke-width=\"4\"",
         );
-        legend.push(("#ef6c00", "▮ crushing"));
+        legend.push(("#ef6c00", "▮ crushing".into()));
     }
 }
 
@@ -77,7 +77,7 @@ pub fn sliding(
         if joints.len() > MAX_SLIP_ARROWS {
             legend.push((
                 "#7b1fa2",
-                "┊ sliding joints (slip arrows left out: too many)",
+                "┊ sliding joints (slip arrows left out: too many)".into(),
             ));
             return;
         }
@@ -114,7 +114,7 @@ pub fn sliding(
                 }
             }
         }
-        legend.push(("#7b1fa2", "┊ sliding joints (→ slip)"));
+        legend.push(("#7b1fa2", "┊ sliding joints (→ slip)".into()));
     }
 }
 

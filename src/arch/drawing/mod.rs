@@ -10,7 +10,7 @@ use super::rolling::RollingOutDto;
 use crate::svg::Canvas;
 
 /// The key's entries: colour and text.
-type Legend = Vec<(&'static str, &'static str)>;
+type Legend = Vec<(&'static str, std::borrow::Cow<'static, str>)>;
 
 /// Chains of more blocks than this are drawn as one outline.
 const MERGED_ABOVE: usize = 200;
@@ -210,7 +210,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
         joints::sliding(&mut canvas, assembly, mechanism, &mut legend);
     }
     if !solved.thrust_line.is_empty() {
-        legend.insert(0, ("#c62828", "— line of thrust"));
+        legend.insert(0, ("#c62828", "— line of thrust".into()));
     }
     if mechanism.is_some_and(|m| !m.hinges.is_empty()) {
         legend.push((
@@ -219,20 +219,21 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
                 "● hinges (unlabelled: too many)"
             } else {
                 "● hinges"
-            },
+            }
+            .into(),
         ));
     }
     if mechanism.is_some() {
         legend.push(match dense {
             true => (
                 "#546e7a",
-                "collapse mechanism and sliding joints not drawn: too many blocks",
+                "collapse mechanism and sliding joints not drawn: too many blocks".into(),
             ),
-            false => ("#546e7a", "- - collapse mechanism"),
+            false => ("#546e7a", "- - collapse mechanism".into()),
         });
     }
     if !loads.is_empty() {
-        legend.push(("#1565c0", "→ live loads"));
+        legend.push(("#1565c0", "→ live loads".into()));
     }
     for (colour, text) in &legend {
         canvas.key(text, colour, 11.0, false);

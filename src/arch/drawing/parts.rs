@@ -6,7 +6,7 @@ use thrustline_solver::arch::fill::{ExtradosFaces, ExtradosProfile, Fill, RoadLo
 use thrustline_solver::arch::{Assembly, HingeSide, LiveLoad, Mechanism};
 
 use super::{outline, Legend, MAX_HINGE_LABELS, MERGED_ABOVE};
-use crate::svg::{escape, Canvas, Labels};
+use crate::svg::{escape, tick, Canvas, Labels};
 
 /// The fill between the extrados and the road, and each road load's patch and dispersal.
 pub fn fill(
@@ -33,7 +33,35 @@ pub fn fill(
     outline.push(road[1]);
     canvas.polygon(&outline, "fill=\"#f3ead7\" stroke=\"none\"");
     canvas.polyline(&road, "stroke=\"#616161\" stroke-width=\"2.5\"");
-    legend.push(("#a1887f", "▬ fill and road"));
+    legend.push(("#a1887f", "▬ fill and road".into()));
+    // Layers, highest first, each the fill below its level drawn over the one above, darker
+    // the lower it lies (no stroke: the clipped outline runs twice along the level).
+    const SHADES: [(&str, &str); 4] = [
+        ("#e6d5b3", "#8d6e63"),
+        ("#d6bf95", "#795548"),
+        ("#c4a77a", "#6d4c41"),
+        ("#b08f62", "#5d4037"),
+    ];
+    for (i, layer) in f.layers.iter().rev().enumerate() {
+        let part = clip_below(&outline, layer.below);
+        if part.len() < 3 {
+            continue;
+        }
+        let (shade, key) = SHADES[i.min(SHADES.len() - 1)];
+        canvas.polygon(
+            &part,
+            &format!("fill=\"{shade}\" stroke=\"none\" data-kind=\"fill-layer\""),
+        );
+        legend.push((
+            key,
+            format!(
+                "▬ fill γ = {} below y = {}",
+                tick(layer.unit_weight),
+                tick(layer.below)
+            )
+            .into(),
+        ));
+    }
     // Road loads: the patch on the road and its dispersal lines down to the extrados.
     for load in road_loads {
         let ends = profile.dispersal_ends(f, *load);
@@ -47,8 +75,25 @@ pub fn fill(
         );
     }
     if !road_loads.is_empty() {
-        legend.push(("#1565c0", "- - dispersal"));
+        legend.push(("#1565c0", "- - dispersal".into()));
     }
+}
+
+/// The part of a polygon at or below level `y` (Sutherland–Hodgman against one half-plane).
+fn clip_below(polygon: &[(f64, f64)], y: f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(polygon.len() + 2);
+    for (i, &p) in polygon.iter().enumerate() {
+        let q = polygon[(i + 1) % polygon.len()];
+        let (p_in, q_in) = (p.1 <= y, q.1 <= y);
+        if p_in {
+            out.push(p);
+        }
+        if p_in != q_in {
+            let t = (y - p.1) / (q.1 - p.1);
+            out.push((p.0 + t * (q.0 - p.0), y));
+        }
+    }
+    out
 }
 
 /// For a chain drawn as one outline: its blocks and the step between the joints drawn (the key

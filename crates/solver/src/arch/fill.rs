@@ -26,8 +26,9 @@ pub enum Extrados {
     },
 }
 
-/// The fill: unit weight, road level and the dispersal angle of road loads.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The fill: unit weight, road level, the dispersal angle of road loads and denser layers
+/// below given levels (backing).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Fill {
     /// Unit weight of the fill (≥ 0).
     pub unit_weight: f64,
@@ -35,6 +36,61 @@ pub struct Fill {
     pub road: f64,
     /// Dispersal angle of road loads from the vertical, in degrees (0 ≤ δ ≤ 60).
     pub dispersal_angle_deg: f64,
+    /// Layers by level, lowest first (distinct levels below the road): below each one's level
+    /// and above the next lower one's, the fill weighs that layer's unit weight (model §10).
+    pub layers: Vec<FillLayer>,
+}
+
+/// A layer of the fill: below `below` (down to the next lower layer) it weighs `unit_weight`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FillLayer {
+    /// The layer's top level (absolute y).
+    pub below: f64,
+    /// Its unit weight (≥ 0).
+    pub unit_weight: f64,
+}
+
+impl Fill {
+    /// The weight of the column of fill from level y up to the road, per unit horizontal length:
+    /// ∫ γ(η) dη over y < η < road.
+    pub fn column(&self, y: f64) -> f64 {
+        let mut weight = 0.0;
+        let mut floor = y;
+        for layer in &self.layers {
+            let top = layer.below.min(self.road);
+            if top > floor {
+                weight += layer.unit_weight * (top - floor);
+                floor = top;
+            }
+        }
+        weight + self.unit_weight * (self.road - floor).max(0.0)
+    }
+
+    /// The levels where the column's unit weight changes, strictly between `a` and `b`.
+    fn levels_between(&self, a: f64, b: f64) -> impl Iterator<Item = f64> + '_ {
+        let (lo, hi) = (a.min(b), a.max(b));
+        self.layers
+            .iter()
+            .map(|l| l.below)
+            .filter(move |&y| y > lo && y < hi)
+    }
+
+    /// A piece of a face from `p` to `q` cut where it crosses a layer's level (the column is
+    /// linear between the cuts), as the points along it.
+    fn cut(&self, p: (f64, f64), q: (f64, f64)) -> Vec<(f64, f64)> {
+        let mut ts: Vec<f64> = self
+            .levels_between(p.1, q.1)
+            .map(|y| (y - p.1) / (q.1 - p.1))
+            .collect();
+        ts.sort_by(f64::total_cmp);
+        let mut points = vec![p];
+        points.extend(
+            ts.into_iter()
+                .map(|t| (p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))),
+        );
+        points.push(q);
+        points
+    }
 }
 
 /// A load on the road: `fy` (up positive) spread over a patch `length` wide centred at `x`.
@@ -153,6 +209,9 @@ impl ExtradosFaces {
 /// The fill's weight on each voussoir: a vertical load at the column's centroid x, on the
 /// extrados. Blocks with no fill above them carry none.
 pub fn fill_dead_loads(faces: &ExtradosFaces, fill: &Fill) -> Vec<LiveLoad> {
+    if !fill.layers.is_empty() {
+        return layered_dead_loads(faces, fill);
+    }
     if fill.unit_weight == 0.0 {
         return Vec::new();
     }
@@ -181,6 +240,41 @@ pub fn fill_dead_loads(faces: &ExtradosFaces, fill: &Fill) -> Vec<LiveLoad> {
                     point: (x, y_at(points, x).unwrap_or(points[points.len() / 2].1)),
                     fx: 0.0,
                     fy: -fill.unit_weight * area,
+                    moment: 0.0,
+                }
+            })
+        })
+        .collect()
+}
+
+/// [`fill_dead_loads`] with layers: each sampled piece cut where it crosses a layer's level,
+/// the column's weight linear in x on each part (exact for straight faces).
+fn layered_dead_loads(faces: &ExtradosFaces, fill: &Fill) -> Vec<LiveLoad> {
+    faces
+        .faces
+        .iter()
+        .filter_map(|(b, points)| {
+            let (mut force, mut moment) = (0.0, 0.0);
+            for w in points.windows(2) {
+                for p in fill.cut(w[0], w[1]).windows(2) {
+                    let (w0, w1) = (fill.column(p[0].1), fill.column(p[1].1));
+                    let f = 0.5 * (w0 + w1) * (p[1].0 - p[0].0).abs();
+                    let x = if w0 + w1 > 0.0 {
+                        p[0].0 + (p[1].0 - p[0].0) * (w0 + 2.0 * w1) / (3.0 * (w0 + w1))
+                    } else {
+                        0.5 * (p[0].0 + p[1].0)
+                    };
+                    force += f;
+                    moment += f * x;
+                }
+            }
+            (force > 0.0).then(|| {
+                let x = moment / force;
+                LiveLoad {
+                    block: *b,
+                    point: (x, y_at(points, x).unwrap_or(points[points.len() / 2].1)),
+                    fx: 0.0,
+                    fy: -force,
                     moment: 0.0,
                 }
             })
@@ -373,7 +467,7 @@ pub fn road_load_on(profile: &ExtradosProfile, fill: &Fill, load: RoadLoad) -> V
 
 /// Passive restraint of the fill (model §5.1): where the arch sways into the fill, a horizontal
 /// pressure on the extrados of up to `mobilisation`·K_p·σ_v, K_p = (1 + sin φ)/(1 − sin φ) and
-/// σ_v = γ_f·(road − y) the fill's vertical stress.
+/// σ_v = γ_f·(road − y) the fill's vertical stress (with layers, the column's weight above y).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Passive {
     /// Friction angle φ of the fill, in degrees (0 ≤ φ < 90).
@@ -400,16 +494,42 @@ pub fn passive_forces(
     fill: &Fill,
     passive: &Passive,
 ) -> Vec<PassiveForce> {
-    let scale = passive.mobilisation * passive.coefficient() * fill.unit_weight;
-    if scale <= 0.0 {
+    let layered = !fill.layers.is_empty();
+    let scale =
+        passive.mobilisation * passive.coefficient() * if layered { 1.0 } else { fill.unit_weight };
+    let heaviest = fill
+        .layers
+        .iter()
+        .map(|l| l.unit_weight)
+        .fold(fill.unit_weight, f64::max);
+    if scale <= 0.0 || heaviest <= 0.0 {
         return Vec::new();
     }
+    // σ_v: the column above the point (with layers), or γ_f·(road − y).
+    let stress = |y: f64| {
+        if layered {
+            scale * fill.column(y)
+        } else {
+            scale * (fill.road - y).max(0.0)
+        }
+    };
     let mut out = Vec::new();
     for (b, points) in &faces.faces {
         let (b, block) = (*b, &assembly.blocks[*b]);
         // (force, Σ force·x, Σ force·y) per direction: index 0 towards −x, 1 towards +x.
         let mut sums = [[0.0f64; 3]; 2];
-        for w in points.windows(2) {
+        let pieces: Vec<[(f64, f64); 2]> = points
+            .windows(2)
+            .flat_map(|w| {
+                let cut = if layered {
+                    fill.cut(w[0], w[1])
+                } else {
+                    w.to_vec()
+                };
+                cut.windows(2).map(|p| [p[0], p[1]]).collect::<Vec<_>>()
+            })
+            .collect();
+        for w in &pieces {
             let (dx, dy) = (w[1].0 - w[0].0, w[1].1 - w[0].1);
             let middle = (0.5 * (w[0].0 + w[1].0), 0.5 * (w[0].1 + w[1].1));
             // The normal of the piece pointing out of the block (into the fill).
@@ -421,10 +541,7 @@ pub fn passive_forces(
             if normal.0 == 0.0 {
                 continue;
             }
-            let (s0, s1) = (
-                scale * (fill.road - w[0].1).max(0.0),
-                scale * (fill.road - w[1].1).max(0.0),
-            );
+            let (s0, s1) = (stress(w[0].1), stress(w[1].1));
             let force = 0.5 * (s0 + s1) * dy.abs();
             if force <= 0.0 {
                 continue;

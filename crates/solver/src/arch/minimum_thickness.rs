@@ -13,7 +13,7 @@
 use std::time::Instant;
 
 use super::error::ArchError;
-use super::geometry::CircularArch;
+use super::geometry::{Assembly, CircularArch};
 use super::limit::full_dead_load_margin;
 use super::limit::problem::{ArchProblem, InterfaceLimits, LimitSettings};
 use super::mechanism::{HingeSide, Mechanism};
@@ -92,9 +92,12 @@ struct Evaluation {
     mechanism: Option<Mechanism>,
 }
 
+/// The blocks of an arch of a given thickness.
+pub type ArchOfThickness<'a> = &'a dyn Fn(f64) -> Result<Assembly, ArchError>;
+
 /// δ(D) for the arch, counting the programmes.
 struct MarginOfThickness<'a> {
-    arch: &'a CircularArch,
+    arch: ArchOfThickness<'a>,
     unit_weight: f64,
     limits: InterfaceLimits,
     friction: Option<f64>,
@@ -109,9 +112,9 @@ impl MarginOfThickness<'_> {
         if self.deadline.is_some_and(|d| Instant::now() >= d) || self.settings.budget.is_spent() {
             return Err(Stop::Solver(SolverFailure::MaxTime));
         }
-        let arch = self.arch.with_thickness(thickness).map_err(Stop::Input)?;
+        let assembly = (self.arch)(thickness).map_err(Stop::Input)?;
         let problem = ArchProblem::new(
-            arch.assembly(),
+            assembly,
             self.unit_weight,
             self.limits,
             self.friction,
@@ -137,6 +140,28 @@ pub fn solve_minimum_thickness(
     friction: Option<f64>,
     settings: &MinimumThicknessSettings,
 ) -> Result<MinimumThickness, ArchError> {
+    let of_thickness = |d: f64| arch.with_thickness(d).map(|a| a.assembly());
+    solve_minimum_thickness_of(
+        &of_thickness,
+        arch.radius(),
+        unit_weight,
+        limits,
+        friction,
+        settings,
+    )
+}
+
+/// Searches the minimum thickness of the arch whose blocks at thickness D are `arch(D)`, on
+/// 1e-6·`scale` < D < 2·`scale` (the radius of a circle, half the span of a profile), to
+/// `settings.tolerance`·`scale`.
+pub fn solve_minimum_thickness_of(
+    arch: ArchOfThickness,
+    scale: f64,
+    unit_weight: f64,
+    limits: InterfaceLimits,
+    friction: Option<f64>,
+    settings: &MinimumThicknessSettings,
+) -> Result<MinimumThickness, ArchError> {
     let start = Instant::now();
     let mut delta = MarginOfThickness {
         arch,
@@ -148,7 +173,7 @@ pub fn solve_minimum_thickness(
         iterations: 0,
         deadline: settings.time_limit.map(|limit| start + limit),
     };
-    let outcome = match search(&mut delta, arch.radius(), settings) {
+    let outcome = match search(&mut delta, scale, settings) {
         Ok(outcome) => outcome,
         Err(Stop::Solver(failure)) => MinimumThicknessOutcome::SolverFailed(failure),
         Err(Stop::Input(error)) => return Err(error),

@@ -53,8 +53,8 @@ pub use limit::{
 };
 pub use mechanism::{ActiveConstraint, Bound, Hinge, HingeSide, Mechanism, Resultant};
 pub use minimum_thickness::{
-    rupture_angle_deg, solve_minimum_thickness, MinimumThickness, MinimumThicknessOutcome,
-    MinimumThicknessSettings,
+    rupture_angle_deg, solve_minimum_thickness, solve_minimum_thickness_of, MinimumThickness,
+    MinimumThicknessOutcome, MinimumThicknessSettings,
 };
 pub use rolling::{sweep_live_loads, Sweep};
 pub use thrust_line::{support_reactions, thrust_line, SupportReaction, ThrustPoint};
