@@ -91,6 +91,9 @@ pub fn in_design_values(request: &LiveLoadRequest, f: &ArchFactors) -> LiveLoadR
     r.compressive_strength = r.compressive_strength.map(|s| s / f.strength);
     if let Some(fill) = r.fill.as_mut() {
         fill.unit_weight *= f.fill;
+        for layer in fill.layers.iter_mut().flatten() {
+            layer.unit_weight *= f.fill;
+        }
     }
     for load in &mut r.loads {
         load.fx *= f.live;
@@ -101,7 +104,19 @@ pub fn in_design_values(request: &LiveLoadRequest, f: &ArchFactors) -> LiveLoadR
         load.fy *= f.live;
     }
     if let Some(rolling) = r.rolling.as_mut() {
-        for axle in &mut rolling.axles {
+        // A named vehicle is factored as its axles.
+        if let Some(super::rolling::VehicleDto::Named(name)) = rolling.vehicle {
+            rolling.vehicle = Some(super::rolling::VehicleDto::Axles(
+                super::rolling::VehicleAxlesDto {
+                    axles: name.axles(),
+                },
+            ));
+        }
+        let vehicle = match rolling.vehicle.as_mut() {
+            Some(super::rolling::VehicleDto::Axles(v)) => v.axles.as_mut_slice(),
+            _ => &mut [],
+        };
+        for axle in rolling.axles.iter_mut().flatten().chain(vehicle) {
             axle.fy *= f.live;
         }
     }

@@ -9,7 +9,9 @@ use thrustline_solver::arch::LiveLoad;
 use utoipa::ToSchema;
 
 use crate::error::ApiError;
-use crate::limits::{AXLES, COORDINATE, FORCE, MAX_LENGTH, PATCH_LENGTH, ROLLING_POSITIONS};
+use crate::limits::{
+    AXLES, COORDINATE, FORCE, MAX_LENGTH, PATCH_LENGTH, POSITIVE_LENGTH, ROLLING_POSITIONS,
+};
 use crate::validation::{count_within, number, within};
 
 /// One axle of a rolling load.
@@ -33,8 +35,19 @@ pub struct AxleDto {
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RollingDto {
-    /// The axles (1 to 20).
-    pub axles: Vec<AxleDto>,
+    /// The axles (1 to 20), offsets from the reference point; or give `vehicle`.
+    #[serde(default)]
+    pub axles: Option<Vec<AxleDto>>,
+    /// A named vehicle (EN 1991-2's load models, in kN and m) or `{"axles": [...]}`, instead
+    /// of `axles`.
+    #[serde(default)]
+    #[schema(nullable)]
+    pub vehicle: Option<VehicleDto>,
+    /// The width of the strip analysed, > 0: every axle load is divided by it (an axle's
+    /// load spread across the strip the arch is analysed for). Defaults to 1.
+    #[serde(default)]
+    #[schema(nullable, examples(2.5))]
+    pub width: Option<f64>,
     /// First position of the reference point.
     pub x_start: f64,
     /// Last position (≥ x_start).
@@ -47,6 +60,85 @@ pub struct RollingDto {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub refine_critical: bool,
+}
+
+/// A vehicle of an assessment code (model §10), in kN and metres, its reference point at the
+/// middle of its axles.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum VehicleNameDto {
+    /// EN 1991-2 load model 1's tandem: two axles 1.2 m apart, 300 kN each, contact length
+    /// 0.4 m.
+    En1991Lm1Tandem,
+    /// EN 1991-2 load model 2: one axle of 400 kN, contact length 0.35 m.
+    En1991Lm2,
+}
+
+impl VehicleNameDto {
+    /// The vehicle's axles: (offset, fy, contact length).
+    pub fn axles(self) -> Vec<AxleDto> {
+        let axle = |offset: f64, fy: f64, length: f64| AxleDto { offset, fy, length };
+        match self {
+            Self::En1991Lm1Tandem => vec![axle(-0.6, -300.0, 0.4), axle(0.6, -300.0, 0.4)],
+            Self::En1991Lm2 => vec![axle(0.0, -400.0, 0.35)],
+        }
+    }
+}
+
+/// Axles given as a vehicle.
+#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct VehicleAxlesDto {
+    /// The axles (1 to 20).
+    pub axles: Vec<AxleDto>,
+}
+
+/// A vehicle: a code's by name, or axles.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+#[serde(untagged)]
+pub enum VehicleDto {
+    /// By name.
+    Named(VehicleNameDto),
+    /// By its axles.
+    Axles(VehicleAxlesDto),
+}
+
+impl<'de> Deserialize<'de> for VehicleDto {
+    /// A name or an object of axles, each read with its own errors (an unknown name lists
+    /// the names).
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        use serde::de::Error as _;
+        let value = serde_json::Value::deserialize(deserializer)?;
+        match &value {
+            serde_json::Value::String(_) => VehicleNameDto::deserialize(value)
+                .map(Self::Named)
+                .map_err(D::Error::custom),
+            serde_json::Value::Object(_) => super::geometry::variant(&value).map(Self::Axles),
+            other => Err(D::Error::custom(format!(
+                "invalid type: {}, expected a vehicle's name or {{\"axles\": [...]}}",
+                crate::extract::json_kind(other)
+            ))),
+        }
+    }
+}
+
+impl RollingDto {
+    /// The axles rolled and the field they came from: `axles`, or the vehicle's.
+    pub fn given_axles(&self) -> Result<(Vec<AxleDto>, &'static str), ApiError> {
+        match (&self.vehicle, &self.axles) {
+            (Some(_), Some(_)) => Err(ApiError::invalid(
+                "rolling.vehicle",
+                "give either vehicle or axles, not both",
+            )),
+            (None, None) => Err(ApiError::invalid(
+                "rolling.axles",
+                "give the axles (1 to 20), or a vehicle",
+            )),
+            (None, Some(axles)) => Ok((axles.clone(), "rolling.axles")),
+            (Some(VehicleDto::Named(name)), _) => Ok((name.axles(), "rolling.vehicle")),
+            (Some(VehicleDto::Axles(v)), _) => Ok((v.axles.clone(), "rolling.vehicle.axles")),
+        }
+    }
 }
 
 /// A validated rolling load: the live loads at each stop.
@@ -93,7 +185,9 @@ pub fn rolling_loads(
     carrier: &Fill,
     dto: &RollingDto,
 ) -> Result<Rolling, ApiError> {
-    count_within("rolling.axles", dto.axles.len(), AXLES)?;
+    let (given, field) = dto.given_axles()?;
+    count_within(field, given.len(), AXLES)?;
+    let width = within("rolling.width", dto.width.unwrap_or(1.0), POSITIVE_LENGTH)?;
     let x_start = within("rolling.x_start", dto.x_start, COORDINATE)?;
     let x_end = number("rolling.x_end", dto.x_end, x_start, false, MAX_LENGTH)?;
     let n = count_within(
@@ -101,24 +195,20 @@ pub fn rolling_loads(
         dto.positions.unwrap_or(101),
         ROLLING_POSITIONS,
     )?;
-    let axles = dto
-        .axles
+    let axles = given
         .iter()
         .enumerate()
         .map(|(i, a)| {
-            let field = |name: &str| format!("rolling.axles[{i}].{name}");
+            let field = |name: &str| format!("{field}[{i}].{name}");
             Ok((
                 within(&field("offset"), a.offset, COORDINATE)?,
-                within(&field("fy"), a.fy, FORCE)?,
+                within(&field("fy"), a.fy, FORCE)? / width,
                 within(&field("length"), a.length, PATCH_LENGTH)?,
             ))
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
     if axles.iter().all(|a| a.1 == 0.0) {
-        return Err(ApiError::invalid(
-            "rolling.axles",
-            "every axle load is zero",
-        ));
+        return Err(ApiError::invalid(field, "every axle load is zero"));
     }
     let positions: Vec<f64> = (0..n)
         .map(|i| {

@@ -99,6 +99,8 @@ pub const SCHEMA_LIMITS: &[(&str, &str, Limit)] = &[
     ("AxleDto", "fy", Limit::Number(FORCE)),
     ("AxleDto", "length", Limit::Number(PATCH_LENGTH)),
     ("RollingDto", "axles", Limit::Items(AXLES)),
+    ("VehicleAxlesDto", "axles", Limit::Items(AXLES)),
+    ("RollingDto", "width", Limit::Number(POSITIVE_LENGTH)),
     ("RollingDto", "x_start", Limit::Number(COORDINATE)),
     ("RollingDto", "x_end", Limit::Number(COORDINATE)),
     ("RollingDto", "positions", Limit::Integer(ROLLING_POSITIONS)),
