@@ -49,6 +49,7 @@ pub fn arch_field(parameter: ArchParameter) -> String {
             format!("interface_limits.{resultant}_{bound}")
         }
         ArchParameter::FrictionCoefficient => "friction_coefficient".to_owned(),
+        ArchParameter::Cohesion => "ring_interface.cohesion".to_owned(),
         ArchParameter::CompressiveStrength => "compressive_strength".to_owned(),
         ArchParameter::CrushingPlanes => "crushing_planes".to_owned(),
         ArchParameter::Loads => "loads".to_owned(),

@@ -89,6 +89,13 @@ pub fn in_design_values(request: &LiveLoadRequest, f: &ArchFactors) -> LiveLoadR
     r.design = None;
     r.unit_weight *= f.dead;
     r.compressive_strength = r.compressive_strength.map(|s| s / f.strength);
+    // The mortar's cohesion is a strength too.
+    if let Some(ring) = r.ring_interface.as_mut() {
+        ring.cohesion = ring.cohesion.map(|c| c / f.strength);
+    }
+    for interface in r.interfaces.iter_mut().flatten() {
+        interface.cohesion = interface.cohesion.map(|c| c / f.strength);
+    }
     if let Some(fill) = r.fill.as_mut() {
         fill.unit_weight *= f.fill;
         for layer in fill.layers.iter_mut().flatten() {

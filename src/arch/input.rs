@@ -7,8 +7,8 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::arch::fill::{Extrados, ExtradosFaces, Fill, RoadLoad};
 use thrustline_solver::arch::{
-    ArchProblem, Assembly, CircularArch, Crushing, Formulation, InterfaceKind, LimitSettings,
-    LiveLoad, VoussoirShape,
+    ArchProblem, Assembly, CircularArch, Crushing, Formulation, LimitSettings, LiveLoad,
+    VoussoirShape,
 };
 
 use super::assembly::Generated;
@@ -17,7 +17,7 @@ use super::geometry::{
     AssemblyGeometryDto, BlocksGeometryDto, CircularGeometryDto, GeometryDto, ProfileGeometryDto,
     VoussoirDto,
 };
-use super::material::{material, ring_material};
+use super::material::material;
 use super::request::{
     ArchDetailDto, DeadLoadRequest, FrictionDto, LimitFields, LiveLoadRequest, LoadDto,
 };
@@ -269,23 +269,7 @@ fn with_rings_and_crushing(
     problem: ArchProblem,
     fields: &LimitFields,
 ) -> Result<ArchProblem, ApiError> {
-    let has_rings = problem
-        .assembly()
-        .interfaces
-        .iter()
-        .any(|i| i.kind == InterfaceKind::Ring);
-    // Checked whether or not there are rings: an out-of-range value is an error either way.
-    let (ring_limits, ring_friction) = ring_material(fields.material)?;
-    let problem = if has_rings {
-        problem.with_ring_interfaces(ring_limits, ring_friction)?
-    } else if fields.material.ring_friction_coefficient.is_some() {
-        return Err(ApiError::invalid(
-            "ring_friction_coefficient",
-            "is for arches of more than one ring (geometry.rings > 1): leave it out",
-        ));
-    } else {
-        problem
-    };
+    let problem = super::interfaces::with_ring_and_own_interfaces(problem, fields)?;
     Ok(match fields.compressive_strength {
         None if fields.crushing_planes.is_some() => {
             return Err(ApiError::invalid(

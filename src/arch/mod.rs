@@ -13,6 +13,7 @@ pub mod drawing;
 pub mod fill;
 pub mod geometry;
 pub mod input;
+pub mod interfaces;
 pub mod material;
 pub mod mechanism;
 pub mod minimum_thickness;

@@ -194,6 +194,10 @@ pub struct LimitFields<'a> {
     pub friction_relaxation: FrictionRelaxationDto,
     /// `include`: the details to answer with; `None` is all of them.
     pub include: Option<&'a [ArchDetailDto]>,
+    /// `ring_interface`.
+    pub ring_interface: Option<&'a super::interfaces::RingInterfaceDto>,
+    /// `interfaces`.
+    pub interfaces: &'a [super::interfaces::InterfaceDto],
     /// The material.
     pub material: MaterialFields<'a>,
 }
@@ -301,6 +305,17 @@ macro_rules! limit_request {
                 /// ignore it.
                 #[serde(default)]
                 pub include: Option<Vec<ArchDetailDto>>,
+                /// Multi-ring arches: the interfaces between the rings, their friction and
+                /// the cohesion of their mortar (shear capacity μ·N + c·ℓ). Replaces
+                /// `ring_friction_coefficient`. Defaults to none (no sliding between rings).
+                #[serde(default)]
+                #[schema(nullable)]
+                pub ring_interface: Option<super::interfaces::RingInterfaceDto>,
+                /// Interfaces with friction and cohesion of their own (a wall's base, one
+                /// joint), named by the blocks they join; 0 to 10000 of them. Defaults to
+                /// none.
+                #[serde(default)]
+                pub interfaces: Option<Vec<super::interfaces::InterfaceDto>>,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }
         }
@@ -317,6 +332,8 @@ macro_rules! limit_request {
                     friction: self.friction,
                     friction_relaxation: self.friction_relaxation,
                     include: self.include.as_deref(),
+                    ring_interface: self.ring_interface.as_ref(),
+                    interfaces: self.interfaces.as_deref().unwrap_or_default(),
                     material: self.material(),
                 }
             }

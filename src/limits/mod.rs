@@ -250,6 +250,8 @@ pub const SLOPE_SUPPORTS: Count = Count::new(0, MAX_SUPPORTS);
 pub const LOADS: Count = Count::new(0, MAX_LOADS);
 /// Corners of an assembly's polygon.
 pub const POLYGON_CORNERS: Count = Count::new(3, 256);
+/// Interfaces given friction and cohesion of their own.
+pub const INTERFACE_OVERRIDES: Count = Count::new(0, MAX_LOADS);
 /// Layers of an arch's fill.
 pub const FILL_LAYERS: Count = Count::new(1, 20);
 /// Points of a measured intrados.

@@ -66,6 +66,8 @@ pub enum ArchParameter {
     },
     /// The friction coefficient.
     FrictionCoefficient,
+    /// A cohesion.
+    Cohesion,
     /// The compressive strength of the joints.
     CompressiveStrength,
     /// The number of crushing planes.
@@ -114,6 +116,7 @@ impl std::fmt::Display for ArchParameter {
                 write!(f, "{bound:?} limit of {resultant:?}")
             }
             Self::FrictionCoefficient => write!(f, "friction coefficient"),
+            Self::Cohesion => write!(f, "cohesion"),
             Self::CompressiveStrength => write!(f, "compressive strength"),
             Self::CrushingPlanes => write!(f, "crushing planes"),
             Self::Loads => write!(f, "loads"),

@@ -136,8 +136,9 @@ fn inconsistency(
         };
         let n = r[0] + r[1];
         let before = used.get(k).copied().unwrap_or(0.0).max(0.0);
-        shear = shear.max(r[2].abs() - mu * n.max(0.0));
-        let capacity = (1.0 - SLOPE) * mu * before + SLOPE * mu * n.max(0.0);
+        let cohesive = problem.cohesive_capacity(k);
+        shear = shear.max(r[2].abs() - mu * n.max(0.0) - cohesive);
+        let capacity = (1.0 - SLOPE) * mu * before + SLOPE * mu * n.max(0.0) + cohesive;
         if r[2].abs() >= capacity - tolerance {
             moved = moved.max((n - before).abs());
         }

@@ -71,6 +71,11 @@ pub struct ArchProblem {
     pub(super) passive: Vec<PassiveForce>,
     /// Limits and friction of the ring interfaces of a multi-ring arch, when they differ.
     pub(super) ring: Option<(InterfaceLimits, Option<f64>)>,
+    /// Cohesion c of the ring interfaces: shear capacity μ·N + c·ℓ (model §10).
+    pub(super) ring_cohesion: f64,
+    /// Friction and cohesion of single interfaces, by interface (sorted, each once): they
+    /// replace the problem's (or the rings') friction and cohesion there.
+    pub(super) own: Vec<(usize, Option<f64>, f64)>,
     /// Shear capacities |t| ≤ c_k + `friction_slope`·μ_k·N in place of the friction rows (a
     /// step of the non-associative iteration), per interface; only where it has friction.
     pub(super) shear_capacities: Option<Vec<f64>>,
@@ -178,6 +183,8 @@ impl ArchProblem {
             crushing: None,
             passive: Vec::new(),
             ring: None,
+            ring_cohesion: 0.0,
+            own: Vec::new(),
             shear_capacities: None,
             friction_slope: 0.0,
         })
@@ -244,12 +251,91 @@ impl ArchProblem {
         Ok(self)
     }
 
+    /// The same problem with cohesion `cohesion` (≥ 0) on the ring interfaces: their shear
+    /// capacity is μ·N + c·ℓ (with μ = 0, c·ℓ alone).
+    pub fn with_ring_cohesion(mut self, cohesion: f64) -> Result<Self, ArchError> {
+        check_cohesion(cohesion)?;
+        self.ring_cohesion = cohesion;
+        Ok(self)
+    }
+
+    /// The same problem with interface `k`'s own friction coefficient (`None`: no sliding)
+    /// and cohesion (≥ 0), in place of the problem's or the rings'.
+    pub fn with_interface(
+        mut self,
+        k: usize,
+        friction: Option<f64>,
+        cohesion: f64,
+    ) -> Result<Self, ArchError> {
+        check_cohesion(cohesion)?;
+        if let Some(mu) = friction {
+            if !(mu.is_finite() && mu >= 0.0) {
+                return Err(ArchError::range(
+                    ArchParameter::FrictionCoefficient,
+                    mu,
+                    "a finite number ≥ 0 or null (no sliding)",
+                ));
+            }
+        }
+        if k >= self.assembly.interfaces.len() {
+            return Err(ArchError::range(
+                ArchParameter::Blocks,
+                k as f64,
+                "an interface of the assembly",
+            ));
+        }
+        match self.own.binary_search_by_key(&k, |o| o.0) {
+            Ok(i) => self.own[i] = (k, friction, cohesion),
+            Err(i) => self.own.insert(i, (k, friction, cohesion)),
+        }
+        Ok(self)
+    }
+
     /// The limits and friction of interface `k`.
     pub(crate) fn material(&self, k: usize) -> (InterfaceLimits, Option<f64>) {
-        match (self.assembly.interfaces[k].kind, self.ring) {
+        let (limits, friction) = match (self.assembly.interfaces[k].kind, self.ring) {
             (InterfaceKind::Ring, Some(ring)) => ring,
             _ => (self.limits, self.friction),
+        };
+        match self.own(k) {
+            Some((mu, _)) => (limits, mu),
+            None => (limits, friction),
         }
+    }
+
+    /// The friction coefficient of interface `k` (`None`: no sliding).
+    pub fn friction_of(&self, k: usize) -> Option<f64> {
+        self.material(k).1
+    }
+
+    /// Interface `k`'s own friction and cohesion, if it has them.
+    fn own(&self, k: usize) -> Option<(Option<f64>, f64)> {
+        if self.own.is_empty() {
+            return None;
+        }
+        self.own
+            .binary_search_by_key(&k, |o| o.0)
+            .ok()
+            .map(|i| (self.own[i].1, self.own[i].2))
+    }
+
+    /// The cohesive shear capacity c·ℓ of interface `k` (0 without cohesion).
+    pub(crate) fn cohesive_capacity(&self, k: usize) -> f64 {
+        let cohesion = match self.own(k) {
+            Some((_, c)) => c,
+            None if self.assembly.interfaces[k].kind == InterfaceKind::Ring => self.ring_cohesion,
+            None => 0.0,
+        };
+        if cohesion == 0.0 {
+            0.0
+        } else {
+            cohesion * self.assembly.interfaces[k].length()
+        }
+    }
+
+    /// Whether any interface has cohesion.
+    fn has_cohesion(&self) -> bool {
+        self.ring_cohesion > 0.0 || self.own.iter().any(|o| o.2 > 0.0)
     }
 
     /// Whether every finite limit of every interface is zero (the admissible set a cone).
@@ -260,6 +346,7 @@ impl ArchProblem {
             && self.ring.is_none_or(|(l, _)| l.is_homogeneous())
             && self.shear_capacities.is_none()
             && self.crushing.is_none()
+            && !self.has_cohesion()
     }
 
     /// Whether the rings of a multi-ring arch cannot slip on each other (their interfaces have
@@ -270,12 +357,20 @@ impl ArchProblem {
             .interfaces
             .iter()
             .any(|i| i.kind == crate::arch::geometry::InterfaceKind::Ring);
-        has_rings && self.ring.map_or(self.friction, |(_, mu)| mu).is_none()
+        let ring_locked = self.ring.map_or(self.friction, |(_, mu)| mu).is_none();
+        // Every ring interface slides where its own friction says so.
+        has_rings
+            && self.assembly.interfaces.iter().enumerate().any(|(k, i)| {
+                i.kind == crate::arch::geometry::InterfaceKind::Ring
+                    && self.own(k).map_or(ring_locked, |(mu, _)| mu.is_none())
+            })
     }
 
     /// Whether any interface has Coulomb friction.
     pub fn has_friction(&self) -> bool {
-        self.friction.is_some() || self.ring.is_some_and(|(_, mu)| mu.is_some())
+        self.friction.is_some()
+            || self.ring.is_some_and(|(_, mu)| mu.is_some())
+            || self.own.iter().any(|o| o.1.is_some())
     }
 
     /// The same problem with the friction rows of every interface that has friction replaced
@@ -288,6 +383,7 @@ impl ArchProblem {
             .map(|k| {
                 let mu = self.material(k).1.unwrap_or(0.0);
                 (1.0 - slope) * mu * normal.get(k).copied().unwrap_or(0.0).max(0.0)
+                    + self.cohesive_capacity(k)
             })
             .collect();
         fixed.shear_capacities = Some(capacities);
@@ -456,4 +552,17 @@ pub struct LimitSolution {
     pub passive: Vec<f64>,
     /// Wall time of the solves in seconds.
     pub solve_time_secs: f64,
+}
+
+/// A cohesion: finite, ≥ 0.
+fn check_cohesion(cohesion: f64) -> Result<(), ArchError> {
+    if cohesion.is_finite() && cohesion >= 0.0 {
+        Ok(())
+    } else {
+        Err(ArchError::range(
+            ArchParameter::Cohesion,
+            cohesion,
+            "a finite number ≥ 0",
+        ))
+    }
 }

@@ -185,7 +185,7 @@ fn friction_rows(
         }
     } else if let Some(mu) = friction {
         // u = μ(q + s) − t ≥ 0 and v = μ(q + s) + t ≥ 0 (Livesley §2.7), written −u ≤ 0 and
-        // −v ≤ 0; only where friction is finite. Divided by μ when μ > 1, so that a large μ
+        // −v ≤ 0 (≤ c·ℓ with cohesion); only where friction is finite. Divided by μ when μ > 1, so that a large μ
         // does not make the row (and the programme) badly scaled.
         let scale = 1.0 / mu.max(1.0);
         for (resultant, t_sign) in [(Resultant::U, 1.0), (Resultant::V, -1.0)] {
@@ -196,7 +196,8 @@ fn friction_rows(
                     (col + 2, t_sign * scale),
                 ],
                 len: 3,
-                b: 0.0,
+                // Cohesion: |t| ≤ μ(q + s) + c·ℓ.
+                b: problem.cohesive_capacity(k) / w * scale,
                 tag: LimitTag {
                     interface: k,
                     resultant,
