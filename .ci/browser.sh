@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
-# loads the page from a running release server; the page solves its eight examples on load
+# loads the page from a running release server; the page solves its nine examples on load
 # (Milankovitch's dead load, a live load, the minimum thickness, a bridge with fill, passive
 # restraint and rolling axles, Spencer's circle, the critical circle, a probabilistic study, a
 # layered section). The
-# test reads the rendered DOM for the numbers and the eight drawings, and keeps a screenshot in
+# test reads the rendered DOM for the numbers and the nine drawings, and keeps a screenshot in
 # target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed)
 set -euo pipefail
@@ -60,11 +60,14 @@ expect "factor_of_safety: 1.01457"
 # after the page has loaded; headless Chromium's virtual time does not wait for a stream's lines
 # (it ended the dump before the answer in half of the runs), so the load solves it as JSON.
 expect "probability_of_failure: 0.3785 ±"
+# The profile panel (issue 44): docs/arches.md's elliptical arch with backing under the LM1
+# tandem on a 3 m strip, λ = 0.942.
+expect "load_factor: 0.94215"
 drawings=$( (grep -o '<img alt="drawing of the [a-z]* answer"[^>]*src="blob:' <<< "$dom" || true) | wc -l)
-if [ "$drawings" -eq 8 ]; then echo "ok: eight drawings"; else echo "FAILED: $drawings drawings, expected 8" >&2; failures=$((failures + 1)); fi
+if [ "$drawings" -eq 9 ]; then echo "ok: nine drawings"; else echo "FAILED: $drawings drawings, expected 9" >&2; failures=$((failures + 1)); fi
 # Each drawing decoded: its onload recorded a non-zero naturalWidth (a broken SVG stays at 0).
 decoded=$( (grep -oE 'data-width="[1-9][0-9]*"' <<< "$dom" || true) | wc -l)
-if [ "$decoded" -eq 8 ]; then echo "ok: eight drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 8" >&2; failures=$((failures + 1)); fi
+if [ "$decoded" -eq 9 ]; then echo "ok: nine drawings decoded (naturalWidth > 0)"; else echo "FAILED: $decoded drawings decoded, expected 9" >&2; failures=$((failures + 1)); fi
 [ -s target/ci-artifacts/page.png ] && echo "screenshot: target/ci-artifacts/page.png"
 
 # The calculation reports (SPEC §11): each route's report of an example renders (its headline in
@@ -111,6 +114,6 @@ report_check reinforced /slope/spencer/report \
 report_check study /slope/spencer/report \
     '{"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50, "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}, "probabilistic": {"samples": 2000, "sampling": "latin_hypercube", "seed": 7, "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1.0, "min": 0}, {"field": "soil.friction_angle_deg", "distribution": "lognormal", "std": 2}], "correlations": [{"fields": ["soil.cohesion", "soil.friction_angle_deg"], "coefficient": -0.5}]}, "sensitivity": {"variables": [{"field": "soil.cohesion", "from": 3, "to": 9, "points": 7}]}}' \
     "probability of failure 0.3785 ± 0.0108"
-passed=$((28 - failures))
+passed=$((29 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -173,3 +173,31 @@ async fn bad_interfaces_are_refused_naming_the_field() {
         assert_problem(status, &content_type, &problem, 422, field);
     }
 }
+
+#[tokio::test]
+async fn the_three_ring_arch_docs_arches_quotes() {
+    // docs/arches.md, "Ring mortar": the example without cohesion (0.383) and without ring
+    // friction (locked: unbounded, warned).
+    let server = Server::start().await;
+    let body = |ring: Option<Value>| {
+        let mut b = json!({"geometry": {"kind": "profile", "shape": "segmental", "span": 6,
+                "rise": 1.5, "thickness": 0.345, "voussoirs": 30, "rings": 3},
+            "unit_weight": 20, "friction_coefficient": 0.6,
+            "fill": {"unit_weight": 18, "surface": 2.2},
+            "road_loads": [{"x": 1.5, "fy": -100, "length": 0.3}], "include": []});
+        if let Some(r) = ring {
+            b["ring_interface"] = r;
+        }
+        b
+    };
+    let friction = factor(&server, &body(Some(json!({"friction_coefficient": 0.5})))).await;
+    assert!((friction - 0.383).abs() < 5e-4, "{friction}");
+    let (status, _, locked) = server.post("/arch/live-load", &body(None)).await;
+    assert_eq!(status, 200);
+    assert_eq!(locked["solver"]["status"], "unbounded", "{locked}");
+    assert!(locked["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|w| w["code"] == "rings_locked"));
+}

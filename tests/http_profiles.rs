@@ -376,3 +376,19 @@ async fn the_minimum_thickness_search_takes_one_ring_of_a_profile() {
     let factor = num(&answer, "geometric_factor_of_safety");
     assert!((factor - 0.5 / num(&answer, "thickness")).abs() < 1e-12);
 }
+
+#[tokio::test]
+async fn the_minimum_thicknesses_docs_arches_quotes() {
+    // docs/arches.md, "Arches as they are built": the semicircle's and the parabola's minimum
+    // beside the catenary's example (span 10, rise 5, 100 voussoirs), to the digits shown.
+    let server = Server::start().await;
+    for (shape, shown) in [("semicircular", 0.5678), ("parabolic", 0.1403)] {
+        let answer = thinnest(
+            &server,
+            json!({"kind": "profile", "shape": shape, "span": 10, "rise": 5, "voussoirs": 100}),
+        )
+        .await;
+        let t = num(&answer, "thickness");
+        assert!((t - shown).abs() < 5e-5, "{shape}: {t} shown as {shown}");
+    }
+}
