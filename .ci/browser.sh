@@ -114,6 +114,36 @@ report_check reinforced /slope/spencer/report \
 report_check study /slope/spencer/report \
     '{"slope": {"height": 30.48, "length": 60.96}, "search": {}, "slices": 50, "soil": {"unit_weight": 10.0, "cohesion": 6.096, "friction_angle_deg": 40.0, "pore_pressure_ratio": 0.5}, "probabilistic": {"samples": 2000, "sampling": "latin_hypercube", "seed": 7, "variables": [{"field": "soil.cohesion", "distribution": "normal", "std": 1.0, "min": 0}, {"field": "soil.friction_angle_deg", "distribution": "lognormal", "std": 2}], "correlations": [{"fields": ["soil.cohesion", "soil.friction_angle_deg"], "coefficient": -0.5}]}, "sensitivity": {"variables": [{"field": "soil.cohesion", "from": 3, "to": 9, "points": 7}]}}' \
     "probability of failure 0.3785 ± 0.0108"
-passed=$((29 - failures))
+# Every other kind of drawing (issue 46): fetched from its /svg route, decoded as an image and
+# kept as a screenshot in target/ci-artifacts/drawing-NAME.png.
+drawing_check() {
+    local name=$1 route=$2 body=$3
+    local svg="$profile/$name.svg"
+    curl -fsS -X POST "http://127.0.0.1:$port$route" -H 'content-type: application/json' \
+        -d "$body" -o "$svg"
+    python3 - "$svg" "$profile/$name.html" <<'PY'
+import base64, sys
+data = base64.b64encode(open(sys.argv[1], "rb").read()).decode()
+open(sys.argv[2], "w").write(f'<body style="margin:0"><img src="data:image/svg+xml;base64,{data}" '
+                             'onload="document.body.dataset.width = this.naturalWidth"></body>')
+PY
+    local decoded
+    decoded=$(timeout 120 chromium "${flags[@]}" --dump-dom "file://$profile/$name.html" 2> /dev/null)
+    if grep -qE 'data-width="[1-9][0-9]*"' <<< "$decoded"; then echo "ok: $name drawing decodes"; else echo "FAILED: $name drawing does not decode" >&2; failures=$((failures + 1)); fi
+    timeout 120 chromium "${flags[@]}" --window-size=820,1100 --screenshot="target/ci-artifacts/drawing-$name.png" "file://$profile/$name.html" > /dev/null 2>&1 || true
+}
+drawing_check minimum-thickness /arch/minimum-thickness/svg \
+    '{"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 200}}'
+drawing_check pointed-backing /arch/live-load/svg \
+    '{"geometry": {"kind": "profile", "shape": "pointed", "span": 8, "radius": 8, "thickness": 0.6, "voussoirs": 40}, "unit_weight": 20, "fill": {"unit_weight": 18, "surface": 7.8, "layers": [{"below": 3, "unit_weight": 22}, {"below": 1.5, "unit_weight": 24}]}, "road_loads": [{"x": 2, "fy": -200, "length": 0.4}]}'
+drawing_check spans-rings /arch/live-load/svg \
+    '{"geometry": {"kind": "circular", "radius": 5.0, "thickness": 0.8, "voussoirs": 20, "rings": 2, "spans": 3, "pier_width": 2.0, "pier_height": 3.0}, "ring_interface": {"friction_coefficient": 0.5, "cohesion": 5}, "fill": {"unit_weight": 1.8, "surface": 6.5}, "road_loads": [{"x": 0, "fy": -10}]}'
+drawing_check assembly /arch/live-load/svg \
+    '{"geometry": {"kind": "assembly", "blocks": [{"polygon": [[0, 0], [1, 0], [1, 2], [0, 2]]}, {"polygon": [[0, 2], [1, 2], [1, 3], [0, 3]]}], "supports": [{"polygon": [[-1, -1], [2, -1], [2, 0], [-1, 0]]}]}, "friction_coefficient": 0.6, "interfaces": [{"blocks": [1, 0], "friction_coefficient": 0.3}], "loads": [{"block": 2, "fx": 1, "fy": 0, "x": 0.5, "y": 2.5}]}'
+drawing_check strength-grid /slope/spencer/svg \
+    '{"section": {"ground": [[-20, 0], [0, 0], [20, 10], [50, 10]], "layers": [{"top": null, "soil": {"unit_weight": 19, "strength": {"model": "power_curve", "a": 3, "b": 0.6, "c": 1}}}, {"top": [[-20, -3], [50, -3]], "soil": {"unit_weight": 18, "strength": {"model": "undrained", "cohesion": 30, "gradient": 2, "datum": -3}}, "piezometric_line": {"points": [[-20, -1], [50, 2]], "hu": "auto"}}], "pore_pressure_grid": {"points": [[-25, -30, 100], [12, -30, 100], [-25, 12, 0], [12, 12, 0], [0, 0, 50]]}}, "circle": {"centre": [12, 22], "radius": 26}, "slices": 60}'
+drawing_check noncircular /slope/spencer/svg \
+    '{"section": {"ground": [[0, 0], [10, 0], [30, 10], [50, 10]], "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}}, {"top": [[0, 1], [50, 1]], "soil": {"unit_weight": 20, "cohesion": 1, "friction_angle_deg": 8}}, {"top": [[0, 0.5], [50, 0.5]], "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}}]}, "search": {"shape": "noncircular", "vertices": 8}, "slices": 40}'
+passed=$((35 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

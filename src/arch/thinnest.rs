@@ -4,7 +4,7 @@
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize};
 use serde_json::Value;
-use thrustline_solver::arch::profile::Profile;
+use thrustline_solver::arch::profile::{Profile, Station};
 use thrustline_solver::arch::{ArchError, Assembly, CircularArch};
 use utoipa::ToSchema;
 
@@ -78,8 +78,8 @@ pub enum Thinnest {
     Profile {
         /// The intrados.
         profile: Profile,
-        /// Voussoirs N.
-        voussoirs: usize,
+        /// Its joints' stations, N + 1 of them.
+        stations: Vec<Station>,
     },
 }
 
@@ -97,7 +97,7 @@ impl Thinnest {
     pub fn assembly(&self, d: f64) -> Result<Assembly, ArchError> {
         match self {
             Self::Circle(arch) => arch.with_thickness(d).map(|a| a.assembly()),
-            Self::Profile { profile, voussoirs } => profile.chain(d, *voussoirs),
+            Self::Profile { profile, stations } => profile.chain_on(stations, d),
         }
     }
 
@@ -105,7 +105,7 @@ impl Thinnest {
     pub fn voussoirs(&self) -> usize {
         match self {
             Self::Circle(arch) => arch.voussoirs(),
-            Self::Profile { voussoirs, .. } => *voussoirs,
+            Self::Profile { stations, .. } => stations.len() - 1,
         }
     }
 
@@ -170,7 +170,8 @@ pub fn thinnest(geometry: &ThinnestGeometryDto) -> Result<(Thinnest, Option<f64>
             if let Some(d) = g.thickness {
                 profile.check_thickness(d)?;
             }
-            Ok((Thinnest::Profile { profile, voussoirs }, g.thickness))
+            let stations = profile.stations(voussoirs);
+            Ok((Thinnest::Profile { profile, stations }, g.thickness))
         }
     }
 }

@@ -225,8 +225,13 @@ impl Profile {
     /// The one-ring chain of `voussoirs` blocks of thickness `thickness` (0 < thickness <
     /// span).
     pub fn chain(&self, thickness: f64, voussoirs: usize) -> Result<Assembly, ArchError> {
+        self.chain_on(&self.stations(voussoirs), thickness)
+    }
+
+    /// [`Profile::chain`] on this profile's `stations` computed once (a minimum-thickness
+    /// search builds the chain at many thicknesses).
+    pub fn chain_on(&self, stations: &[Station], thickness: f64) -> Result<Assembly, ArchError> {
         self.check_thickness(thickness)?;
-        let stations = self.stations(voussoirs);
         let corners: Vec<[Point; 4]> = stations
             .windows(2)
             .map(|w| {
