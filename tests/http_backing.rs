@@ -180,3 +180,61 @@ async fn the_drawing_shows_each_layer_in_the_key() {
         assert!(svg.contains(key), "{key} not in the key");
     }
 }
+
+/// The points of every polyline whose style contains `style`, in pixels.
+fn polylines(svg: &str, style: &str) -> Vec<Vec<(f64, f64)>> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .filter(|n| {
+            let attrs: String = n
+                .attributes()
+                .map(|a| format!("{}=\"{}\" ", a.name(), a.value()))
+                .collect();
+            attrs.contains(style)
+        })
+        .map(|n| {
+            n.attribute("points")
+                .unwrap()
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[tokio::test]
+async fn a_dispersal_line_over_a_steep_arch_runs_down_and_stops_at_the_bridges_edge() {
+    // A pointed arch steeper than the 30° fan: the line from the patch's right end passes over
+    // the arch without meeting its extrados. It is drawn going down, cut at the road's end (it
+    // was drawn level along the road past the picture's edge).
+    let server = Server::start().await;
+    let body = json!({"geometry": {"kind": "profile", "shape": "pointed", "span": 8, "radius": 8,
+                                   "thickness": 0.6, "voussoirs": 40},
+                      "unit_weight": 20, "fill": {"unit_weight": 18, "surface": 7.8},
+                      "road_loads": [{"x": 2, "fy": -200, "length": 0.4}]});
+    let (status, _, svg) = server
+        .post_accept("/arch/live-load/svg", "image/svg+xml", &body)
+        .await;
+    assert_eq!(status, 200, "{svg}");
+    let road = polylines(&svg, "stroke=\"#616161\" stroke-width=\"2.5\"");
+    assert_eq!(road.len(), 1, "{svg}");
+    let (lo, hi) = road[0]
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let fans = polylines(&svg, "stroke-dasharray=\"3 2\"");
+    assert_eq!(fans.len(), 2, "{svg}");
+    for fan in fans {
+        let (top, end) = (fan[0], fan[fan.len() - 1]);
+        assert!(end.1 > top.1 + 10.0, "a fan line runs down: {fan:?}");
+        assert!(
+            end.0 >= lo - 0.01 && end.0 <= hi + 0.01,
+            "{fan:?} within {lo} … {hi}"
+        );
+    }
+}

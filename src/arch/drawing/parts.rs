@@ -63,9 +63,20 @@ pub fn fill(
         ));
     }
     // Road loads: the patch on the road and its dispersal lines down to the extrados.
+    // A line that passes over the arch is cut where the road ends (the bridge's edge).
+    let (x_lo, x_hi) = (road[0].0.min(road[1].0), road[0].0.max(road[1].0));
+    let within = |from: (f64, f64), to: (f64, f64)| {
+        let x = to.0.clamp(x_lo, x_hi);
+        if to.0 == from.0 || x == to.0 {
+            to
+        } else {
+            (x, from.1 + (to.1 - from.1) * (x - from.0) / (to.0 - from.0))
+        }
+    };
     for load in road_loads {
-        let ends = profile.dispersal_ends(f, *load);
         let (a, b) = (load.x - 0.5 * load.length, load.x + 0.5 * load.length);
+        let ends = profile.dispersal_ends(f, *load);
+        let ends = [within((a, f.road), ends[0]), within((b, f.road), ends[1])];
         let fan = "stroke=\"#1565c0\" stroke-width=\"0.9\" stroke-dasharray=\"3 2\"";
         canvas.polyline(&[(a, f.road), ends[0]], fan);
         canvas.polyline(&[(b, f.road), ends[1]], fan);

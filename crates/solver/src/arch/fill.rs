@@ -416,12 +416,22 @@ impl ExtradosProfile {
     }
 
     /// The two points where a road load's dispersal lines meet the extrados (for drawings);
-    /// outside the arch the line ends at the road's level.
+    /// a line that passes over the arch ends on its own way down, at the far springing's
+    /// level beyond the arch (a load beyond the arch going away from it: at the road).
     pub fn dispersal_ends(&self, fill: &Fill, load: RoadLoad) -> [(f64, f64); 2] {
+        let tan = fill.dispersal_angle_deg.to_radians().tan();
         [(-1.0, -0.5), (1.0, 0.5)].map(|(side, half)| {
-            let x = self.meet(fill, load.x + half * load.length, side);
+            let x0 = load.x + half * load.length;
+            let x = self.meet(fill, x0, side);
             let y = self.surface(x);
-            (x, if y.is_finite() { y } else { fill.road })
+            let y = if y.is_finite() {
+                y
+            } else if tan > 0.0 {
+                fill.road - (x - x0).abs() / tan
+            } else {
+                fill.road
+            };
+            (x, y)
         })
     }
 }
