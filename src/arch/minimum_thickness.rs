@@ -215,10 +215,11 @@ pub async fn minimum_thickness_svg(
         (Some(d), _, Some(ratio)) => format!("Minimum thickness: t = {d:.6}, t/span = {ratio:.6}"),
         _ => "Minimum thickness: none found".to_owned(),
     };
+    let d = if shape.span().is_some() { "t" } else { "D" };
     let caption = match (&shown, answer.thickness_below) {
         (Some(_), Some(below)) => format!(
-            "the arch at D = {below:.6}, just too thin to stand, and its collapse (the arch \
-             stands from D = {:.6} on)",
+            "the arch at {d} = {below:.6}, just too thin to stand, and its collapse (the arch \
+             stands from {d} = {:.6} on)",
             answer.thickness.unwrap_or(f64::NAN)
         ),
         _ => answer.detail.clone(),

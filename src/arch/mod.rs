@@ -129,7 +129,12 @@ pub async fn dead_load_svg(
             value = json!({"geometry": {"kind": "circular", "radius": 10.0, "thickness": 1.0, "voussoirs": 100},
                            "fill": {"unit_weight": 1.8, "surface": 11.5},
                            "rolling": {"axles": [{"offset": 0.0, "fy": -10.0}, {"offset": 1.8, "fy": -10.0}],
-                                       "x_start": -12.0, "x_end": 10.0, "positions": 101}})))
+                                       "x_start": -12.0, "x_end": 10.0, "positions": 101}}))),
+        ("profile_vehicle" = (summary = "An elliptical arch with masonry backing under EN 1991-2's load model 1 tandem on a 3 m strip: λ = 0.9422",
+            value = json!({"geometry": {"kind": "profile", "shape": "elliptical", "span": 8.0, "rise": 2.5, "thickness": 0.75, "voussoirs": 40},
+                           "unit_weight": 20.0,
+                           "fill": {"unit_weight": 18.0, "surface": 3.6, "layers": [{"below": 1.5, "unit_weight": 22.0}]},
+                           "rolling": {"vehicle": "en1991_lm1_tandem", "width": 3.0, "x_start": -4.0, "x_end": 4.0, "positions": 41}})))
     )),
     responses(
         (status = 200, description = "The live-load factor, mechanism and thrust line; `stable: false` and `load_factor: null` when the dead load is not carried (its tables as CSV: `/arch/live-load/csv`)", body = LiveLoadResponse),
