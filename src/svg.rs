@@ -10,7 +10,7 @@ mod numbers;
 pub mod study;
 
 use numbers::nice_step;
-pub use numbers::{escape, heat, tick};
+pub use numbers::{escape, heat, shown, tick};
 
 pub use labels::Labels;
 

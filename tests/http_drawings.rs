@@ -769,3 +769,20 @@ async fn the_minimum_thickness_drawing_marks_its_hinges() {
     let text = svg(&server, "/arch/minimum-thickness/svg", &three).await;
     assert!(text.contains("Minimum thickness: none found"), "{text}");
 }
+
+#[tokio::test]
+async fn a_layer_key_shows_its_angle_as_given() {
+    // 30° came back as 29.999999999999996° (degrees → radians → degrees) in a section's key.
+    let server = Server::start().await;
+    let body = json!({"section": {"ground": [[0, 0], [10, 0], [30, 10], [50, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}},
+                   {"top": [[0, -2], [50, -2]], "soil": {"unit_weight": 20, "cohesion": 5, "friction_angle_deg": 35}}]},
+        "circle": {"centre": [20, 25], "radius": 25}, "slices": 30});
+    let (status, _, svg) = server
+        .post_accept("/slope/spencer/svg", "image/svg+xml", &body)
+        .await;
+    assert_eq!(status, 200, "{svg}");
+    assert!(svg.contains("layer 1: γ = 20, c′ = 10, φ′ = 30°"), "{svg}");
+    assert!(svg.contains("layer 2: γ = 20, c′ = 5, φ′ = 35°"), "{svg}");
+    assert!(!svg.contains("29.99999"), "{svg}");
+}

@@ -59,7 +59,7 @@ pub fn layer_fills(section: &Section, left: f64, right: f64, bottom: f64) -> Vec
             label: format!(
                 "layer {}: γ = {}, {}",
                 k + 1,
-                layer.soil.unit_weight(),
+                crate::svg::shown(layer.soil.unit_weight()),
                 super::strength::describe(layer)
             ),
         });

@@ -12,6 +12,7 @@ use crate::limits::{
     COORDINATE, DISTURBANCE, ENVELOPE_POINTS, FRICTION_ANGLE_DEG, GSI, HOEK_BROWN_MI,
     POSITIVE_STRESS, POWER_EXPONENT, SIGNED_STRESS, STRESS, UNIT_WEIGHT,
 };
+use crate::svg::shown;
 use crate::validation::{count_within, within};
 
 /// What an undrained profile's depth is measured from, when not from a `datum`.
@@ -282,20 +283,21 @@ pub fn describe(layer: &thrustline_solver::slope::section::Layer) -> String {
     match &layer.strength {
         Strength::MohrCoulomb => format!(
             "c′ = {}, φ′ = {}°",
-            layer.soil.cohesion(),
-            layer.soil.friction_angle_deg()
+            shown(layer.soil.cohesion()),
+            shown(layer.soil.friction_angle_deg())
         ),
         Strength::Undrained(u) => {
             let from = match u.reference {
-                Reference::Datum(y) => format!("below y = {y}"),
+                Reference::Datum(y) => format!("below y = {}", shown(y)),
                 Reference::Ground => "below the ground".to_owned(),
             };
             let cap = u
                 .cohesion_max
-                .map_or(String::new(), |c| format!(", at most {c}"));
+                .map_or(String::new(), |c| format!(", at most {}", shown(c)));
             format!(
                 "undrained s_u = {} + {}·depth {from}{cap}",
-                u.cohesion, u.gradient
+                shown(u.cohesion),
+                shown(u.gradient)
             )
         }
         Strength::Envelope(e) => envelope(e),
@@ -305,7 +307,13 @@ pub fn describe(layer: &thrustline_solver::slope::section::Layer) -> String {
 /// A nonlinear envelope in words.
 fn envelope(e: &Envelope) -> String {
     match e {
-        Envelope::PowerCurve { a, b, c, d } => format!("τ = {a}·(σ′ + {d})^{b} + {c}"),
+        Envelope::PowerCurve { a, b, c, d } => format!(
+            "τ = {}·(σ′ + {})^{} + {}",
+            shown(*a),
+            shown(*d),
+            shown(*b),
+            shown(*c)
+        ),
         Envelope::HoekBrown(h) => format!(
             "Hoek–Brown σ_ci = {}, m_b = {:.4}, s = {:.3e}, a = {:.4}",
             h.sigma_ci, h.mb, h.s, h.a
@@ -313,6 +321,8 @@ fn envelope(e: &Envelope) -> String {
         Envelope::ShearNormal(points) => {
             format!("shear–normal function of {} points", points.len())
         }
-        Envelope::Divided(inner, factor) => format!("{} (÷ {factor})", envelope(inner)),
+        Envelope::Divided(inner, factor) => {
+            format!("{} (÷ {})", envelope(inner), shown(*factor))
+        }
     }
 }

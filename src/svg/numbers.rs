@@ -25,6 +25,16 @@ pub fn tick(v: f64) -> String {
     }
 }
 
+/// A value in a key or a caption: to 10 significant digits, shortest form (30, not
+/// 29.999999999999996 from a round trip through radians).
+pub fn shown(v: f64) -> String {
+    if !v.is_finite() {
+        return v.to_string();
+    }
+    let rounded: f64 = format!("{v:.9e}").parse().unwrap_or(v);
+    rounded.to_string()
+}
+
 /// Escapes text for SVG and HTML (element content and attributes in either quotes).
 pub fn escape(text: &str) -> String {
     text.replace('&', "&amp;")

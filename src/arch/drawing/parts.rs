@@ -6,7 +6,7 @@ use thrustline_solver::arch::fill::{ExtradosFaces, ExtradosProfile, Fill, RoadLo
 use thrustline_solver::arch::{Assembly, HingeSide, LiveLoad, Mechanism};
 
 use super::{outline, Legend, MAX_HINGE_LABELS, MERGED_ABOVE};
-use crate::svg::{escape, tick, Canvas, Labels};
+use crate::svg::{escape, shown, Canvas, Labels};
 
 /// The fill between the extrados and the road, and each road load's patch and dispersal.
 pub fn fill(
@@ -56,8 +56,8 @@ pub fn fill(
             key,
             format!(
                 "▬ fill γ = {} below y = {}",
-                tick(layer.unit_weight),
-                tick(layer.below)
+                shown(layer.unit_weight),
+                shown(layer.below)
             )
             .into(),
         ));
