@@ -528,41 +528,35 @@ pub fn passive_forces(
         let (b, block) = (*b, &assembly.blocks[*b]);
         // (force, Σ force·x, Σ force·y) per direction: index 0 towards −x, 1 towards +x.
         let mut sums = [[0.0f64; 3]; 2];
-        let pieces: Vec<[(f64, f64); 2]> = points
-            .windows(2)
-            .flat_map(|w| {
-                let cut = if layered {
-                    fill.cut(w[0], w[1])
-                } else {
-                    w.to_vec()
-                };
-                cut.windows(2).map(|p| [p[0], p[1]]).collect::<Vec<_>>()
-            })
-            .collect();
-        for w in &pieces {
-            let (dx, dy) = (w[1].0 - w[0].0, w[1].1 - w[0].1);
-            let middle = (0.5 * (w[0].0 + w[1].0), 0.5 * (w[0].1 + w[1].1));
+        let mut add = |a: (f64, f64), c: (f64, f64)| {
+            let (dx, dy) = (c.0 - a.0, c.1 - a.1);
+            let middle = (0.5 * (a.0 + c.0), 0.5 * (a.1 + c.1));
             // The normal of the piece pointing out of the block (into the fill).
             let mut normal = (-dy, dx);
             let away = (middle.0 - block.centroid.0, middle.1 - block.centroid.1);
             if normal.0 * away.0 + normal.1 * away.1 < 0.0 {
                 normal = (dy, -dx);
             }
-            if normal.0 == 0.0 {
-                continue;
-            }
-            let (s0, s1) = (stress(w[0].1), stress(w[1].1));
+            let (s0, s1) = (stress(a.1), stress(c.1));
             let force = 0.5 * (s0 + s1) * dy.abs();
-            if force <= 0.0 {
-                continue;
+            if normal.0 == 0.0 || force <= 0.0 {
+                return;
             }
             // Centroid of the trapezoidal load along the piece.
             let t = (s0 + 2.0 * s1) / (3.0 * (s0 + s1));
-            let at = (w[0].0 + t * dx, w[0].1 + t * dy);
+            let at = (a.0 + t * dx, a.1 + t * dy);
             let side = usize::from(normal.0 < 0.0);
             sums[side][0] += force;
             sums[side][1] += force * at.0;
             sums[side][2] += force * at.1;
+        };
+        for w in points.windows(2) {
+            if layered {
+                // Cut where the piece crosses a layer's level: σ_v is linear between.
+                fill.cut(w[0], w[1]).windows(2).for_each(|p| add(p[0], p[1]));
+            } else {
+                add(w[0], w[1]);
+            }
         }
         for (side, s) in sums.iter().enumerate() {
             if s[0] > 0.0 {
