@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{assert_problem, Server};
+use common::{assert_problem, live_load_factor, Server};
 use serde_json::{json, Value};
 
 /// A unit block (W = γ·1 = 1) on a wide support, pushed sideways by P = 1 at y = 0.1: it
@@ -20,23 +20,15 @@ fn block(interfaces: Value) -> Value {
            "loads": [{"block": 1, "fx": 1.0, "fy": 0.0, "x": 0.5, "y": 0.1}], "include": []})
 }
 
-async fn factor(server: &Server, body: &Value) -> f64 {
-    let (status, _, answer) = server.post("/arch/live-load", body).await;
-    assert_eq!(status, 200, "{answer}");
-    answer["load_factor"]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{answer}"))
-}
-
 #[tokio::test]
 async fn a_block_slides_at_its_base_own_friction_and_cohesion() {
     let server = Server::start().await;
     // The arch's μ = 0.8 alone: λ = 0.8.
-    let plain = factor(&server, &block(json!([]))).await;
+    let plain = live_load_factor(&server, &block(json!([]))).await;
     assert!((plain - 0.8).abs() < 1e-7, "{plain}");
     for (mu, c) in [(0.2, 0.0), (0.2, 0.3), (0.0, 0.4), (0.5, 1.2)] {
         let own = json!([{"blocks": [1, 0], "friction_coefficient": mu, "cohesion": c}]);
-        let lambda = factor(&server, &block(own)).await;
+        let lambda = live_load_factor(&server, &block(own)).await;
         // Base length ℓ = 1, W = 1, P = 1.
         let expected = mu + c;
         assert!(
@@ -45,7 +37,7 @@ async fn a_block_slides_at_its_base_own_friction_and_cohesion() {
         );
     }
     // Cohesion alone on the arch's friction: λ = 0.8 + c.
-    let cohesive = factor(
+    let cohesive = live_load_factor(
         &server,
         &block(json!([{"blocks": [0, 1], "cohesion": 0.5}])),
     )
@@ -102,8 +94,8 @@ async fn ring_cohesion_never_lowers_lambda_and_a_large_one_bonds_the_rings() {
     }
     // Aligned rings with a large cohesion cannot slip: the answer of rings without ring
     // friction (they lock, each pair of ring blocks one voussoir).
-    let bonded = factor(&server, &cohesive(1e4, "aligned")).await;
-    let locked = factor(&server, &rings(None, "aligned")).await;
+    let bonded = live_load_factor(&server, &cohesive(1e4, "aligned")).await;
+    let locked = live_load_factor(&server, &rings(None, "aligned")).await;
     assert!(
         (bonded - locked).abs() < 1e-8 * locked,
         "{bonded} against {locked}"
@@ -111,8 +103,8 @@ async fn ring_cohesion_never_lowers_lambda_and_a_large_one_bonds_the_rings() {
     // Staggered rings that cannot slip lock outright (no mechanism crosses both rings): with
     // cohesion λ grows with it, without bound, and the cohesion-free answer is not carried.
     let (ten, thousand) = (
-        factor(&server, &cohesive(10.0, "staggered")).await,
-        factor(&server, &cohesive(1e4, "staggered")).await,
+        live_load_factor(&server, &cohesive(10.0, "staggered")).await,
+        live_load_factor(&server, &cohesive(1e4, "staggered")).await,
     );
     assert!(thousand > 50.0 * ten, "{ten} then {thousand}");
     // `ring_interface.friction_coefficient` is `ring_friction_coefficient`.
@@ -190,7 +182,8 @@ async fn the_three_ring_arch_docs_arches_quotes() {
         }
         b
     };
-    let friction = factor(&server, &body(Some(json!({"friction_coefficient": 0.5})))).await;
+    let friction =
+        live_load_factor(&server, &body(Some(json!({"friction_coefficient": 0.5})))).await;
     assert!((friction - 0.383).abs() < 5e-4, "{friction}");
     let (status, _, locked) = server.post("/arch/live-load", &body(None)).await;
     assert_eq!(status, 200);

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{assert_problem, Server};
+use common::{assert_problem, live_load_factor, Server};
 use serde_json::{json, Value};
 
 type Point = (f64, f64);
@@ -89,14 +89,6 @@ fn live(geometry: Value, block: usize) -> Value {
     json!({"geometry": geometry, "loads": [{"block": block, "fy": -10.0}], "include": []})
 }
 
-async fn factor(server: &Server, body: &Value) -> f64 {
-    let (status, _, answer) = server.post("/arch/live-load", body).await;
-    assert_eq!(status, 200, "{answer}");
-    answer["load_factor"]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{answer}"))
-}
-
 #[tokio::test]
 async fn a_profile_carries_what_its_blocks_stated_as_a_chain_carry() {
     let server = Server::start().await;
@@ -109,8 +101,8 @@ async fn a_profile_carries_what_its_blocks_stated_as_a_chain_carry() {
     for (shape, rise, joints) in cases {
         let profile = json!({"kind": "profile", "shape": shape, "span": SPAN, "rise": rise,
                              "thickness": T, "voussoirs": n});
-        let by_profile = factor(&server, &live(profile, 7)).await;
-        let by_blocks = factor(&server, &live(chain(&joints, T), 7)).await;
+        let by_profile = live_load_factor(&server, &live(profile, 7)).await;
+        let by_blocks = live_load_factor(&server, &live(chain(&joints, T), 7)).await;
         assert!(
             (by_profile - by_blocks).abs() <= 1e-8 * by_blocks,
             "{shape}: {by_profile} against {by_blocks}"
@@ -134,8 +126,8 @@ async fn a_profile_carries_what_its_blocks_stated_as_a_chain_carry() {
     ];
     let measured = json!({"kind": "profile", "shape": "points", "intrados": points,
                           "thickness": 2.0, "voussoirs": 8});
-    let by_profile = factor(&server, &live(measured, 3)).await;
-    let by_blocks = factor(&server, &live(chain(&joints, 2.0), 3)).await;
+    let by_profile = live_load_factor(&server, &live(measured, 3)).await;
+    let by_blocks = live_load_factor(&server, &live(chain(&joints, 2.0), 3)).await;
     assert!(
         (by_profile - by_blocks).abs() <= 1e-9 * by_blocks,
         "{by_profile} against {by_blocks}"
@@ -163,8 +155,8 @@ async fn a_semicircular_profile_is_the_circular_arch_on_rings_and_spans_too() {
                    "loads": [{"block": 6, "fy": -10.0}], "include": []})
         };
         let (a, b) = (
-            factor(&server, &body(profile)).await,
-            factor(&server, &body(circle)).await,
+            live_load_factor(&server, &body(profile)).await,
+            live_load_factor(&server, &body(circle)).await,
         );
         assert!((a - b).abs() <= 1e-9 * b, "{more}: {a} against {b}");
     }

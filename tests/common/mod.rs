@@ -177,6 +177,15 @@ pub fn with(mut body: Value, path: &str, value: Value) -> Value {
     body
 }
 
+/// λ of a live-load request that must answer 200 with a factor.
+pub async fn live_load_factor(server: &Server, body: &Value) -> f64 {
+    let (status, _, answer) = server.post("/arch/live-load", body).await;
+    assert_eq!(status, 200, "{answer}");
+    answer["load_factor"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{answer}"))
+}
+
 /// Asserts an RFC 9457 problem whose detail names `field`.
 pub fn assert_problem(
     status: u16,

@@ -553,7 +553,9 @@ pub fn passive_forces(
         for w in points.windows(2) {
             if layered {
                 // Cut where the piece crosses a layer's level: σ_v is linear between.
-                fill.cut(w[0], w[1]).windows(2).for_each(|p| add(p[0], p[1]));
+                fill.cut(w[0], w[1])
+                    .windows(2)
+                    .for_each(|p| add(p[0], p[1]));
             } else {
                 add(w[0], w[1]);
             }

@@ -147,15 +147,7 @@ impl ArchProblem {
                 }
             }
         }
-        if let Some(mu) = friction {
-            if !(mu.is_finite() && mu >= 0.0) {
-                return Err(ArchError::range(
-                    ArchParameter::FrictionCoefficient,
-                    mu,
-                    "a finite number ≥ 0 or null (no sliding)",
-                ));
-            }
-        }
+        check_friction(friction)?;
         for (i, load) in live_loads.iter().enumerate() {
             if load.block >= assembly.blocks.len() {
                 return Err(ArchError::range(
@@ -268,15 +260,7 @@ impl ArchProblem {
         cohesion: f64,
     ) -> Result<Self, ArchError> {
         check_cohesion(cohesion)?;
-        if let Some(mu) = friction {
-            if !(mu.is_finite() && mu >= 0.0) {
-                return Err(ArchError::range(
-                    ArchParameter::FrictionCoefficient,
-                    mu,
-                    "a finite number ≥ 0 or null (no sliding)",
-                ));
-            }
-        }
+        check_friction(friction)?;
         if k >= self.assembly.interfaces.len() {
             return Err(ArchError::range(
                 ArchParameter::Blocks,
@@ -564,5 +548,17 @@ fn check_cohesion(cohesion: f64) -> Result<(), ArchError> {
             cohesion,
             "a finite number ≥ 0",
         ))
+    }
+}
+
+/// A friction coefficient: finite, ≥ 0, or `None` (no sliding).
+fn check_friction(friction: Option<f64>) -> Result<(), ArchError> {
+    match friction {
+        Some(mu) if !(mu.is_finite() && mu >= 0.0) => Err(ArchError::range(
+            ArchParameter::FrictionCoefficient,
+            mu,
+            "a finite number ≥ 0 or null (no sliding)",
+        )),
+        _ => Ok(()),
     }
 }
