@@ -51,7 +51,7 @@ fn apply_transpose(m: &Matrix3, v: [f64; 3]) -> [f64; 3] {
 
 /// The affine statics of a chain in scaled units.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct ChainStatics {
+pub struct ChainStatics {
     /// D_k per interface: wrench → (q, s, t).
     decompose: Vec<Matrix3>,
     /// D_k C_k for the dead load (resultants at x = 0 and dead factor 1).
