@@ -45,9 +45,14 @@ fn main() {
         });
         let settings = LimitSettings::default();
         let (dead, d) = time(runs, || {
-            let problem =
-                ArchProblem::new(arch.assembly(), 1.0, InterfaceLimits::heyman(), None, vec![])
-                    .unwrap();
+            let problem = ArchProblem::new(
+                arch.assembly(),
+                1.0,
+                InterfaceLimits::heyman(),
+                None,
+                vec![],
+            )
+            .unwrap();
             solve_dead_load(&problem, &settings)
         });
         let (live, l) = time(runs, || {

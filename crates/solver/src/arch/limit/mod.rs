@@ -31,6 +31,7 @@
 //! of the collapse mechanism and z the plastic multipliers of the limits, with the loads doing
 //! positive work. See [`super::mechanism`].
 
+mod chain_simplex;
 mod context;
 mod mixing;
 pub(crate) mod problem;

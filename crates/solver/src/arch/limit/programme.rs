@@ -11,6 +11,7 @@ use clarabel::solver::{
     SupportedConeT, ZeroConeT,
 };
 
+use super::chain_simplex::{ChainSimplex, MAX_SIMPLEX_ROWS};
 use super::problem::LimitSettings;
 use super::rows::Row;
 use crate::arch::chain::ChainStatics;
@@ -293,51 +294,58 @@ pub(super) fn solve_chain_programme(
     let mut c = vec![0.0; 4];
     c[3] = objective;
     let mut iterations = 0;
+    // The simplex method while the rows stay few; the interior-point method otherwise, or
+    // from the round where the simplex method fails.
+    let mut simplex = Some(ChainSimplex::new(objective, cap));
+    let mut pushed = vec![false; rows.len()];
     for _ in 0..MAX_ROUNDS {
+        if settings.0.budget.is_spent() {
+            return Programme {
+                status: SolverStatus::MaxTime,
+                x: Vec::new(),
+                z: Vec::new(),
+                iterations,
+            };
+        }
         let subset: Vec<usize> = (0..rows.len()).filter(|&i| selected[i]).collect();
-        let m = subset.len() + 1;
-        let (mut ti, mut tj, mut tv, mut b) =
-            (Vec::new(), Vec::new(), Vec::new(), Vec::with_capacity(m));
-        for (r, &i) in subset.iter().enumerate() {
-            let (coefficients, rhs) = &dense[i];
-            for (j, &v) in coefficients.iter().enumerate() {
-                if v != 0.0 {
-                    ti.push(r);
-                    tj.push(j);
-                    tv.push(v);
+        if subset.len() >= MAX_SIMPLEX_ROWS {
+            simplex = None;
+        }
+        let by_simplex = simplex.as_mut().and_then(|lp| {
+            for &i in &subset {
+                if !std::mem::replace(&mut pushed[i], true) {
+                    lp.add(i, &dense[i]);
                 }
             }
-            b.push(*rhs);
+            simplex_programme(lp, &subset, rows.len())
+        });
+        if by_simplex.is_none() {
+            simplex = None;
         }
-        ti.push(m - 1);
-        tj.push(3);
-        tv.push(cap.0);
-        b.push(cap.1);
-        let mut programme = run_clarabel((m, 4, 0), (ti, tj, tv), &b, &c, settings, None);
+        let mut programme = match by_simplex {
+            Some(programme) => programme,
+            None => clarabel_on(&dense, &subset, cap, &c, settings),
+        };
         iterations += programme.iterations;
         programme.iterations = iterations;
         if failure(programme.status).is_some() {
             return programme;
         }
-        let x = &programme.x;
-        let violation = |i: usize| {
-            let (a, rhs) = &dense[i];
-            a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] - rhs
-        };
-        let tolerance = settings.0.tolerance;
-        let mut added: Vec<(f64, usize)> = (0..rows.len())
-            .filter(|&i| !selected[i])
-            .filter_map(|i| {
-                let v = violation(i);
-                let is_peak = [i.checked_sub(per_interface), Some(i + per_interface)]
-                    .into_iter()
-                    .flatten()
-                    .filter(|&j| j < rows.len())
-                    .all(|j| violation(j) <= v);
-                (v > tolerance && is_peak).then_some((v, i))
-            })
-            .collect();
+        let mut added = violated_peaks(
+            &dense,
+            &selected,
+            &programme.x,
+            per_interface,
+            settings.0.tolerance,
+        );
         if added.is_empty() {
+            if simplex.is_some() {
+                // The simplex method's multipliers are a vertex of the optimal face (a
+                // symmetric arch's five hinges come out as an asymmetric four): the interior-
+                // point method on the rows that hold at the vertex gives the face's centre,
+                // as the whole programme did.
+                central_multipliers(&dense, &subset, cap, &c, settings, &mut programme);
+            }
             // Multipliers of the full programme: zero on the rows never added.
             let mut z = vec![0.0; rows.len() + 1];
             for (r, &i) in subset.iter().enumerate() {
@@ -358,6 +366,126 @@ pub(super) fn solve_chain_programme(
         z: Vec::new(),
         iterations,
     }
+}
+
+/// The rows not yet selected that `x` violates by more than `tolerance`, where the violation
+/// peaks along the chain (no more than at the same row of either neighbouring interface), as
+/// (violation, row).
+fn violated_peaks(
+    dense: &[([f64; 4], f64)],
+    selected: &[bool],
+    x: &[f64],
+    per_interface: usize,
+    tolerance: f64,
+) -> Vec<(f64, usize)> {
+    let violation = |i: usize| {
+        let (a, rhs) = &dense[i];
+        a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] - rhs
+    };
+    (0..dense.len())
+        .filter(|&i| !selected[i])
+        .filter_map(|i| {
+            let v = violation(i);
+            let is_peak = [i.checked_sub(per_interface), Some(i + per_interface)]
+                .into_iter()
+                .flatten()
+                .filter(|&j| j < dense.len())
+                .all(|j| violation(j) <= v);
+            (v > tolerance && is_peak).then_some((v, i))
+        })
+        .collect()
+}
+
+/// The chain programme on `subset` (and the cap, last) by the interior-point method.
+fn clarabel_on(
+    dense: &[([f64; 4], f64)],
+    subset: &[usize],
+    cap: (f64, f64),
+    c: &[f64],
+    settings: (&LimitSettings, Refinement),
+) -> Programme {
+    let m = subset.len() + 1;
+    let (mut ti, mut tj, mut tv, mut b) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::with_capacity(m));
+    for (r, &i) in subset.iter().enumerate() {
+        let (coefficients, rhs) = &dense[i];
+        for (j, &v) in coefficients.iter().enumerate() {
+            if v != 0.0 {
+                ti.push(r);
+                tj.push(j);
+                tv.push(v);
+            }
+        }
+        b.push(*rhs);
+    }
+    ti.push(m - 1);
+    tj.push(3);
+    tv.push(cap.0);
+    b.push(cap.1);
+    run_clarabel((m, 4, 0), (ti, tj, tv), &b, c, settings, None)
+}
+
+/// Replaces the multipliers of the simplex method's `programme` (over `subset`, the cap last)
+/// by the interior-point method's on the rows that hold at its vertex (within 1e-9 of the
+/// largest right-hand side); kept as they are when that programme does not solve.
+fn central_multipliers(
+    dense: &[([f64; 4], f64)],
+    subset: &[usize],
+    cap: (f64, f64),
+    c: &[f64],
+    settings: (&LimitSettings, Refinement),
+    programme: &mut Programme,
+) {
+    let x = &programme.x;
+    let scale = subset
+        .iter()
+        .map(|&i| dense[i].1.abs())
+        .fold(cap.1.abs(), f64::max)
+        .max(1.0);
+    let holding: Vec<usize> = (0..subset.len())
+        .filter(|&r| {
+            let (a, b) = &dense[subset[r]];
+            b - (a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3]) <= 1e-9 * scale
+        })
+        .collect();
+    // Four rows or fewer hold: the vertex is not degenerate and its multipliers are the only
+    // ones (four variables).
+    if holding.len() <= 4 {
+        return;
+    }
+    let rows: Vec<usize> = holding.iter().map(|&r| subset[r]).collect();
+    let central = clarabel_on(dense, &rows, cap, c, settings);
+    if central.status != SolverStatus::Solved {
+        return;
+    }
+    let mut z = vec![0.0; subset.len() + 1];
+    for (k, &r) in holding.iter().enumerate() {
+        z[r] = central.z[k];
+    }
+    z[subset.len()] = central.z[rows.len()];
+    programme.z = z;
+    programme.iterations += central.iterations;
+}
+
+/// The simplex method's vertex as a programme over `subset` (multipliers in its order, the
+/// cap's last); `None` when it failed.
+fn simplex_programme(lp: &mut ChainSimplex, subset: &[usize], rows: usize) -> Option<Programme> {
+    let vertex = lp.solve().ok()?;
+    let mut position = vec![usize::MAX; rows];
+    for (r, &i) in subset.iter().enumerate() {
+        position[i] = r;
+    }
+    let mut z = vec![0.0; subset.len() + 1];
+    for (j, origin) in lp.origin().iter().enumerate() {
+        let at = origin.map_or(subset.len(), |i| position[i]);
+        z[at] = vertex.multipliers[j];
+    }
+    Some(Programme {
+        status: SolverStatus::Solved,
+        x: vertex.y,
+        z,
+        iterations: u32::try_from(vertex.pivots).unwrap_or(u32::MAX),
+    })
 }
 
 /// Each row written on the chain's three redundants and the extra variable: its coefficients
