@@ -339,7 +339,10 @@ pub(super) fn solve_chain_programme(
             settings.0.tolerance,
         );
         if added.is_empty() {
-            if simplex.is_some() {
+            // A margin programme (minimising δ) whose dead load is carried is not read for a
+            // mechanism: its vertex's multipliers serve.
+            let read = objective < 0.0 || programme.x[3] > settings.0.margin_tolerance;
+            if simplex.is_some() && read {
                 // The simplex method's multipliers are a vertex of the optimal face (a
                 // symmetric arch's five hinges come out as an asymmetric four): the interior-
                 // point method on the rows that hold at the vertex gives the face's centre,
