@@ -67,6 +67,9 @@ pub enum WarningCode {
     SamplesRefused,
     /// Rings that cannot slip lock: the answer is unbounded, or far above one ring's.
     RingsLocked,
+    /// Rings slide on each other at collapse on friction alone: the mortar's cohesion is left
+    /// out.
+    RingsSlide,
 }
 
 impl Warning {

@@ -182,9 +182,38 @@ async fn the_three_ring_arch_docs_arches_quotes() {
         }
         b
     };
-    let friction =
-        live_load_factor(&server, &body(Some(json!({"friction_coefficient": 0.5})))).await;
+    let codes = |answer: &Value| -> Vec<String> {
+        answer["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w["code"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    let (status, _, slides) = server
+        .post(
+            "/arch/live-load",
+            &body(Some(json!({"friction_coefficient": 0.5}))),
+        )
+        .await;
+    assert_eq!(status, 200, "{slides}");
+    let friction = slides["load_factor"].as_f64().unwrap();
     assert!((friction - 0.383).abs() < 5e-4, "{friction}");
+    // Sliding between rings on friction alone is warned of, naming ring interfaces.
+    assert!(
+        codes(&slides).contains(&"rings_slide".to_owned()),
+        "{slides}"
+    );
+    let (_, _, mortared) = server
+        .post(
+            "/arch/live-load",
+            &body(Some(json!({"friction_coefficient": 0.5, "cohesion": 50}))),
+        )
+        .await;
+    assert!(
+        !codes(&mortared).contains(&"rings_slide".to_owned()),
+        "{mortared}"
+    );
     let (status, _, locked) = server.post("/arch/live-load", &body(None)).await;
     assert_eq!(status, 200);
     assert_eq!(locked["solver"]["status"], "unbounded", "{locked}");

@@ -1,6 +1,8 @@
 //! The warnings of an arch answer: what the engineer should look at before trusting λ.
 
 use super::response::{ArchStatusDto, SolvedArch};
+use thrustline_solver::arch::InterfaceKind;
+
 use crate::warning::{one_based, Warning, WarningCode};
 
 /// Locked rings whose λ exceeds the bonded single ring's by more than this factor are warned
@@ -9,12 +11,13 @@ use crate::warning::{one_based, Warning, WarningCode};
 const FAR_ABOVE_BONDED: f64 = 1.25;
 
 /// What to look at before trusting the answer: `rings_locked` where locked rings answer
-/// unbounded, or far above the bonded single ring; `friction_may_overestimate` and
+/// unbounded, or far above the bonded single ring; `rings_slide` where the mechanism slides
+/// between rings that have no cohesion; `friction_may_overestimate` and
 /// `not_settled` from the friction check.
 pub fn warnings(solved: &SolvedArch) -> Vec<Warning> {
     let mut warnings = Vec::new();
-    let advice = "the mortar between real rings shears — give ring_friction_coefficient (and \
-                  ring_interface_limits) for the ring joints";
+    let advice = "the mortar between real rings shears — give ring_interface (its friction \
+                  coefficient and the mortar's cohesion) for the ring joints";
     if solved.input.problem.has_locked_rings() && solved.status == ArchStatusDto::Unbounded {
         warnings.push(Warning::new(
             WarningCode::RingsLocked,
@@ -36,6 +39,17 @@ pub fn warnings(solved: &SolvedArch) -> Vec<Warning> {
                 lambda / bonded
             ),
         ));
+    }
+    if let Some(sliding) = rings_sliding_without_cohesion(solved) {
+        warnings.push(
+            Warning::new(
+                WarningCode::RingsSlide,
+                "the rings slide on each other at collapse on friction alone: the joints between \
+                 real rings are mortared, and their cohesion (ring_interface.cohesion) raises λ \
+                 where it holds — this answer leaves it out (conservative)",
+            )
+            .interfaces(one_based(&sliding)),
+        );
     }
     let friction = solved.friction.as_ref();
     if !solved.input.non_associative && friction.is_some_and(|f| f.associative_may_overestimate()) {
@@ -66,4 +80,22 @@ pub fn warnings(solved: &SolvedArch) -> Vec<Warning> {
         solved.studies.sensitivity.as_ref(),
     ));
     warnings
+}
+
+/// The ring interfaces the collapse mechanism slides along that have no cohesion, if any.
+fn rings_sliding_without_cohesion(solved: &SolvedArch) -> Option<Vec<usize>> {
+    let problem = &solved.input.problem;
+    let interfaces = &problem.assembly().interfaces;
+    let sliding: Vec<usize> = solved
+        .solution
+        .mechanism
+        .as_ref()?
+        .sliding
+        .iter()
+        .copied()
+        .filter(|&k| {
+            interfaces[k].kind == InterfaceKind::Ring && problem.cohesive_capacity(k) == 0.0
+        })
+        .collect();
+    (!sliding.is_empty()).then_some(sliding)
 }

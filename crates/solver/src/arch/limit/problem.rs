@@ -304,7 +304,7 @@ impl ArchProblem {
     }
 
     /// The cohesive shear capacity c·ℓ of interface `k` (0 without cohesion).
-    pub(crate) fn cohesive_capacity(&self, k: usize) -> f64 {
+    pub fn cohesive_capacity(&self, k: usize) -> f64 {
         let cohesion = match self.own(k) {
             Some((_, c)) => c,
             None if self.assembly.interfaces[k].kind == InterfaceKind::Ring => self.ring_cohesion,
