@@ -203,17 +203,22 @@ fn plot_rect(document: &roxmltree::Document) -> [f64; 4] {
     [x0, y0, x0 + number("width"), y0 + number("height")]
 }
 
-/// The hinge dots of an arch drawing mapped back to coordinates through the root's data-frame
-/// ("x0 top y1 scale"; dots are drawn inside the plot's group, so its shift is added), and the
-/// scale.
-fn hinge_dots(document: &roxmltree::Document) -> (Vec<(f64, f64)>, f64) {
-    let frame: Vec<f64> = document
+/// The root's data-frame: x0, top, y1 and the scale of the plot.
+fn data_frame(document: &roxmltree::Document) -> Vec<f64> {
+    document
         .root_element()
         .attribute("data-frame")
         .unwrap()
         .split(' ')
         .map(|v| v.parse().unwrap())
-        .collect();
+        .collect()
+}
+
+/// The hinge dots of an arch drawing mapped back to coordinates through the root's data-frame
+/// ("x0 top y1 scale"; dots are drawn inside the plot's group, so its shift is added), and the
+/// scale.
+fn hinge_dots(document: &roxmltree::Document) -> (Vec<(f64, f64)>, f64) {
+    let frame = data_frame(document);
     let [x0, top, y1, scale] = frame[..] else {
         panic!("{frame:?}")
     };
@@ -650,13 +655,7 @@ async fn the_rolling_curve_shares_the_bridge_axis_and_has_ticks() {
     assert_eq!(status, 200, "{answer}");
     let text = svg(&server, "/arch/live-load/svg", &body).await;
     let doc = roxmltree::Document::parse(&text).unwrap();
-    let frame: Vec<f64> = doc
-        .root_element()
-        .attribute("data-frame")
-        .unwrap()
-        .split(' ')
-        .map(|v| v.parse().unwrap())
-        .collect();
+    let frame = data_frame(&doc);
     let (x0, scale) = (frame[0], frame[3]);
     let to_px = |x: f64| 60.0 + (x - x0) * scale;
     let band = doc

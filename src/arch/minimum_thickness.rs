@@ -106,7 +106,7 @@ pub struct MinimumThicknessResponse {
     pub active_constraints: Vec<ActiveConstraintDto>,
     /// Dead-load programmes solved.
     pub evaluations: usize,
-    /// Interior-point iterations over all of them.
+    /// Iterations over all of them (interior-point iterations; simplex pivots on a chain).
     pub iterations: u32,
     /// Wall time of the search in milliseconds.
     pub solve_time_ms: f64,

@@ -113,7 +113,8 @@ pub struct SolverDto {
     /// reduced_accuracy, max_iterations, numerical_error, infeasible (the interior-point method
     /// stopped without an answer it can vouch for: no factor reported).
     pub status: ArchStatusDto,
-    /// Interior-point iterations over all linear programmes.
+    /// Iterations over all linear programmes: interior-point iterations, and simplex pivots
+    /// on a chain.
     pub iterations: u32,
     /// Linear programmes solved.
     pub programmes: usize,

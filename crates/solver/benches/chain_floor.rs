@@ -5,23 +5,16 @@
 //! median of repeated runs on one thread, in microseconds.
 #![allow(clippy::unwrap_used)]
 
-use std::time::Instant;
-
 use thrustline_solver::arch::chain::ChainStatics;
 use thrustline_solver::arch::*;
 use thrustline_solver::reference::semicircle;
 
+mod common;
+
 /// Median wall time in microseconds of `runs` calls, and the last value.
-fn time<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
-    let mut times = Vec::with_capacity(runs);
-    let mut value = None;
-    for _ in 0..runs {
-        let start = Instant::now();
-        value = Some(f());
-        times.push(start.elapsed().as_secs_f64() * 1e6);
-    }
-    times.sort_by(f64::total_cmp);
-    (times[runs / 2], value.unwrap())
+fn time<T>(runs: usize, f: impl FnMut() -> T) -> (f64, T) {
+    let (secs, value) = common::median_secs(runs, f);
+    (secs * 1e6, value)
 }
 
 fn main() {

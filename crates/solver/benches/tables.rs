@@ -4,24 +4,17 @@
 #![allow(clippy::unwrap_used)]
 
 use std::num::NonZeroUsize;
-use std::time::Instant;
-
 use thrustline_solver::arch::*;
 use thrustline_solver::budget::Budget;
 use thrustline_solver::reference::{semicircle, spencer_1967};
 use thrustline_solver::slope::*;
 
+mod common;
+
 /// Median wall time in milliseconds of `runs` calls, and the last value.
-fn time<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
-    let mut times = Vec::with_capacity(runs);
-    let mut value = None;
-    for _ in 0..runs {
-        let start = Instant::now();
-        value = Some(f());
-        times.push(start.elapsed().as_secs_f64() * 1e3);
-    }
-    times.sort_by(f64::total_cmp);
-    (times[runs / 2], value.unwrap())
+fn time<T>(runs: usize, f: impl FnMut() -> T) -> (f64, T) {
+    let (secs, value) = common::median_secs(runs, f);
+    (secs * 1e3, value)
 }
 
 fn runs_for(n: usize) -> usize {

@@ -334,16 +334,17 @@ fn build(
     check_bridge(shape, rings, &piers)?;
     let (n, depth) = (shape.voussoirs(), shape.thickness());
     let last = 2 * n;
+    let pitch = pitch(shape, &piers);
     let at = |span: usize, j: usize, d: f64| {
         let p = shape.corner(j, d);
-        (span as f64 * pitch(shape, &piers) + p.0, 0.0 + p.1)
+        (span as f64 * pitch + p.0, 0.0 + p.1)
     };
     let voussoirs = span_blocks(shape, rings, joints);
     let mut polygons = Vec::new();
     let mut generated: Vec<Option<(usize, &Voussoir)>> = Vec::new();
     let mut extrados = Vec::new();
     for span in 0..piers.spans {
-        let shift = span as f64 * pitch(shape, &piers);
+        let shift = span as f64 * pitch;
         for v in &voussoirs {
             let polygon: Vec<Point> = v.polygon.iter().map(|p| (shift + p.0, 0.0 + p.1)).collect();
             if v.ring + 1 == rings {

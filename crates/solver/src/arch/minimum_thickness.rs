@@ -73,7 +73,7 @@ pub struct MinimumThickness {
     pub outcome: MinimumThicknessOutcome,
     /// Dead-load programmes solved.
     pub evaluations: usize,
-    /// Interior-point iterations over all of them.
+    /// Iterations over all of them (interior-point iterations; simplex pivots on a chain).
     pub iterations: u32,
     /// Wall time in seconds.
     pub solve_time_secs: f64,

@@ -66,7 +66,7 @@ pub(crate) struct FullDeadLoadMargin {
     pub margin: f64,
     /// The collapse mechanism when δ > 0.
     pub mechanism: Option<Mechanism>,
-    /// Interior-point iterations spent.
+    /// Iterations spent (interior-point iterations; simplex pivots on a chain).
     pub iterations: u32,
 }
 

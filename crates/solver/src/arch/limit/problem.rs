@@ -527,7 +527,8 @@ pub struct LimitSolution {
     pub resultants: Vec<[f64; 3]>,
     /// The collapse mechanism, when the structure is at its limit.
     pub mechanism: Option<Mechanism>,
-    /// Interior-point iterations over all programmes.
+    /// Iterations over all programmes: interior-point iterations, and simplex pivots on a
+    /// chain.
     pub iterations: u32,
     /// Linear programmes solved.
     pub programmes: usize,
