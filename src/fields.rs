@@ -81,6 +81,10 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::LayerTop { index } => format!("section.layers[{index}].top"),
         SlopeParameter::Bedrock => "section.bedrock".to_owned(),
         SlopeParameter::PiezometricLine => "section.piezometric_line".to_owned(),
+        SlopeParameter::Drawdown => "section.drawdown".to_owned(),
+        SlopeParameter::REnvelope { index } => {
+            format!("section.layers[{index}].soil.r_envelope")
+        }
         SlopeParameter::WaterUnitWeight => "section.water_unit_weight".to_owned(),
         SlopeParameter::Surcharge { index } => format!("section.surcharges[{index}]"),
         SlopeParameter::LineLoad { index } => format!("section.line_loads[{index}]"),

@@ -8,6 +8,7 @@
 pub mod checks;
 pub mod contours;
 pub mod design;
+pub mod drawdown;
 pub mod drawing;
 pub mod fills;
 pub mod input;

@@ -78,6 +78,10 @@ pub struct SoilDto {
     #[serde(default)]
     #[schema(examples(0.5))]
     pub pore_pressure_ratio: Option<f64>,
+    /// In a section's layer with `section.drawdown`: the soil does not drain during the
+    /// drawdown, and this is its total-stress (R) envelope.
+    #[serde(default)]
+    pub r_envelope: Option<super::drawdown::REnvelopeDto>,
 }
 
 /// Pseudo-static seismic coefficients, applied at the slice centroids.
@@ -348,6 +352,10 @@ pub struct SectionDto {
     /// which still sets ponded water). Outside the grid u = 0, with a warning.
     #[serde(default)]
     pub pore_pressure_grid: Option<super::water::PoreGridDto>,
+    /// A rapid drawdown (model §8): the water lines before and after it, in place of
+    /// `piezometric_line`; soils with an `r_envelope` do not drain.
+    #[serde(default)]
+    pub drawdown: Option<super::drawdown::DrawdownDto>,
     /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
     /// (kN/m³); give 62.4 for pcf.
     #[serde(default)]

@@ -195,6 +195,10 @@ pub struct SpencerResponse {
     /// factor and whether it is verified.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub design: Option<super::design::DesignOutDto>,
+    /// With `section.drawdown`: F of each stage on the answered surface, the stage answered,
+    /// and the slices in soils that do not drain.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drawdown: Option<super::drawdown::DrawdownOutDto>,
     /// With `probabilistic`: the study's probability of failure, statistics and histogram.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub probabilistic: Option<crate::study::response::ProbabilisticOutDto>,
@@ -328,6 +332,10 @@ impl SpencerResponse {
                 super::supports::supports_out(&section.supports(), section.section().supports())
             },
             design: solved.design.as_ref().map(super::design::design_out),
+            drawdown: {
+                let Analysed::Section(section) = problem;
+                section.drawdown().map(super::drawdown::drawdown_out)
+            },
             probabilistic: solved
                 .studies
                 .probabilistic

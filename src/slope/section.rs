@@ -226,12 +226,16 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
     let line = |field: &str, points: &Option<Vec<Coordinates>>| {
         points.as_ref().map(|p| polyline(field, p)).transpose()
     };
-    let (piezometric_line, hu) = match &dto.piezometric_line {
-        Some(w) => {
+    let (piezometric_line, hu) = match (&dto.piezometric_line, super::drawdown::after_line(dto)?) {
+        (_, Some(after)) => (
+            Some(polyline("section.drawdown.after", &after)?),
+            Hu::default(),
+        ),
+        (Some(w), None) => {
             let w = water_line("section.piezometric_line", w)?;
             (Some(w.line), w.hu)
         }
-        None => (None, Hu::default()),
+        (None, None) => (None, Hu::default()),
     };
     let water_unit_weight = within(
         "section.water_unit_weight",
@@ -290,7 +294,7 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
         Some(design) => in_design_values(parts, dto, design)?,
         None => parts,
     };
-    Ok(Section::new(parts)?)
+    super::drawdown::with_drawdown(Section::new(parts)?, dto, design)
 }
 
 /// The layers, each with its soil, strength model and own water line.

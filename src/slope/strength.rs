@@ -90,6 +90,12 @@ pub enum StrengthDto {
 /// A Mohr–Coulomb soil at `prefix` (`soil`: the simple slope, which takes no strength model);
 /// r_u is the caller's.
 pub fn soil(prefix: &str, dto: &SoilDto, ratio: f64) -> Result<Soil, ApiError> {
+    if dto.r_envelope.is_some() {
+        return Err(ApiError::invalid(
+            format!("{prefix}.r_envelope"),
+            "is for a section's layers with section.drawdown: give the slope as a section",
+        ));
+    }
     if dto.strength.is_some() {
         return Err(ApiError::invalid(
             format!("{prefix}.strength"),

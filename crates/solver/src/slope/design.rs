@@ -161,6 +161,19 @@ impl Design {
         )
     }
 
+    /// A soil's total-stress (R) envelope of a rapid drawdown in design values: c_R/γ_c and
+    /// tan φ_R/γ_φ, as its effective strength.
+    pub fn total_stress_envelope(
+        &self,
+        r: crate::slope::section::drawdown::REnvelope,
+    ) -> crate::slope::section::drawdown::REnvelope {
+        let f = &self.factors;
+        crate::slope::section::drawdown::REnvelope {
+            cohesion: r.cohesion / f.cohesion,
+            friction_angle_rad: (r.friction_angle_rad.tan() / f.friction).atan(),
+        }
+    }
+
     /// The factor on a load acting as `action`.
     pub fn load_factor(&self, action: Action) -> f64 {
         let f = &self.factors;

@@ -54,6 +54,13 @@ pub enum SlopeParameter {
     Bedrock,
     /// The piezometric line.
     PiezometricLine,
+    /// A rapid drawdown as a whole.
+    Drawdown,
+    /// The R envelope of layer `index`'s soil (0-based).
+    REnvelope {
+        /// Index of the layer.
+        index: usize,
+    },
     /// The unit weight of water.
     WaterUnitWeight,
     /// Surcharge `index` (0-based).
@@ -161,6 +168,8 @@ impl std::fmt::Display for SlopeParameter {
             Self::LayerTop { index } => write!(f, "top of layer {}", index + 1),
             Self::Bedrock => write!(f, "bedrock"),
             Self::PiezometricLine => write!(f, "piezometric line"),
+            Self::Drawdown => write!(f, "drawdown"),
+            Self::REnvelope { index } => write!(f, "R envelope of layer {index}"),
             Self::WaterUnitWeight => write!(f, "water unit weight"),
             Self::Surcharge { index } => write!(f, "surcharge {}", index + 1),
             Self::LineLoad { index } => write!(f, "line load {}", index + 1),

@@ -32,6 +32,8 @@ pub(super) struct Cut {
     pub mirrored: bool,
     /// Each support of the section against this surface (solver frame).
     pub supports: Vec<super::SupportForce>,
+    /// With a rapid drawdown: what its stages gave (the model has the last stage's strengths).
+    pub drawdown: Option<super::drawdown::DrawdownStages>,
 }
 
 /// y of the slip surface (before bedrock) at x.
@@ -146,6 +148,7 @@ impl Cut {
         mirrored: bool,
     ) -> Result<Self, SlopeError> {
         let ground = &section.ground;
+        let count = slices;
         let base = |x: f64| {
             let y = shape_y(shape, x);
             section.bedrock.as_ref().map_or(y, |b| y.max(b.y_at(x)))
@@ -213,18 +216,34 @@ impl Cut {
             })
             .fold(0.0f64, f64::max)
             .max(f64::MIN_POSITIVE);
+        let mut model = SliceModel {
+            slices,
+            seismic,
+            loads,
+            reference,
+            moment_centre,
+            circular,
+            length_scale,
+            envelopes: section.envelopes.clone(),
+            fixed: Vec::new(),
+        };
+        let drawdown = match &section.drawdown {
+            Some(d) => {
+                let before = Self::new(
+                    &d.before,
+                    shape,
+                    (entry, exit),
+                    count,
+                    seismic,
+                    moment_centre,
+                    mirrored,
+                )?;
+                Some(super::drawdown::stages(d, &before.model, &mut model)?)
+            }
+            None => None,
+        };
         Ok(Self {
-            model: SliceModel {
-                slices,
-                seismic,
-                loads,
-                reference,
-                moment_centre,
-                circular,
-                length_scale,
-                envelopes: section.envelopes.clone(),
-                fixed: Vec::new(),
-            },
+            model,
             ends: (
                 (xa, ground.y_at(xa)),
                 (xb, crack.map_or(ground.y_at(xb), |c| c.2)),
@@ -233,6 +252,7 @@ impl Cut {
             crack,
             mirrored,
             supports,
+            drawdown,
         })
     }
 }
@@ -309,6 +329,7 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
     let lines: Vec<&Polyline> = tops
         .chain(section.bedrock.as_ref())
         .chain(section.piezometric_line.as_ref())
+        .chain(section.other_water_line.as_ref())
         .chain(own)
         .collect();
     let mut xs: Vec<f64> = Vec::new();

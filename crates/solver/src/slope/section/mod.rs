@@ -10,6 +10,7 @@
 mod blocks;
 mod column;
 mod cut;
+pub mod drawdown;
 mod ends;
 #[cfg(test)]
 mod level_tests;
@@ -118,6 +119,12 @@ pub struct Section {
     /// Whether the ground is level beyond its ends by definition (the simple embankment) rather
     /// than as stated only so far (a section's ground line).
     level_beyond_ends: bool,
+    /// Rapid drawdown: the section before it and the soils that do not drain (the piezometric
+    /// line is the one after it).
+    drawdown: Option<Box<drawdown::Drawdown>>,
+    /// The other stage's water line of a drawdown: its crossings cut the slices too, so that
+    /// both stages have the same slices.
+    other_water_line: Option<Polyline>,
 }
 
 /// Everything a [`Section`] is built from.
@@ -165,6 +172,8 @@ impl Section {
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
             level_beyond_ends: false,
+            drawdown: None,
+            other_water_line: None,
         }
         .with_bends())
     }
@@ -444,6 +453,11 @@ impl SectionProblem {
     /// The slices and loads in the solver's frame.
     pub fn model(&self) -> &SliceModel {
         &self.cut.model
+    }
+
+    /// What a rapid drawdown's stages gave on this surface.
+    pub fn drawdown(&self) -> Option<&drawdown::DrawdownStages> {
+        self.cut.drawdown.as_ref()
     }
 
     /// Each support against this surface, in section coordinates (as the section lists them).

@@ -75,6 +75,13 @@ impl Section {
             levels: column::LevelTable::default(),
             ponded: Vec::new(),
             level_beyond_ends: self.level_beyond_ends,
+            drawdown: self.drawdown.as_ref().map(|d| {
+                Box::new(super::drawdown::Drawdown {
+                    before: d.before.mirrored(),
+                    envelopes: d.envelopes.clone(),
+                })
+            }),
+            other_water_line: line(&self.other_water_line),
         }
         .with_bends()
     }
