@@ -57,10 +57,15 @@ pub fn layer_fills(section: &Section, left: f64, right: f64, bottom: f64) -> Vec
             polygon,
             colour: LAYER_COLOURS[k % LAYER_COLOURS.len()],
             label: format!(
-                "layer {}: γ = {}, {}",
+                "layer {}: γ = {}, {}{}",
                 k + 1,
                 crate::svg::shown(layer.soil.unit_weight()),
-                super::strength::describe(layer)
+                super::strength::describe(layer),
+                section.r_envelope(k).map_or(String::new(), |r| format!(
+                    "; undrained in the drawdown: R envelope c_R = {}, φ_R = {}°",
+                    crate::svg::shown(r.cohesion),
+                    crate::svg::shown(r.friction_angle_rad.to_degrees())
+                ))
             ),
         });
     }

@@ -252,11 +252,7 @@ impl SpencerResponse {
         } else {
             Vec::new()
         };
-        let totals = |f: fn(&SliceDto) -> f64| {
-            (!slices.is_empty()).then(|| slices.iter().map(f).sum::<f64>())
-        };
-        let total_shear_strength = totals(|s| s.available_shear_strength * s.base_length);
-        let total_mobilised_shear = totals(|s| s.shear_force);
+        let (total_shear_strength, total_mobilised_shear) = shear_totals(&slices);
         let point = |(x, y): (f64, f64)| PointDto { x, y };
         let circle = problem.circle().map(|c| CircleOutDto {
             x: c.centre.0 - c.lower_end.0,
@@ -267,6 +263,7 @@ impl SpencerResponse {
             upper_exit: point(c.upper_exit),
         });
         let surface = problem.surface();
+        let Analysed::Section(section) = problem;
         let line = |points: &[ThrustPoint]| -> Vec<BoundaryThrustPointDto> {
             points
                 .iter()
@@ -327,15 +324,12 @@ impl SpencerResponse {
                     .collect()
             }),
             omitted: Vec::new(),
-            supports: {
-                let Analysed::Section(section) = problem;
-                super::supports::supports_out(&section.supports(), section.section().supports())
-            },
+            supports: super::supports::supports_out(
+                &section.supports(),
+                section.section().supports(),
+            ),
             design: solved.design.as_ref().map(super::design::design_out),
-            drawdown: {
-                let Analysed::Section(section) = problem;
-                section.drawdown().map(super::drawdown::drawdown_out)
-            },
+            drawdown: section.drawdown().map(super::drawdown::drawdown_out),
             probabilistic: solved
                 .studies
                 .probabilistic
@@ -344,6 +338,16 @@ impl SpencerResponse {
             sensitivity: solved.studies.sensitivity.clone(),
         }
     }
+}
+
+/// The slices' available and mobilised shear forces summed (none without slices).
+fn shear_totals(slices: &[SliceDto]) -> (Option<f64>, Option<f64>) {
+    let totals =
+        |f: fn(&SliceDto) -> f64| (!slices.is_empty()).then(|| slices.iter().map(f).sum::<f64>());
+    (
+        totals(|s| s.available_shear_strength * s.base_length),
+        totals(|s| s.shear_force),
+    )
 }
 
 /// Whether the answer converged, its status, and whether it has slice forces: converged only

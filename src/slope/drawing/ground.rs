@@ -30,8 +30,10 @@ pub fn ground(
     {
         // Each layer in its colour, over the plain ground colour.
         let fills = layer_fills(p.section(), left.min(first.0), right.max(last.0), bottom);
-        // One Mohr–Coulomb soil needs no key; other models are named.
+        // One Mohr–Coulomb soil needs no key; other models, and a soil that does not drain in
+        // a drawdown, are named.
         let named = p.section().layers().len() > 1
+            || p.section().r_envelope(0).is_some()
             || p.section().layers().iter().any(|l| {
                 !matches!(
                     l.strength,

@@ -90,8 +90,16 @@ fn section_lines(section: &thrustline_solver::slope::section::Section) -> Vec<Li
     if let Some(b) = section.bedrock() {
         lines.push((b.points().to_vec(), "#424242", "bedrock".to_owned()));
     }
+    if let Some(before) = section.drawdown_before() {
+        let label = "piezometric line before the drawdown".to_owned();
+        lines.push((before.points().to_vec(), "#80d8ff", label));
+    }
     if let Some(w) = section.piezometric_line() {
-        let label = format!("piezometric line{}", hu(section.water().hu));
+        let after = match section.drawdown_before() {
+            Some(_) => " after the drawdown",
+            None => "",
+        };
+        let label = format!("piezometric line{after}{}", hu(section.water().hu));
         lines.push((w.points().to_vec(), "#0277bd", label));
     }
     for (i, layer) in section.layers().iter().enumerate() {

@@ -138,17 +138,39 @@ fn place_between(
 }
 
 impl Cut {
+    /// The cut of `shape` between `entry` and `exit`; with a rapid drawdown, its stages run on
+    /// it (the same surface cut before the drawdown gives the consolidation stresses).
     pub fn new(
         section: &Section,
         shape: &SlipShape,
-        (entry, exit): (f64, f64),
+        ends: (f64, f64),
         slices: NonZeroUsize,
         seismic: Seismic,
         moment_centre: Option<(f64, f64)>,
         mirrored: bool,
     ) -> Result<Self, SlopeError> {
+        let at = (slices, seismic, moment_centre, mirrored);
+        let mut cut = Self::one_state(section, shape, ends, at)?;
+        if let Some(d) = &section.drawdown {
+            let before = Self::one_state(&d.before, shape, ends, at)?;
+            cut.drawdown = Some(super::drawdown::stages(d, &before.model, &mut cut.model)?);
+        }
+        Ok(cut)
+    }
+
+    /// The cut of `shape` on `section` as it stands (one water state).
+    fn one_state(
+        section: &Section,
+        shape: &SlipShape,
+        (entry, exit): (f64, f64),
+        (slices, seismic, moment_centre, mirrored): (
+            NonZeroUsize,
+            Seismic,
+            Option<(f64, f64)>,
+            bool,
+        ),
+    ) -> Result<Self, SlopeError> {
         let ground = &section.ground;
-        let count = slices;
         let base = |x: f64| {
             let y = shape_y(shape, x);
             section.bedrock.as_ref().map_or(y, |b| y.max(b.y_at(x)))
@@ -208,15 +230,8 @@ impl Cut {
                 )
             }
         };
-        let length_scale = surface
-            .iter()
-            .map(|p| {
-                let (dx, dy) = (p.0 - reference.0, p.1 - reference.1);
-                (dx * dx + dy * dy).sqrt()
-            })
-            .fold(0.0f64, f64::max)
-            .max(f64::MIN_POSITIVE);
-        let mut model = SliceModel {
+        let length_scale = farthest(&surface, reference);
+        let model = SliceModel {
             slices,
             seismic,
             loads,
@@ -226,21 +241,6 @@ impl Cut {
             length_scale,
             envelopes: section.envelopes.clone(),
             fixed: Vec::new(),
-        };
-        let drawdown = match &section.drawdown {
-            Some(d) => {
-                let before = Self::new(
-                    &d.before,
-                    shape,
-                    (entry, exit),
-                    count,
-                    seismic,
-                    moment_centre,
-                    mirrored,
-                )?;
-                Some(super::drawdown::stages(d, &before.model, &mut model)?)
-            }
-            None => None,
         };
         Ok(Self {
             model,
@@ -252,9 +252,22 @@ impl Cut {
             crack,
             mirrored,
             supports,
-            drawdown,
+            drawdown: None,
         })
     }
+}
+
+/// The largest distance from `reference` to a point of `surface` (at least the least positive
+/// number): the moment equation's length scale.
+fn farthest(surface: &[(f64, f64)], reference: (f64, f64)) -> f64 {
+    surface
+        .iter()
+        .map(|p| {
+            let (dx, dy) = (p.0 - reference.0, p.1 - reference.1);
+            (dx * dx + dy * dy).sqrt()
+        })
+        .fold(0.0f64, f64::max)
+        .max(f64::MIN_POSITIVE)
 }
 
 /// Where the slip surface rises through the tension crack's line (the ground `depth` lower) at

@@ -142,6 +142,13 @@ impl Section {
         Ok(self)
     }
 
+    /// The R envelope of layer `index`'s soil, when it does not drain in a drawdown.
+    pub fn r_envelope(&self, index: usize) -> Option<REnvelope> {
+        self.drawdown
+            .as_ref()
+            .and_then(|d| d.envelopes.get(index).copied().flatten())
+    }
+
     /// The water line before the drawdown, if there is one.
     pub fn drawdown_before(&self) -> Option<&Polyline> {
         self.drawdown
@@ -188,7 +195,8 @@ pub fn undrained_strength(
         return lower;
     }
     let k = k.clamp(1.0, k_f);
-    ((k_f - k) * isotropic + (k - 1.0) * at_failure) / (k_f - 1.0)
+    // ((K_f − K)·τ₁ + (K − 1)·τ_f)/(K_f − 1), written so that equal envelopes give their value.
+    isotropic + (k - 1.0) / (k_f - 1.0) * (at_failure - isotropic)
 }
 
 /// F and each base's effective normal force of `model` by Spencer's method, or why not.
@@ -256,7 +264,8 @@ pub(super) fn stages(
         let slice = &mut after.slices[i];
         let (c, tan_phi) = drained[i];
         let sigma = (normals[i] / slice.base_length).max(0.0);
-        if c + sigma * tan_phi < slice.cohesion {
+        // Lower beyond rounding: equal strengths keep the undrained one.
+        if c + sigma * tan_phi < slice.cohesion * (1.0 - 1e-12) {
             (slice.cohesion, slice.tan_phi) = (c, tan_phi);
             drained_slices.push(i);
         }
