@@ -25,7 +25,7 @@ import numpy as np  # noqa: E402
 from scipy.optimize import linprog  # noqa: E402
 from scipy.sparse import coo_matrix  # noqa: E402
 
-BASE = sys.argv[1] if len(sys.argv) > 1 else "http://127.0.0.1:8080"
+BASE = sys.argv[1] if len(sys.argv) > 1 and __name__ == "__main__" else "http://127.0.0.1:8080"
 R = 10.0
 
 
@@ -116,18 +116,23 @@ def median(f, runs):
     return values[-1][0], statistics.median(v[1] for v in values)
 
 
-print("| problem | N | HiGHS answer | HiGHS time | thrustline answer | thrustline solve time | ratio |")
-print("|---|---|---|---|---|---|---|")
-for n in (100, 1800, 10000):
-    runs = 3 if n >= 10000 else 7
-    for d in (1.0747, 1.0748):
-        value, highs_ms = median(lambda: highs_dead(n, d), runs)
-        body = {"geometry": {"kind": "circular", "radius": R, "thickness": d, "voussoirs": n}}
-        answers = [thrustline("/arch/dead-load", body) for _ in range(runs)]
+def main():
+    print("| problem | N | HiGHS answer | HiGHS time | thrustline answer | thrustline solve time | ratio |")
+    print("|---|---|---|---|---|---|---|")
+    for n in (100, 1800, 10000):
+        runs = 3 if n >= 10000 else 7
+        for d in (1.0747, 1.0748):
+            value, highs_ms = median(lambda: highs_dead(n, d), runs)
+            body = {"geometry": {"kind": "circular", "radius": R, "thickness": d, "voussoirs": n}}
+            answers = [thrustline("/arch/dead-load", body) for _ in range(runs)]
+            ours = statistics.median(a["solver"]["time_ms"] for a in answers)
+            print(f"| dead load, D = {d} | {n} | λ₀ = {value:.6f} | {highs_ms:.1f} ms | λ₀ = {answers[-1]['dead_load_factor']} | {ours:.2f} ms | {highs_ms / ours:.0f}× |")
+        value, highs_ms = median(lambda: highs_live(n, 1.5), runs)
+        body = {"geometry": {"kind": "circular", "radius": R, "thickness": 1.5, "voussoirs": n}, "loads": [{"block": n // 4 + 1, "fy": -1.0}]}
+        answers = [thrustline("/arch/live-load", body) for _ in range(runs)]
         ours = statistics.median(a["solver"]["time_ms"] for a in answers)
-        print(f"| dead load, D = {d} | {n} | λ₀ = {value:.6f} | {highs_ms:.1f} ms | λ₀ = {answers[-1]['dead_load_factor']} | {ours:.2f} ms | {highs_ms / ours:.0f}× |")
-    value, highs_ms = median(lambda: highs_live(n, 1.5), runs)
-    body = {"geometry": {"kind": "circular", "radius": R, "thickness": 1.5, "voussoirs": n}, "loads": [{"block": n // 4 + 1, "fy": -1.0}]}
-    answers = [thrustline("/arch/live-load", body) for _ in range(runs)]
-    ours = statistics.median(a["solver"]["time_ms"] for a in answers)
-    print(f"| live load, D = 1.5 | {n} | λ = {value:.6f} | {highs_ms:.1f} ms | λ = {answers[-1]['load_factor']:.6f} | {ours:.2f} ms | {highs_ms / ours:.0f}× |")
+        print(f"| live load, D = 1.5 | {n} | λ = {value:.6f} | {highs_ms:.1f} ms | λ = {answers[-1]['load_factor']:.6f} | {ours:.2f} ms | {highs_ms / ours:.0f}× |")
+
+
+if __name__ == "__main__":
+    main()

@@ -69,9 +69,50 @@ pub(super) fn place(
     seismic: Seismic,
     moment_centre: Option<(f64, f64)>,
 ) -> Result<Cut, SlopeError> {
+    place_checked(
+        section,
+        mirror,
+        shape,
+        (slices, seismic, moment_centre),
+        true,
+    )
+}
+
+/// [`place`] for a search, which solves the cut at once and counts a mass that nothing drives
+/// as no candidate either way (Spencer's method checks what drives a circle's mass): a surface
+/// of one piece is not checked twice.
+pub(super) fn place_for_search(
+    section: &Section,
+    mirror: &Section,
+    shape: &SlipShape,
+    slices: NonZeroUsize,
+    seismic: Seismic,
+) -> Result<Cut, SlopeError> {
+    place_checked(section, Some(mirror), shape, (slices, seismic, None), false)
+}
+
+/// [`place`]; `check_single`: whether a surface of one piece is checked for what drives it.
+fn place_checked(
+    section: &Section,
+    mirror: Option<&Section>,
+    shape: &SlipShape,
+    (slices, seismic, moment_centre): (NonZeroUsize, Seismic, Option<(f64, f64)>),
+    check_single: bool,
+) -> Result<Cut, SlopeError> {
     // The deepest mass that something drives towards the toe: a lens under level ground
     // beside a shallow slide on the face does not slide, the slide does.
     let pieces = super::ends::ends(&section.ground, shape)?;
+    if let (false, [ends]) = (check_single, pieces.as_slice()) {
+        return place_between(
+            section,
+            mirror,
+            shape,
+            *ends,
+            slices,
+            seismic,
+            moment_centre,
+        );
+    }
     let mut first_error = None;
     for (i, &ends) in pieces.iter().enumerate() {
         match place_between(section, mirror, shape, ends, slices, seismic, moment_centre) {

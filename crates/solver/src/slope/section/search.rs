@@ -11,7 +11,7 @@ use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
 
-use super::cut::place;
+use super::cut::place_for_search;
 use super::{Section, SlipShape};
 use crate::budget::Budget;
 use crate::numerics::nelder_mead;
@@ -206,13 +206,12 @@ impl Evaluator<'_> {
 
     fn factor(&self, centre: (f64, f64), radius: f64) -> Outcome {
         let shape = SlipShape::Circle { centre, radius };
-        let cut = place(
+        let cut = place_for_search(
             self.section,
-            Some(&self.mirror),
+            &self.mirror,
             &shape,
             self.slices,
             self.seismic,
-            None,
         )
         .map_err(|_| None::<Option<f64>>)?;
         if cut.model.depth() < self.min_depth {

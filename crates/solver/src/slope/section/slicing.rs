@@ -106,6 +106,33 @@ pub(super) fn slice_all(
     points: &[f64],
     (tolerance, still): (f64, Option<f64>),
 ) -> Slicing {
+    // The buffers live with the thread: a search cuts thousands of surfaces on each.
+    SCRATCH.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut s) => slice_with(section, xs, base_at, points, (tolerance, still), &mut s),
+        Err(_) => slice_with(
+            section,
+            xs,
+            base_at,
+            points,
+            (tolerance, still),
+            &mut Scratch::default(),
+        ),
+    })
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
+}
+
+/// [`slice_all`] with its buffers given.
+fn slice_with(
+    section: &Section,
+    xs: &[f64],
+    base_at: impl Fn(usize, f64, f64) -> f64,
+    points: &[f64],
+    (tolerance, still): (f64, Option<f64>),
+    s: &mut Scratch,
+) -> Slicing {
     let tan_phi: Vec<f64> = section
         .layers
         .iter()
@@ -117,7 +144,6 @@ pub(super) fn slice_all(
         base_ys: Vec::with_capacity(xs.len()),
         ponded: Vec::with_capacity(count),
     };
-    let mut s = Scratch::default();
     s.left.read(section, xs[0]);
     let mut bl = base_at(0, xs[0], ground(s.left.values()));
     out.base_ys.push(bl);
@@ -132,7 +158,7 @@ pub(super) fn slice_all(
             column_left,
             points,
             (tolerance, &tan_phi, still),
-            &mut s,
+            s,
         );
         out.slices.push(slice);
         out.base_ys.push(br);

@@ -54,6 +54,29 @@ pub(super) struct Equations {
 
 impl Equations {
     pub fn new(model: &SliceModel) -> Self {
+        let (terms, total_weight) = Self::slice_terms(model);
+        let known_moment = terms.iter().map(|t| t.moment).sum();
+        let force_scale = total_weight.max(f64::MIN_POSITIVE);
+        let kernel = Kernel::new(terms.iter().map(|t| Lane {
+            sin_alpha: t.sin_alpha,
+            cos_alpha: t.cos_alpha,
+            a_t: t.a_t,
+            resistance: t.resistance,
+            tan_phi: t.tan_phi,
+            arm: t.arm,
+        }));
+        Self {
+            terms,
+            force_scale,
+            moment_scale: force_scale * model.length_scale,
+            known_moment,
+            kernel,
+        }
+    }
+
+    /// Each slice's constants with the known loads added, and the total weight: what the
+    /// equations are built from (and all that whether anything drives the mass needs).
+    pub fn slice_terms(model: &SliceModel) -> (Vec<SliceTerms>, f64) {
         let mut total_weight = 0.0;
         let mut terms: Vec<SliceTerms> = model
             .slices
@@ -100,23 +123,7 @@ impl Equations {
             t.resistance += a_n * t.tan_phi;
             t.moment += load.moment;
         }
-        let known_moment = terms.iter().map(|t| t.moment).sum();
-        let force_scale = total_weight.max(f64::MIN_POSITIVE);
-        let kernel = Kernel::new(terms.iter().map(|t| Lane {
-            sin_alpha: t.sin_alpha,
-            cos_alpha: t.cos_alpha,
-            a_t: t.a_t,
-            resistance: t.resistance,
-            tan_phi: t.tan_phi,
-            arm: t.arm,
-        }));
-        Self {
-            terms,
-            force_scale,
-            moment_scale: force_scale * model.length_scale,
-            known_moment,
-            kernel,
-        }
+        (terms, total_weight)
     }
 
     /// Whether φ' = 0 (then the moment equation alone fixes F).

@@ -17,7 +17,7 @@
 //! moments about their base middles). With f ≡ 1 these are Spencer's equations (λ = tan θ).
 //! D_j > 0 plays the part of m_α > 0. Solved by damped Newton on (F, λ) from Spencer's answer.
 
-use super::equations::Equations;
+use super::equations::{Equations, SliceTerms};
 use super::nonlinear::{effective_normals, method};
 use crate::slope::slices::SliceModel;
 
@@ -95,7 +95,7 @@ fn ordinary_factor(model: &SliceModel) -> MethodFactor {
         return MethodFactor::plain(None);
     };
     let equations = Equations::new(&model.about(centre));
-    let (driving, _) = ordinary_moments(&equations);
+    let (driving, _) = ordinary_moments(&equations.terms);
     let resisting: f64 = equations
         .terms
         .iter()
@@ -107,9 +107,9 @@ fn ordinary_factor(model: &SliceModel) -> MethodFactor {
 
 /// The moment of the known forces about the reference (negative: towards the toe), with the
 /// known normal force on each base, and the sum of the terms' sizes (for rounding).
-fn ordinary_moments(equations: &Equations) -> (f64, f64) {
+fn ordinary_moments(terms: &[SliceTerms]) -> (f64, f64) {
     let (mut driving, mut size) = (0.0, 0.0);
-    for t in &equations.terms {
+    for t in terms {
         let (s, c) = (t.sin_alpha, t.cos_alpha);
         // The known force K from its components along and across the base.
         let kx = -t.a_t * c + t.a_n * s;
@@ -124,8 +124,8 @@ fn ordinary_moments(equations: &Equations) -> (f64, f64) {
 
 /// Whether the known forces drive the mass towards the toe about the reference (a circle's
 /// centre): a moment beyond rounding (1e-12 of its terms' sizes).
-pub(super) fn drives(equations: &Equations) -> bool {
-    let (driving, size) = ordinary_moments(equations);
+pub(super) fn drives(terms: &[SliceTerms]) -> bool {
+    let (driving, size) = ordinary_moments(terms);
     driving < -1e-12 * size
 }
 

@@ -108,7 +108,7 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
 /// [`spencer_factor_outcome`] with each base's strength as it stands.
 fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
-        if model.circular && !methods::drives(&Equations::new(model)) {
+        if model.circular && !methods::drives(&Equations::slice_terms(model).0) {
             return FactorOutcome::Undriven;
         }
         let s = solve_tension(model, settings);
@@ -123,7 +123,7 @@ fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> Fact
         };
     }
     let equations = Equations::new(model);
-    if model.circular && !methods::drives(&equations) {
+    if model.circular && !methods::drives(&equations.terms) {
         return FactorOutcome::Undriven;
     }
     // φ' = 0 on a circle: the moment equation about the centre alone fixes F whatever the
@@ -163,7 +163,7 @@ fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> Fact
 /// known forces' moment about its centre (a lens of level ground symmetric about the centre's
 /// vertical has none, and nothing to hold).
 pub fn drives_towards_toe(model: &SliceModel) -> bool {
-    !model.circular || methods::drives(&Equations::new(model))
+    !model.circular || methods::drives(&Equations::slice_terms(model).0)
 }
 
 /// Bishop's F as reported: a moment equation about the centre of rotation, meaningless without
