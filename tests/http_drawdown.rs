@@ -250,3 +250,34 @@ async fn the_drawing_shows_both_water_lines_and_the_soil_that_does_not_drain() {
         "{dashed:?}"
     );
 }
+
+#[tokio::test]
+async fn a_design_check_factors_the_r_envelope_as_the_effective_strength() {
+    let server = Server::start().await;
+    // DA1-2's M2: tan φ/1.25, c/1.25, on c′, φ′ and on c_R, φ_R alike; γ_γ = 1.
+    let soil = |c: f64, phi: f64, c_r: f64, phi_r: f64| {
+        json!({"unit_weight": 20, "cohesion": c, "friction_angle_deg": phi,
+               "r_envelope": {"cohesion": c_r, "friction_angle_deg": phi_r}})
+    };
+    let mut designed = request(section(soil(10.0, 25.0, 15.0, 15.0)));
+    designed["design"] = json!({"approach": "DA1-2"});
+    let designed = answer(&server, &designed).await;
+    let reduced = |deg: f64| (deg.to_radians().tan() / 1.25).atan().to_degrees();
+    let by_hand = answer(
+        &server,
+        &request(section(soil(
+            10.0 / 1.25,
+            reduced(25.0),
+            15.0 / 1.25,
+            reduced(15.0),
+        ))),
+    )
+    .await;
+    let f = factor(&by_hand);
+    assert!(
+        (designed["design"]["factor_of_safety"].as_f64().unwrap() - f).abs() <= 1e-9 * f,
+        "{} vs {f}",
+        designed["design"]
+    );
+    assert_eq!(designed["drawdown"], by_hand["drawdown"]);
+}
