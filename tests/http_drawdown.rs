@@ -185,6 +185,10 @@ async fn bad_drawdowns_are_refused_naming_the_field() {
             "section.layers[0].soil.r_envelope.friction_angle_deg",
         ),
         (
+            request(envelope(json!({"cohesion": 0, "friction_angle_deg": 0}))),
+            "section.layers[0].soil.r_envelope",
+        ),
+        (
             json!({"slope": {"height": 10, "length": 20}, "soil": soil,
                    "circle": {"x": 5, "y": 20}}),
             "soil.r_envelope",

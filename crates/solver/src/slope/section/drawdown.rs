@@ -124,6 +124,12 @@ impl Section {
                 89.9f64.to_radians(),
                 "0 ≤ φ_R ≤ 89.9°",
             )?;
+            if r.cohesion == 0.0 && r.friction_angle_rad == 0.0 {
+                return conflict(
+                    SlopeParameter::REnvelope { index },
+                    "c_R = 0 with φ_R = 0 is a soil without undrained strength",
+                );
+            }
         }
         if self.envelopes.is_some() {
             return conflict(
