@@ -18,6 +18,7 @@ use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
 use crate::slope::search::{spaced, FactorGrid, SearchStatus};
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
+use crate::slope::{SlopeError, SlopeParameter};
 
 /// The radii tried at each centre.
 #[derive(Debug, Clone, PartialEq)]
@@ -213,7 +214,14 @@ impl Evaluator<'_> {
             self.slices,
             self.seismic,
         )
-        .map_err(|_| None::<Option<f64>>)?;
+        .map_err(|e| match e {
+            // A drawdown stage without a solution: a mass that cannot be answered.
+            SlopeError::NoSlipMass {
+                parameter: SlopeParameter::Drawdown,
+                ..
+            } => Some(None),
+            _ => None,
+        })?;
         if cut.model.depth() < self.min_depth {
             return Err(None);
         }
