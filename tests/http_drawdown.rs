@@ -228,11 +228,7 @@ async fn the_drawing_shows_both_water_lines_and_the_soil_that_does_not_drain() {
     assert_eq!(status, 200, "{svg}");
     assert!(content_type.starts_with("image/svg+xml"), "{content_type}");
     let doc = roxmltree::Document::parse(&svg).unwrap();
-    let texts: Vec<&str> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("text"))
-        .filter_map(|n| n.text())
-        .collect();
+    let texts = common::svg_texts(&doc);
     for words in [
         "piezometric line before the drawdown",
         "piezometric line after the drawdown",

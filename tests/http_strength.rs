@@ -384,11 +384,7 @@ async fn the_drawing_names_each_model_and_draws_each_water_source() {
     assert_eq!(status, 200, "{svg}");
     assert!(content_type.starts_with("image/svg+xml"), "{content_type}");
     let doc = roxmltree::Document::parse(&svg).unwrap();
-    let texts: Vec<&str> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("text"))
-        .filter_map(|n| n.text())
-        .collect();
+    let texts = common::svg_texts(&doc);
     let keyed = |words: &str| texts.iter().any(|t| t.contains(words));
     for words in [
         "layer 1: γ = 19, τ = 3·(σ′ + 0)^0.6 + 1",

@@ -203,3 +203,11 @@ pub fn assert_problem(
         "detail {detail:?} does not name {field}"
     );
 }
+
+/// The texts of a drawing (its title, key and labels).
+pub fn svg_texts<'a>(doc: &'a roxmltree::Document) -> Vec<&'a str> {
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .collect()
+}

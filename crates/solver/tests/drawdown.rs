@@ -133,7 +133,7 @@ const AFTER: [(f64, f64); 4] = [(-20.0, 2.0), (6.0, 2.0), (54.0, 18.0), (75.0, 1
 const CLAY: (f64, f64, f64) = (20.0, 10.0, 25.0);
 const SAND: (f64, f64, f64) = (21.0, 0.0, 36.0);
 
-fn section(water: &[(f64, f64)]) -> Section {
+fn parts(water: &[(f64, f64)]) -> SectionParts {
     let layer = |top: Option<Polyline>, (gamma, c, phi): (f64, f64, f64)| Layer {
         top,
         soil: Soil::new(gamma, c, phi, 0.0).unwrap(),
@@ -141,7 +141,7 @@ fn section(water: &[(f64, f64)]) -> Section {
         strength: Strength::MohrCoulomb,
         piezometric_line: None,
     };
-    Section::new(SectionParts {
+    SectionParts {
         ground: line(&GROUND),
         layers: vec![
             layer(None, CLAY),
@@ -155,8 +155,11 @@ fn section(water: &[(f64, f64)]) -> Section {
         tension_crack: None,
         supports: Vec::new(),
         water: Water::default(),
-    })
-    .unwrap()
+    }
+}
+
+fn section(water: &[(f64, f64)]) -> Section {
+    Section::new(parts(water)).unwrap()
 }
 
 fn on(section: Section) -> SectionProblem {
@@ -287,26 +290,10 @@ fn a_drawdown_is_refused_where_its_pore_pressures_would_come_from_elsewhere() {
             ..
         })
     ));
-    let mut dry = section(&AFTER);
-    dry = Section::new(SectionParts {
+    let dry = Section::new(SectionParts {
         piezometric_line: None,
-        ..parts_of(&dry)
+        ..parts(&AFTER)
     })
     .unwrap();
     assert!(dry.with_drawdown(line(&BEFORE), vec![r, None]).is_err());
-}
-
-fn parts_of(section: &Section) -> SectionParts {
-    SectionParts {
-        ground: section.ground().clone(),
-        layers: section.layers().to_vec(),
-        bedrock: None,
-        piezometric_line: section.piezometric_line().cloned(),
-        water_unit_weight: 9.81,
-        surcharges: Vec::new(),
-        line_loads: Vec::new(),
-        tension_crack: None,
-        supports: Vec::new(),
-        water: Water::default(),
-    }
 }
