@@ -56,7 +56,7 @@ fn circle_ends(
             let (a, b) = (w[0], w[1]);
             let deepest = ground
                 .pieces(a, b)
-                .map(|(x0, x1, m, _)| depth((xc + m * radius / m.hypot(1.0)).clamp(x0, x1)))
+                .map(|(x0, x1, m, _)| depth((xc + m * radius / (m * m + 1.0).sqrt()).clamp(x0, x1)))
                 .fold(f64::NEG_INFINITY, f64::max);
             (a, b, deepest)
         })
