@@ -43,14 +43,14 @@ pub struct REnvelopeDto {
 }
 
 /// The after-line a drawdown puts in place of `section.piezometric_line`, refusing both.
-pub fn after_line(dto: &SectionDto) -> Result<Option<Vec<Coordinates>>, ApiError> {
+pub fn after_line(dto: &SectionDto) -> Result<Option<&[Coordinates]>, ApiError> {
     match (&dto.drawdown, &dto.piezometric_line) {
         (Some(_), Some(_)) => Err(ApiError::invalid(
             "section.piezometric_line",
             "is not given with section.drawdown, whose before and after lines are the water \
              lines of its two states",
         )),
-        (Some(d), None) => Ok(Some(d.after.clone())),
+        (Some(d), None) => Ok(Some(&d.after)),
         (None, _) => Ok(None),
     }
 }

@@ -228,7 +228,7 @@ pub fn section_from(dto: &SectionDto, design: Option<&Design>) -> Result<Section
     };
     let (piezometric_line, hu) = match (&dto.piezometric_line, super::drawdown::after_line(dto)?) {
         (_, Some(after)) => (
-            Some(polyline("section.drawdown.after", &after)?),
+            Some(polyline("section.drawdown.after", after)?),
             Hu::default(),
         ),
         (Some(w), None) => {

@@ -41,6 +41,13 @@ pub(super) struct Drawdown {
     pub envelopes: Vec<Option<REnvelope>>,
 }
 
+impl Drawdown {
+    /// The R envelope of layer `layer`'s soil; `None` where it drains freely.
+    fn envelope(&self, layer: usize) -> Option<REnvelope> {
+        self.envelopes.get(layer).copied().flatten()
+    }
+}
+
 /// What the stages gave on one surface.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DrawdownStages {
@@ -150,9 +157,7 @@ impl Section {
 
     /// The R envelope of layer `index`'s soil, when it does not drain in a drawdown.
     pub fn r_envelope(&self, index: usize) -> Option<REnvelope> {
-        self.drawdown
-            .as_ref()
-            .and_then(|d| d.envelopes.get(index).copied().flatten())
+        self.drawdown.as_ref().and_then(|d| d.envelope(index))
     }
 
     /// The water line before the drawdown, if there is one.
@@ -246,15 +251,12 @@ pub(super) fn stages(
             reason: "the slices before and after the drawdown differ".to_owned(),
         });
     }
+    // The same slices in the same soils: each base's drained c′ and tan φ′ are the ones it
+    // had before the drawdown.
     let (before_factor, normals) = solved(before, "before the drawdown (stage 1)")?;
-    let drained: Vec<(f64, f64)> = after
-        .slices
-        .iter()
-        .map(|s| (s.cohesion, s.tan_phi))
-        .collect();
     let mut undrained_slices = Vec::new();
     for (i, (slice, consolidated)) in after.slices.iter_mut().zip(&before.slices).enumerate() {
-        let Some(r) = drawdown.envelopes.get(slice.layer).copied().flatten() else {
+        let Some(r) = drawdown.envelope(slice.layer) else {
             continue;
         };
         let sigma = normals[i] / consolidated.base_length;
@@ -268,7 +270,7 @@ pub(super) fn stages(
     let mut drained_slices = Vec::new();
     for &i in &undrained_slices {
         let slice = &mut after.slices[i];
-        let (c, tan_phi) = drained[i];
+        let (c, tan_phi) = (before.slices[i].cohesion, before.slices[i].tan_phi);
         let sigma = (normals[i] / slice.base_length).max(0.0);
         // Lower beyond rounding: equal strengths keep the undrained one.
         if c + sigma * tan_phi < slice.cohesion * (1.0 - 1e-12) {

@@ -108,7 +108,7 @@ pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) ->
 /// [`spencer_factor_outcome`] with each base's strength as it stands.
 fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
-        if model.circular && !methods::drives(&Equations::slice_terms(model).0) {
+        if !drives_towards_toe(model) {
             return FactorOutcome::Undriven;
         }
         let s = solve_tension(model, settings);
