@@ -144,6 +144,8 @@ drawing_check strength-grid /slope/spencer/svg \
     '{"section": {"ground": [[-20, 0], [0, 0], [20, 10], [50, 10]], "layers": [{"top": null, "soil": {"unit_weight": 19, "strength": {"model": "power_curve", "a": 3, "b": 0.6, "c": 1}}}, {"top": [[-20, -3], [50, -3]], "soil": {"unit_weight": 18, "strength": {"model": "undrained", "cohesion": 30, "gradient": 2, "datum": -3}}, "piezometric_line": {"points": [[-20, -1], [50, 2]], "hu": "auto"}}], "pore_pressure_grid": {"points": [[-25, -30, 100], [12, -30, 100], [-25, 12, 0], [12, 12, 0], [0, 0, 50]]}}, "circle": {"centre": [12, 22], "radius": 26}, "slices": 60}'
 drawing_check noncircular /slope/spencer/svg \
     '{"section": {"ground": [[0, 0], [10, 0], [30, 10], [50, 10]], "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}}, {"top": [[0, 1], [50, 1]], "soil": {"unit_weight": 20, "cohesion": 1, "friction_angle_deg": 8}}, {"top": [[0, 0.5], [50, 0.5]], "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 30}}]}, "search": {"shape": "noncircular", "vertices": 8}, "slices": 40}'
-passed=$((35 - failures))
+drawing_check drawdown /slope/spencer/svg \
+    '{"section": {"ground": [[-20, 0], [0, 0], [60, 20], [75, 20]], "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 10, "friction_angle_deg": 25, "r_envelope": {"cohesion": 15, "friction_angle_deg": 15}}}], "drawdown": {"before": [[-20, 18], [54, 18], [75, 12]], "after": [[-20, 2], [6, 2], [54, 18], [75, 12]]}}, "search": {}, "slices": 40}'
+passed=$((36 - failures))
 echo "browser: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]
