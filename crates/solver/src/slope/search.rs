@@ -8,6 +8,7 @@
 //! Centres are measured from the lower end of the slip surface, as in [`super::geometry`].
 //! Grid points whose circle cuts no slip mass, or whose equations have no solution, have no F.
 
+use std::cell::Cell;
 use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
@@ -18,8 +19,9 @@ use crate::budget::Budget;
 use crate::numerics::{nelder_mead, Minimum};
 use crate::outcome::SolverFailure;
 
-use super::section::{Section, SectionProblem};
-use super::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, Soil, SpencerSettings};
+use super::section::trial::circle_outcome;
+use super::section::{Section, SectionProblem, SlipShape};
+use super::spencer::{Seismic, Soil, SpencerSettings};
 
 /// The region of centres searched and the grid laid over it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -216,28 +218,45 @@ pub fn factor_of_safety(
     settings: &SpencerSettings,
 ) -> Option<f64> {
     let section = problem.section().ok()?;
-    outcome(problem, &section, circle, (settings, 0.0)).ok()
+    let frames = (&section, &section.mirrored());
+    outcome(problem, frames, circle, (settings, 0.0), &Cell::new(None)).ok()
 }
 
-/// Spencer's F for one circle; `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it
-/// has no physical solution (with Bishop's F there, if any).
+/// The largest |coordinate| and radius of a circle a section takes.
+const MAX_CIRCLE: f64 = 1e9;
+
+/// Spencer's F for one circle on `section` (`mirror`: the section seen from behind, built
+/// once per search); `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it has no
+/// physical solution (with Bishop's F there, if any). Bishop's F, Spencer's start, is looked
+/// for from `near` first, the last F found (a neighbouring circle's), which a solved circle
+/// replaces.
 fn outcome(
     problem: &SearchProblem,
-    section: &Section,
+    frames: (&Section, &Section),
     circle: SlipCircle,
     (settings, min_depth): (&SpencerSettings, f64),
+    near: &Cell<Option<f64>>,
 ) -> Result<f64, Option<Option<f64>>> {
-    let slope = problem
-        .on(section, circle)
-        .map_err(|_| None::<Option<f64>>)?;
-    if slope.model().depth() < min_depth {
+    let Ok(SlipShape::Circle { centre, radius }) = circle.placed(problem.embankment.height())
+    else {
+        return Err(None);
+    };
+    // The limits a section's circle is validated against (SectionProblem::new).
+    let within = |v: f64| v.abs() <= MAX_CIRCLE;
+    if !(within(centre.0) && within(centre.1) && radius > 0.0 && radius <= MAX_CIRCLE) {
         return Err(None);
     }
-    match spencer_factor_outcome(slope.model(), settings) {
-        FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
-        FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
-        FactorOutcome::Undriven => Err(None),
-    }
+    circle_outcome(
+        frames,
+        (centre, radius),
+        (problem.slices, problem.seismic),
+        (settings, min_depth),
+        near.get(),
+    )
+    .map(|s| {
+        near.set(Some(s.factor_of_safety));
+        s.factor_of_safety
+    })
 }
 
 /// Whether the circle's radius is within the limit.
@@ -260,7 +279,7 @@ type Outcomes = Vec<Vec<Result<f64, Option<Option<f64>>>>>;
 
 fn evaluate_grid(
     problem: &SearchProblem,
-    section: &Section,
+    frames: (&Section, &Section),
     grid: &SearchGrid,
     settings: &SearchSettings,
     budget: &Budget,
@@ -269,6 +288,8 @@ fn evaluate_grid(
     let outcomes: Outcomes = ys
         .par_iter()
         .map(|&y| {
+            // Each circle's F starts the next one's search for Bishop's F along the row.
+            let near = Cell::new(None);
             xs.iter()
                 .map(|&x| {
                     if budget.is_spent() {
@@ -284,9 +305,10 @@ fn evaluate_grid(
                     }
                     outcome(
                         problem,
-                        section,
+                        frames,
                         circle,
                         (&settings.spencer, settings.min_depth),
+                        &near,
                     )
                 })
                 .collect()
@@ -361,7 +383,7 @@ fn recentred(grid: SearchGrid, v: &[f64]) -> SearchGrid {
 /// is searched too, the lower end with it.
 fn refine_from(
     problem: &SearchProblem,
-    section: &Section,
+    frames: (&Section, &Section),
     grid: &SearchGrid,
     factors: &FactorGrid,
     (i, j): (usize, usize),
@@ -375,6 +397,8 @@ fn refine_from(
         y: v[1],
         lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
     };
+    // The last F found starts the next circle's search for Bishop's F.
+    let near = Cell::new(None);
     let objective = |v: &[f64]| {
         if budget.is_spent() {
             return f64::INFINITY;
@@ -394,9 +418,10 @@ fn refine_from(
         }
         outcome(
             problem,
-            section,
+            frames,
             circle_at(v),
             (&settings.spencer, settings.min_depth),
+            &near,
         )
         .unwrap_or(f64::INFINITY)
     };
@@ -465,11 +490,13 @@ pub fn search_critical_circle(
     let Ok(section) = problem.section() else {
         return without_circles(&grid);
     };
+    let mirror = section.mirrored();
+    let frames = (&section, &mirror);
     let mut grid = grid;
     let mut evaluations = 0;
     let mut regrids = 0;
     loop {
-        let (factors, outcomes) = evaluate_grid(problem, &section, &grid, settings, budget);
+        let (factors, outcomes) = evaluate_grid(problem, frames, &grid, settings, budget);
         evaluations += grid.nx * grid.ny;
         let points = ranked(&factors);
         let Some(&(_, bi, bj)) = points.first() else {
@@ -502,7 +529,7 @@ pub fn search_critical_circle(
         }
         let refined: Vec<Minimum> = starts
             .par_iter()
-            .map(|&start| refine_from(problem, &section, &grid, &factors, start, settings, budget))
+            .map(|&start| refine_from(problem, frames, &grid, &factors, start, settings, budget))
             .collect();
         evaluations += refined.iter().map(|r| r.evaluations).sum::<usize>();
         let best = refined

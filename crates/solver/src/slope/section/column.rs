@@ -74,13 +74,30 @@ pub(super) struct Levels(Vec<f64>);
 
 impl Levels {
     /// Reads the section's lines at x.
+    #[cfg(test)]
     pub fn read(&mut self, section: &Section, x: f64) {
+        self.read_from(section, x, &mut 0);
+    }
+
+    /// [`Levels::read`] for reads that move along x by small steps: the table's stretch is
+    /// looked for from `cursor` (the stretch of the last read, which it becomes) by walking,
+    /// where a search would start from scratch. The same stretch, so the same levels.
+    pub fn read_from(&mut self, section: &Section, x: f64, cursor: &mut usize) {
         let table = &section.levels;
         if table.is_empty() {
             self.read_lines(section, x);
             return;
         }
-        let j = table.starts.partition_point(|&s| s <= x);
+        // The first start beyond x, as `partition_point(|&s| s <= x)` gives it (x is finite).
+        let starts = &table.starts;
+        let mut j = (*cursor).min(starts.len());
+        while j < starts.len() && starts[j] <= x {
+            j += 1;
+        }
+        while j > 0 && starts[j - 1] > x {
+            j -= 1;
+        }
+        *cursor = j;
         let dx = x - table.starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
         let rows = &table.rows[j * table.lines..(j + 1) * table.lines];
         self.0.resize(rows.len(), 0.0);

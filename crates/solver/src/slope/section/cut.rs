@@ -260,17 +260,8 @@ impl Cut {
         let (supports, support_loads) =
             super::supports::forces(&section.supports, &surface, &slices);
         loads.extend(support_loads);
-        let (reference, moment_centre, circular) = match shape {
-            SlipShape::Circle { centre, .. } => (*centre, Some(*centre), true),
-            SlipShape::Polyline(_) => {
-                let top = ground.y_at(xa).max(ground.y_at(xb));
-                (
-                    (0.5 * (xa + xb), top + 0.5 * (xb - xa)),
-                    moment_centre,
-                    false,
-                )
-            }
-        };
+        let (reference, moment_centre, circular) =
+            reference(shape, ground, (xa, xb), moment_centre);
         let length_scale = farthest(&surface, reference);
         let model = SliceModel {
             slices,
@@ -295,6 +286,28 @@ impl Cut {
             supports,
             drawdown: None,
         })
+    }
+}
+
+/// The point the moment equation is written about, the moment centre reported and whether
+/// the surface is a circle: a circle's centre; for a polyline between xa and xb, a point half
+/// its width above the higher end (and the moment centre given, if any).
+fn reference(
+    shape: &SlipShape,
+    ground: &Polyline,
+    (xa, xb): (f64, f64),
+    moment_centre: Option<(f64, f64)>,
+) -> ((f64, f64), Option<(f64, f64)>, bool) {
+    match shape {
+        SlipShape::Circle { centre, .. } => (*centre, Some(*centre), true),
+        SlipShape::Polyline(_) => {
+            let top = ground.y_at(xa).max(ground.y_at(xb));
+            (
+                (0.5 * (xa + xb), top + 0.5 * (xb - xa)),
+                moment_centre,
+                false,
+            )
+        }
     }
 }
 

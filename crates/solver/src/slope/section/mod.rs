@@ -24,6 +24,7 @@ mod slicing;
 pub mod supports;
 #[cfg(test)]
 mod tests;
+pub mod trial;
 mod validate;
 pub mod water;
 

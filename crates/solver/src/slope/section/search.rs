@@ -11,14 +11,13 @@ use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
 
-use super::cut::place_for_search;
+use super::trial::{trial, Outcome};
 use super::{Section, SlipShape};
 use crate::budget::Budget;
 use crate::numerics::nelder_mead;
 use crate::outcome::SolverFailure;
 use crate::slope::search::{spaced, FactorGrid, SearchStatus};
-use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
-use crate::slope::{SlopeError, SlopeParameter};
+use crate::slope::spencer::{Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
 #[derive(Debug, Clone, PartialEq)]
@@ -181,10 +180,6 @@ pub struct CircleSearch {
     pub is_on_edge: bool,
 }
 
-/// A circle's F; `Err(Some(bishop))` when it cuts a mass but has no solution (with Bishop's
-/// F there, if any), `Err(None)` when it cuts none.
-type Outcome = Result<f64, Option<Option<f64>>>;
-
 struct Evaluator<'a> {
     section: &'a Section,
     mirror: Section,
@@ -205,34 +200,15 @@ impl Evaluator<'_> {
         self.budget.is_spent()
     }
 
-    fn factor(&self, centre: (f64, f64), radius: f64) -> Outcome {
-        let shape = SlipShape::Circle { centre, radius };
-        let cut = place_for_search(
-            self.section,
-            &self.mirror,
-            &shape,
-            self.slices,
-            self.seismic,
+    /// The circle's outcome, Bishop's start looked for from `near` (a neighbour's F) first.
+    fn factor(&self, centre: (f64, f64), radius: f64, near: Option<f64>) -> Outcome {
+        trial(
+            (self.section, &self.mirror),
+            &SlipShape::Circle { centre, radius },
+            (self.slices, self.seismic),
+            (&self.spencer, self.min_depth, near),
+            |cut| self.circles_only && self.crosses_bedrock(cut, centre, radius),
         )
-        .map_err(|e| match e {
-            // A drawdown stage without a solution: a mass that cannot be answered.
-            SlopeError::NoSlipMass {
-                parameter: SlopeParameter::Drawdown,
-                ..
-            } => Some(None),
-            _ => None,
-        })?;
-        if cut.model.depth() < self.min_depth {
-            return Err(None);
-        }
-        if self.circles_only && self.crosses_bedrock(&cut, centre, radius) {
-            return Err(None);
-        }
-        match spencer_factor_outcome(&cut.model, &self.spencer) {
-            FactorOutcome::Solved(s) => Ok(s.factor_of_safety),
-            FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
-            FactorOutcome::Undriven => Err(None),
-        }
     }
 
     /// Whether the circle dips below the bedrock between its ends (its mass then follows the
@@ -288,6 +264,8 @@ impl Evaluator<'_> {
     fn grid(&self, radii: &Radii, xs: &[f64], ys: &[f64]) -> Vec<Vec<CentreResult>> {
         ys.par_iter()
             .map(|&y| {
+                // Each circle's F starts the next one's search for Bishop's F along the row.
+                let mut near = None;
                 xs.iter()
                     .map(|&x| {
                         let mut best: Option<(f64, f64)> = None;
@@ -297,7 +275,11 @@ impl Evaluator<'_> {
                             if self.is_late() {
                                 break;
                             }
-                            match self.factor((x, y), r) {
+                            let outcome = self.factor((x, y), r, near);
+                            if let Ok(s) = &outcome {
+                                near = Some(s.factor_of_safety);
+                            }
+                            match outcome.map(|s| s.factor_of_safety) {
                                 Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
                                 Ok(_) | Err(None) => {}
                                 Err(Some(b)) => {
@@ -347,11 +329,20 @@ impl Evaluator<'_> {
         starts
             .par_iter()
             .map(|&(r, i, j)| {
+                // The last F found starts the next circle's search for Bishop's F.
+                let near = std::cell::Cell::new(None);
                 let objective = |v: &[f64]| {
                     if self.is_late() || !inside(v) || !radius_allowed(v) {
                         return f64::INFINITY;
                     }
-                    self.factor((v[0], v[1]), v[2]).unwrap_or(f64::INFINITY)
+                    let outcome = self.factor((v[0], v[1]), v[2], near.get());
+                    match outcome {
+                        Ok(s) => {
+                            near.set(Some(s.factor_of_safety));
+                            s.factor_of_safety
+                        }
+                        Err(_) => f64::INFINITY,
+                    }
                 };
                 let scale = dx.abs().max(dy.abs()).max(r);
                 let m = nelder_mead(

@@ -32,7 +32,7 @@ impl Section {
     }
 
     /// The section seen from behind (x → −x).
-    pub(super) fn mirrored(&self) -> Self {
+    pub(crate) fn mirrored(&self) -> Self {
         let line = |l: &Option<Polyline>| l.as_ref().map(Polyline::mirrored);
         Self {
             ground: self.ground.mirrored(),

@@ -29,6 +29,8 @@ struct Scratch {
     a: Levels,
     b: Levels,
     middle: Levels,
+    /// The level table's stretch of the last read (the reads move along x).
+    cursor: usize,
 }
 
 /// The level of still water standing over the whole top of the mass between a and b, when it
@@ -144,13 +146,14 @@ fn slice_with(
         base_ys: Vec::with_capacity(xs.len()),
         ponded: Vec::with_capacity(count),
     };
-    s.left.read(section, xs[0]);
+    s.cursor = 0;
+    s.left.read_from(section, xs[0], &mut s.cursor);
     let mut bl = base_at(0, xs[0], ground(s.left.values()));
     out.base_ys.push(bl);
     let mut column_left = column(section, s.left.values(), bl);
     for i in 0..count {
         let (xl, xr) = (xs[i], xs[i + 1]);
-        s.right.read(section, xr);
+        s.right.read_from(section, xr, &mut s.cursor);
         let br = base_at(i + 1, xr, ground(s.right.values()));
         let (slice, column_right, ponded) = slice(
             section,
@@ -284,7 +287,7 @@ fn slice(
                 s.b.clone_from(&s.right);
                 br
             } else {
-                s.b.read(section, xb);
+                s.b.read_from(section, xb, &mut s.cursor);
                 chord(xb)
             };
             let column_b = add(piece(
@@ -298,7 +301,7 @@ fn slice(
             (xa, ya, column_a) = (xb, yb, column_b);
             std::mem::swap(&mut s.a, &mut s.b);
         }
-        s.middle.read(section, xm);
+        s.middle.read_from(section, xm, &mut s.cursor);
         column_a
     };
     let levels = s.middle.values();

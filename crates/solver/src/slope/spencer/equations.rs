@@ -215,24 +215,29 @@ impl Equations {
     /// F solving the force (`moment = false`) or moment equation at fixed θ: the crossing from
     /// negative to positive residual (more driving than resisting as F grows).
     pub fn f_at_theta(&self, theta: f64, moment: bool, evaluations: &mut usize) -> Option<f64> {
+        self.f_at_theta_from(theta, moment, None, evaluations)
+    }
+
+    /// [`Equations::f_at_theta`], Newton's method tried first from `start` (a neighbouring
+    /// surface's F) when given: where it does not settle there, the search goes on as without
+    /// it.
+    pub fn f_at_theta_from(
+        &self,
+        theta: f64,
+        moment: bool,
+        start: Option<f64>,
+        evaluations: &mut usize,
+    ) -> Option<f64> {
         let (lo, hi) = self.admissible_f(theta)?;
+        if let Some(f) =
+            start.and_then(|f| self.newton_at_theta(theta, moment, (f, (lo, hi)), evaluations))
+        {
+            return Some(f);
+        }
         // Newton from F = 1 first (a handful of evaluations for ordinary slopes); the residual
         // must cross from negative to positive, as on the bracketed path below.
-        let mut f = 1.0f64.clamp(lo, hi);
-        for _ in 0..30 {
-            let (value, slope, min_m_alpha) = self.evaluate_one(f, theta, moment);
-            *evaluations += 1;
-            if !(value.is_finite() && slope > 0.0) || min_m_alpha <= 0.0 {
-                break;
-            }
-            let next = f - value / slope;
-            if !(next > lo && next < hi) {
-                break;
-            }
-            if (next - f).abs() <= 1e-14 * next {
-                return Some(next);
-            }
-            f = next;
+        if let Some(f) = self.newton_at_theta(theta, moment, (1.0, (lo, hi)), evaluations) {
+            return Some(f);
         }
         let residual = |f: f64| self.evaluate_one(f, theta, moment).0;
         let mut scan = self.scan(theta, moment, (lo, hi));
@@ -242,6 +247,35 @@ impl Equations {
         let root = brent(residual, a, b, fa, fb, 1e-14 * b, 200)?;
         *evaluations += root.evaluations;
         Some(root.x)
+    }
+
+    /// Newton's method on one equation at θ from `f` (clamped into the admissible `range`):
+    /// the root where the residual crosses from negative to positive, or `None` where a step
+    /// leaves the range, the slope is not positive or an m_α is not.
+    fn newton_at_theta(
+        &self,
+        theta: f64,
+        moment: bool,
+        (f, (lo, hi)): (f64, (f64, f64)),
+        evaluations: &mut usize,
+    ) -> Option<f64> {
+        let mut f = f.clamp(lo, hi);
+        for _ in 0..30 {
+            let (value, slope, min_m_alpha) = self.evaluate_one(f, theta, moment);
+            *evaluations += 1;
+            if !(value.is_finite() && slope > 0.0) || min_m_alpha <= 0.0 {
+                return None;
+            }
+            let next = f - value / slope;
+            if !(next > lo && next < hi) {
+                return None;
+            }
+            if (next - f).abs() <= 1e-14 * next {
+                return Some(next);
+            }
+            f = next;
+        }
+        None
     }
 
     /// The bounded scan of one equation's residual at θ over [lo, hi] (see [`Scan`]): the terms

@@ -1,8 +1,8 @@
 //! The arithmetic of one slice's inter-slice resultant Q (model §2.2), and the slice sums of
 //! both residuals computed a block of slices at a time.
 //!
-//! The per-slice work is six divisions; done one slice after the other it is bound by the
-//! divider. Stored column-wise in blocks of [`LANES`], the compiler computes a block's slices
+//! The per-slice work is one division (1/m_α; 1/F is common to all slices); done one slice
+//! after the other it is bound by the divider. Stored column-wise in blocks of [`LANES`], the compiler computes a block's slices
 //! side by side in vector registers — compiled twice, for the baseline and for the machine's
 //! widest vectors (AVX2 where there is one, chosen at run time by `pulp`). IEEE arithmetic is
 //! exact per lane (and never contracted into fused multiply-adds), and the sums still add the
@@ -26,11 +26,18 @@ pub(super) fn resultant(
 ) -> [f64; 4] {
     let d = sin_alpha * cos_t - cos_alpha * sin_t;
     let c = cos_alpha * cos_t + sin_alpha * sin_t;
-    let numerator = a_t - resistance / f;
-    let m_alpha = c + d * tan_phi / f;
-    let q = numerator / m_alpha;
-    let dq_df = (resistance * m_alpha + numerator * d * tan_phi) / (f * f * m_alpha * m_alpha);
-    let dq_dtheta = -numerator * (d - c * tan_phi / f) / (m_alpha * m_alpha);
+    // One division per slice: 1/F is the same for every slice (computed once per block
+    // loop), 1/m_α serves Q and both derivatives.
+    let inverse_f = 1.0 / f;
+    let mobilised_tan = tan_phi * inverse_f;
+    let numerator = a_t - resistance * inverse_f;
+    let m_alpha = c + d * mobilised_tan;
+    let inverse_m = 1.0 / m_alpha;
+    let q = numerator * inverse_m;
+    let inverse_m2 = inverse_m * inverse_m;
+    let dq_df =
+        (resistance * m_alpha + numerator * d * tan_phi) * (inverse_f * inverse_f) * inverse_m2;
+    let dq_dtheta = -numerator * (d - c * mobilised_tan) * inverse_m2;
     [q, dq_df, dq_dtheta, m_alpha]
 }
 
@@ -267,8 +274,14 @@ impl pulp::WithSimd for One<'_> {
 mod tests {
     use super::*;
 
-    /// The sums slice after slice, the arithmetic written out as model §2.2 gives it.
+    /// The sums slice after slice, the arithmetic written out as model §2.2 gives it: with a
+    /// division for each quotient (`divided`), or as the kernel orders it (1/F and 1/m_α
+    /// multiplied in).
     fn one_by_one(lanes: &[Lane], f: f64, theta: f64, start: f64) -> Sums {
+        sums_written_out(lanes, f, theta, start, false)
+    }
+
+    fn sums_written_out(lanes: &[Lane], f: f64, theta: f64, start: f64, divided: bool) -> Sums {
         let (sin_t, cos_t) = theta.sin_cos();
         let mut s = Sums {
             force: 0.0,
@@ -280,11 +293,24 @@ mod tests {
         for l in lanes {
             let d = l.sin_alpha * cos_t - l.cos_alpha * sin_t;
             let c = l.cos_alpha * cos_t + l.sin_alpha * sin_t;
-            let num = l.a_t - l.resistance / f;
-            let m = c + d * l.tan_phi / f;
-            let q = num / m;
-            let dq_df = (l.resistance * m + num * d * l.tan_phi) / (f * f * m * m);
-            let dq_dt = -num * (d - c * l.tan_phi / f) / (m * m);
+            let (q, dq_df, dq_dt, m) = if divided {
+                let num = l.a_t - l.resistance / f;
+                let m = c + d * l.tan_phi / f;
+                let q = num / m;
+                let dq_df = (l.resistance * m + num * d * l.tan_phi) / (f * f * m * m);
+                let dq_dt = -num * (d - c * l.tan_phi / f) / (m * m);
+                (q, dq_df, dq_dt, m)
+            } else {
+                let (inv_f, tan_f) = (1.0 / f, l.tan_phi * (1.0 / f));
+                let num = l.a_t - l.resistance * inv_f;
+                let m = c + d * tan_f;
+                let inv_m = 1.0 / m;
+                let q = num * inv_m;
+                let dq_df =
+                    (l.resistance * m + num * d * l.tan_phi) * (inv_f * inv_f) * (inv_m * inv_m);
+                let dq_dt = -num * (d - c * tan_f) * (inv_m * inv_m);
+                (q, dq_df, dq_dt, m)
+            };
             let arm = l.arm.0 * sin_t - l.arm.1 * cos_t;
             let d_arm = l.arm.0 * cos_t + l.arm.1 * sin_t;
             s.force += q;
@@ -318,6 +344,19 @@ mod tests {
             let kernel = Kernel::new(lanes.iter().copied());
             for (f, theta) in [(1.3f64, 0.2f64), (0.7, -0.4), (2.9, 0.0)] {
                 let expected = one_by_one(&lanes, f, theta, -0.25);
+                // The quotients multiplied in are the divided ones to rounding.
+                let divided = sums_written_out(&lanes, f, theta, -0.25, true);
+                let close = |a: f64, b: f64| (a - b).abs() <= 1e-13 * (1.0 + b.abs());
+                assert!(
+                    close(expected.force, divided.force)
+                        && close(expected.moment, divided.moment)
+                        && close(expected.d_force.0, divided.d_force.0)
+                        && close(expected.d_force.1, divided.d_force.1)
+                        && close(expected.d_moment.0, divided.d_moment.0)
+                        && close(expected.d_moment.1, divided.d_moment.1)
+                        && close(expected.min_m_alpha, divided.min_m_alpha),
+                    "n = {n}: {expected:?} against {divided:?}"
+                );
                 assert_eq!(
                     kernel.sums(f, theta.sin_cos(), -0.25),
                     expected,

@@ -102,11 +102,30 @@ pub enum FactorOutcome {
 /// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution;
 /// on nonlinear envelopes, at their consistent state.
 pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
-    nonlinear::factor_outcome(model, settings)
+    nonlinear::factor_outcome(model, settings, None)
 }
 
-/// [`spencer_factor_outcome`] with each base's strength as it stands.
-fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
+/// [`spencer_factor_outcome`] of a search's trial surface next to one whose F `near` is known:
+/// Bishop's F, which starts Newton's method on both equations, is looked for from there first
+/// (from F = 1 as without a neighbour where it does not settle). Bishop's equation has one
+/// root where the classic domain's m_α are positive on an ordinary surface, so the start is
+/// the same to rounding, in fewer iterations; Spencer's root is then the one found without
+/// a neighbour. (Starting Spencer's own iterations at a neighbour's (F, θ) is cheaper still,
+/// but finds other roots of the two equations where they have several.)
+pub fn spencer_factor_outcome_near(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+    near: Option<f64>,
+) -> FactorOutcome {
+    nonlinear::factor_outcome(model, settings, near)
+}
+
+/// [`spencer_factor_outcome_near`] with each base's strength as it stands.
+fn linear_factor_outcome(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+    near: Option<f64>,
+) -> FactorOutcome {
     if settings.negative_effective_stress != NegativeEffectiveStress::Keep {
         if !drives_towards_toe(model) {
             return FactorOutcome::Undriven;
@@ -131,7 +150,7 @@ fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> Fact
     // Bishop's F is Spencer's; no need to look for θ.
     if equations.is_frictionless() && model.circular {
         let mut evaluations = 0;
-        return match equations.f_at_theta(0.0, true, &mut evaluations) {
+        return match equations.f_at_theta_from(0.0, true, near, &mut evaluations) {
             Some(f) => FactorOutcome::Solved(SpencerFactor {
                 factor_of_safety: f,
                 theta_rad: None,
@@ -139,7 +158,7 @@ fn linear_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> Fact
             None => FactorOutcome::Unsolved { bishop: None },
         };
     }
-    let mut solved = solve_equations(&equations, settings);
+    let mut solved = solve_equations(&equations, settings, near);
     solved.bishop = reported_bishop(model, solved.bishop);
     match (solved.root, solved.bishop) {
         (Some((f, theta)), _) if is_physical(&equations, f, theta) => {
@@ -272,7 +291,7 @@ pub fn with_strength_dropped(
 /// The classic equations, with the physical check.
 fn solve_classic(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
     let equations = Equations::new(model);
-    let mut solved = solve_equations(&equations, settings);
+    let mut solved = solve_equations(&equations, settings, None);
     solved.bishop = reported_bishop(model, solved.bishop);
     match (solved.root, solved.bishop) {
         (Some((f, theta)), _) if !is_physical(&equations, f, theta) => {

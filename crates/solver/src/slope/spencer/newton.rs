@@ -32,13 +32,15 @@ enum Branch {
     Any,
 }
 
-/// Bishop's F as the start, damped Newton, and the bracketing fallback when Newton fails.
+/// Bishop's F as the start (looked for from `near`, a neighbouring surface's F, first), damped
+/// Newton, and the bracketing fallback when Newton fails.
 pub(super) fn solve_equations(
     equations: &Equations,
     settings: &SpencerSettings,
+    near: Option<f64>,
 ) -> EquationsSolution {
     let mut evaluations = 0;
-    let bishop = equations.f_at_theta(0.0, true, &mut evaluations);
+    let bishop = equations.f_at_theta_from(0.0, true, near, &mut evaluations);
     let start = (bishop.unwrap_or(1.0), 0.0);
     let mut iterations = 0;
     let mut used_fallback = false;
@@ -164,7 +166,9 @@ fn newton(
 ) -> Option<(f64, f64)> {
     const MAX_THETA_STEP: f64 = 0.2; // rad
     const MAX_THETA: f64 = 89.0 * std::f64::consts::PI / 180.0;
-    let merit = |r: &Residuals| r.force.hypot(r.moment);
+    // The squared norm of the residuals: ordered as the norm (no hypot per evaluation; scaled
+    // residuals whose squares overflow are as unusable as their norm would be).
+    let merit = |r: &Residuals| r.force * r.force + r.moment * r.moment;
     let admissible = |r: &Residuals| branch == Branch::Any || r.min_m_alpha > 0.0;
     let max_theta = match branch {
         Branch::Admissible => MAX_THETA,
@@ -198,6 +202,15 @@ fn newton(
         df *= scale;
         dtheta *= scale;
         let current = merit(&r);
+        // A step within the tolerance from a point whose residual is already that of a
+        // solution: the step's end is the root (to the tolerance, and quadratically closer),
+        // with no evaluation there to confirm what the step's size says (a confirmation at
+        // rounding level is often rejected, then halved to nothing).
+        let tiny =
+            df.abs() <= settings.tolerance * f.max(1.0) && dtheta.abs() <= settings.tolerance;
+        if tiny && current <= SOLVED_RESIDUAL * SOLVED_RESIDUAL {
+            return Some((f + df, (theta + dtheta).clamp(-max_theta, max_theta)));
+        }
         let mut accepted = None;
         for _ in 0..max_halvings {
             let (f_new, theta_new) = (f + df, (theta + dtheta).clamp(-max_theta, max_theta));
@@ -218,7 +231,7 @@ fn newton(
         // No step lowers the residual: fine if it is already at rounding level (a start on the
         // root, as the fallback gives), a failure otherwise.
         let Some((f_new, theta_new, r_new)) = accepted else {
-            return (current <= ROUNDING_RESIDUAL).then_some((f, theta));
+            return (current <= ROUNDING_RESIDUAL * ROUNDING_RESIDUAL).then_some((f, theta));
         };
         let settled = (f_new - f).abs() <= settings.tolerance * f_new.max(1.0)
             && (theta_new - theta).abs() <= settings.tolerance;
@@ -229,11 +242,11 @@ fn newton(
         if settled {
             // Small steps alone can mean a minimum of the residual that is not a root (the
             // line search shortens the steps there): only a vanishing residual is a solution.
-            return (merit(&r) <= SOLVED_RESIDUAL).then_some((f, theta));
+            return (merit(&r) <= SOLVED_RESIDUAL * SOLVED_RESIDUAL).then_some((f, theta));
         }
     }
     // Newton stalled short of the tolerance: accept only if the residual is at rounding level.
-    (merit(&r) <= ROUNDING_RESIDUAL).then_some((f, theta))
+    (merit(&r) <= ROUNDING_RESIDUAL * ROUNDING_RESIDUAL).then_some((f, theta))
 }
 
 /// Spencer's own construction: F_f(θ) and F_m(θ) from the two equations separately, and

@@ -55,12 +55,17 @@ pub(super) fn solve(
 }
 
 /// Spencer's F for a search at the consistent state; a state that does not settle is unsolved.
-pub(super) fn factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
+/// `near`: a neighbouring surface's F, to start Bishop's F from (linear envelopes only).
+pub(super) fn factor_outcome(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+    near: Option<f64>,
+) -> FactorOutcome {
     if !is_nonlinear(model) {
-        return linear_factor_outcome(model, settings);
+        return linear_factor_outcome(model, settings, near);
     }
     let (outcome, consistency, _) =
-        consistent(model, |m| match linear_factor_outcome(m, settings) {
+        consistent(model, |m| match linear_factor_outcome(m, settings, None) {
             FactorOutcome::Solved(s) => {
                 let theta = s.theta_rad.unwrap_or(0.0);
                 let normals = effective_normals(m, s.factor_of_safety, theta);
