@@ -12,4 +12,4 @@ pub mod nelder_mead;
 pub mod simplex;
 
 pub use brent::{brent, Root};
-pub use nelder_mead::{nelder_mead, Minimum};
+pub use nelder_mead::{nelder_mead, nelder_mead_to, Minimum};

@@ -33,6 +33,19 @@ pub fn nelder_mead(
     x_tolerance: f64,
     max_evaluations: usize,
 ) -> Minimum {
+    nelder_mead_to(f, start, step, (x_tolerance, 0.0), max_evaluations)
+}
+
+/// [`nelder_mead`], stopping too when the values at the simplex's vertices differ by less than
+/// `f_tolerance` times the best (relative): `f` is known to no better than that, so a smaller
+/// simplex would only follow its rounding.
+pub fn nelder_mead_to(
+    f: impl Fn(&[f64]) -> f64,
+    start: &[f64],
+    step: &[f64],
+    (x_tolerance, f_tolerance): (f64, f64),
+    max_evaluations: usize,
+) -> Minimum {
     let n = start.len();
     let mut simplex: Vec<Vec<f64>> = vec![start.to_vec()];
     for i in 0..n {
@@ -56,7 +69,8 @@ pub fn nelder_mead(
                     .fold(0.0, f64::max)
             })
             .fold(0.0, f64::max);
-        if size <= x_tolerance {
+        let spread = values[n] - values[0];
+        if size <= x_tolerance || spread < f_tolerance * values[0].abs() {
             break;
         }
         let centroid: Vec<f64> = (0..n)
@@ -133,5 +147,21 @@ mod tests {
         assert!(
             m.value < 1e-15 && (m.point[0] - 1.0).abs() < 1e-7 && (m.point[1] + 2.0).abs() < 1e-7
         );
+    }
+
+    #[test]
+    fn nelder_mead_stops_where_the_values_no_longer_differ() {
+        // 1 + q(v): the vertices' values differ by less than 1e-10 (relative) once the simplex
+        // is ~1e-5 across, long before it is 1e-12 across.
+        let f = |v: &[f64]| 1.0 + (v[0] - 1.0).powi(2) + 3.0 * (v[1] + 2.0).powi(2);
+        let by_x = nelder_mead(f, &[0.0, 0.0], &[0.5, 0.5], 1e-12, 5000);
+        let by_f = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], (1e-12, 1e-10), 5000);
+        assert!(by_f.evaluations < by_x.evaluations, "{by_f:?} {by_x:?}");
+        // Stopped within the tolerance of the minimum value 1.
+        assert!(by_f.value - 1.0 <= 1e-10 && by_f.value >= 1.0);
+        assert!((by_f.point[0] - 1.0).abs() < 1e-4 && (by_f.point[1] + 2.0).abs() < 1e-4);
+        // A zero tolerance is `nelder_mead`.
+        let zero = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], (1e-12, 0.0), 5000);
+        assert_eq!(zero, by_x);
     }
 }

@@ -16,7 +16,7 @@ use rayon::prelude::*;
 use super::error::SlopeError;
 use super::geometry::{Embankment, SlipCircle};
 use crate::budget::Budget;
-use crate::numerics::{nelder_mead, Minimum};
+use crate::numerics::{nelder_mead_to, Minimum};
 use crate::outcome::SolverFailure;
 
 use super::section::trial::circle_outcome;
@@ -259,6 +259,11 @@ fn outcome(
     })
 }
 
+/// The relative spread of F over the refinement's simplex below which it stops: what F is
+/// computed to (the equations solved to rounding, 1e-16 relative, and the conditioning of a
+/// circle's root on top), so a smaller simplex would only follow F's rounding.
+pub(crate) const F_RESOLUTION: f64 = 1e-13;
+
 /// Whether the circle's radius is within the limit.
 fn within_reach(circle: SlipCircle, max_radius: Option<f64>) -> bool {
     // (x² + y²) against m² rather than hypot: this is asked of every circle of a grid.
@@ -427,11 +432,11 @@ fn refine_from(
     };
     // Centres first, at the grid's lower-end factor…
     let start = [factors.xs[i], factors.ys[j]];
-    let centres = nelder_mead(
+    let centres = nelder_mead_to(
         objective,
         &start,
         &[0.5 * dx, 0.5 * dy],
-        1e-9 * scale,
+        (1e-9 * scale, F_RESOLUTION),
         settings.max_refine_evaluations,
     );
     // …then, when it is searched too, the lower end with them, from there: never
@@ -441,11 +446,11 @@ fn refine_from(
             let v = &centres.point;
             let start = [v[0], v[1], problem.lower_end_factor.clamp(0.0, max)];
             let step = [0.25 * dx, 0.25 * dy, 0.1 * max];
-            let with_lower_end = nelder_mead(
+            let with_lower_end = nelder_mead_to(
                 objective,
                 &start,
                 &step,
-                1e-9 * scale,
+                (1e-9 * scale, F_RESOLUTION),
                 settings.max_refine_evaluations,
             );
             Minimum {

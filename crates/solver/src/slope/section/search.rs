@@ -14,9 +14,9 @@ use rayon::prelude::*;
 use super::trial::{trial, Outcome};
 use super::{Section, SlipShape};
 use crate::budget::Budget;
-use crate::numerics::nelder_mead;
+use crate::numerics::nelder_mead_to;
 use crate::outcome::SolverFailure;
-use crate::slope::search::{spaced, FactorGrid, SearchStatus};
+use crate::slope::search::{spaced, FactorGrid, SearchStatus, F_RESOLUTION};
 use crate::slope::spencer::{Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
@@ -345,11 +345,11 @@ impl Evaluator<'_> {
                     }
                 };
                 let scale = dx.abs().max(dy.abs()).max(r);
-                let m = nelder_mead(
+                let m = nelder_mead_to(
                     objective,
                     &[xs[i], ys[j], r],
                     &[0.5 * dx, 0.5 * dy, 0.05 * r],
-                    1e-9 * scale,
+                    (1e-9 * scale, F_RESOLUTION),
                     settings.max_refine_evaluations,
                 );
                 (m.value, m.point, m.evaluations)
