@@ -264,20 +264,27 @@ impl Evaluator<'_> {
     fn grid(&self, radii: &Radii, xs: &[f64], ys: &[f64]) -> Vec<Vec<CentreResult>> {
         ys.par_iter()
             .map(|&y| {
-                // Each circle's F starts the next one's search for Bishop's F along the row.
-                let mut near = None;
+                // Each circle's F starts the search for Bishop's F of the circle of the same
+                // radius index at the next centre along the row (its nearest neighbour), or,
+                // before there is one, of the next radius.
+                let mut near: Vec<Option<f64>> = Vec::new();
+                let mut last = None;
                 xs.iter()
                     .map(|&x| {
                         let mut best: Option<(f64, f64)> = None;
                         let mut unsolved = 0;
                         let mut bishop: Option<f64> = None;
-                        for r in self.radii(radii, (x, y)) {
+                        for (k, r) in self.radii(radii, (x, y)).into_iter().enumerate() {
                             if self.is_late() {
                                 break;
                             }
-                            let outcome = self.factor((x, y), r, near);
+                            if near.len() <= k {
+                                near.resize(k + 1, None);
+                            }
+                            let outcome = self.factor((x, y), r, near[k].or(last));
                             if let Ok(s) = &outcome {
-                                near = Some(s.factor_of_safety);
+                                (near[k], last) =
+                                    (Some(s.factor_of_safety), Some(s.factor_of_safety));
                             }
                             match outcome.map(|s| s.factor_of_safety) {
                                 Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),

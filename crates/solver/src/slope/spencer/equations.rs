@@ -6,6 +6,10 @@ use super::scan::Scan;
 use crate::numerics::brent;
 use crate::slope::slices::SliceModel;
 
+/// The relative Newton step after which a root started from a neighbour's F is taken (see
+/// [`Equations::f_at_theta_from`]).
+const STARTING_STEP: f64 = 1e-8;
+
 /// Range of admissible factors of safety searched by the bracketing steps.
 const F_RANGE: (f64, f64) = (1e-6, 1e6);
 
@@ -229,14 +233,17 @@ impl Equations {
         evaluations: &mut usize,
     ) -> Option<f64> {
         let (lo, hi) = self.admissible_f(theta)?;
-        if let Some(f) =
-            start.and_then(|f| self.newton_at_theta(theta, moment, (f, (lo, hi)), evaluations))
-        {
+        // From a neighbour's F, Newton's iterate after a step below STARTING_STEP is as close
+        // as rounding (its error is of the order of the step squared): no step to confirm it.
+        let from_start = start.and_then(|f| {
+            self.newton_at_theta(theta, moment, (f, (lo, hi), STARTING_STEP), evaluations)
+        });
+        if let Some(f) = from_start {
             return Some(f);
         }
         // Newton from F = 1 first (a handful of evaluations for ordinary slopes); the residual
         // must cross from negative to positive, as on the bracketed path below.
-        if let Some(f) = self.newton_at_theta(theta, moment, (1.0, (lo, hi)), evaluations) {
+        if let Some(f) = self.newton_at_theta(theta, moment, (1.0, (lo, hi), 1e-14), evaluations) {
             return Some(f);
         }
         let residual = |f: f64| self.evaluate_one(f, theta, moment).0;
@@ -250,13 +257,14 @@ impl Equations {
     }
 
     /// Newton's method on one equation at θ from `f` (clamped into the admissible `range`):
-    /// the root where the residual crosses from negative to positive, or `None` where a step
-    /// leaves the range, the slope is not positive or an m_α is not.
+    /// the root where the residual crosses from negative to positive, the iterate after a step
+    /// of at most `settle` (relative), or `None` where a step leaves the range, the slope is not
+    /// positive or an m_α is not.
     fn newton_at_theta(
         &self,
         theta: f64,
         moment: bool,
-        (f, (lo, hi)): (f64, (f64, f64)),
+        (f, (lo, hi), settle): (f64, (f64, f64), f64),
         evaluations: &mut usize,
     ) -> Option<f64> {
         let mut f = f.clamp(lo, hi);
@@ -270,7 +278,7 @@ impl Equations {
             if !(next > lo && next < hi) {
                 return None;
             }
-            if (next - f).abs() <= 1e-14 * next {
+            if (next - f).abs() <= settle * next {
                 return Some(next);
             }
             f = next;
