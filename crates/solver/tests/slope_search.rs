@@ -306,3 +306,52 @@ fn undrained_circle_without_parallel_forces_reports_the_moment_f() {
     let f = s.factor_of_safety.unwrap();
     assert!((f - by_hand).abs() < 1e-9 * by_hand, "{f} vs {by_hand}");
 }
+
+#[test]
+fn a_neighbours_start_finds_the_same_root() {
+    // A search starts each circle's Bishop F (Spencer's start) from a neighbour's F: the root
+    // must be the one found without it, to rounding (1e-13; the equations are solved to
+    // 1e-12 in the step, quadratically closer in F), whatever the neighbour's F — near
+    // (±3 %), far (×0.5, ×2) or absurd (1e-5, 1e5: outside the admissible range, clamped).
+    // Spencer's embankment, and the 10 × 10 slope of
+    // `searching_the_lower_end_too_never_does_worse`, where circles have a second root with
+    // every m_α positive that Newton's method reaches from a neighbour's (F, θ).
+    let spencer = problem(
+        spencer_1967::HEIGHT,
+        spencer_1967::LENGTH,
+        spencer_soil(),
+        50,
+    );
+    let steep = problem(10.0, 10.0, Soil::new(18.0, 5.0, 20.0, 0.0).unwrap(), 50);
+    let settings = SpencerSettings::default();
+    let mut compared = 0;
+    for (p, scale) in [(spencer, 1.0), (steep, 10.0 / spencer_1967::HEIGHT)] {
+        for (i, j) in (0..9).flat_map(|i| (0..9).map(move |j| (i, j))) {
+            let c = circle(
+                scale * (-20.0 + 7.0 * f64::from(i)),
+                scale * (40.0 + 15.0 * f64::from(j)),
+            );
+            let Ok(at) = p.at(c) else { continue };
+            let alone = spencer_factor_outcome(at.model(), &settings);
+            let FactorOutcome::Solved(alone) = alone else {
+                continue;
+            };
+            let f = alone.factor_of_safety;
+            for near in [f * 1.03, f * 0.97, f * 0.5, f * 2.0, 1e-5, 1e5] {
+                match spencer_factor_outcome_near(at.model(), &settings, Some(near)) {
+                    FactorOutcome::Solved(s) => {
+                        assert!(
+                            (s.factor_of_safety - f).abs() <= 1e-13 * f,
+                            "{c:?} from {near}: {} against {f}",
+                            s.factor_of_safety
+                        );
+                        compared += 1;
+                    }
+                    other => panic!("{c:?} from {near}: {other:?} against {f}"),
+                }
+            }
+        }
+    }
+    // Most of the 2 × 81 centres give circles with a solution.
+    assert!(compared >= 6 * 120, "{compared}");
+}

@@ -39,7 +39,7 @@ pub use search::{
 pub use slices::{BaseSlice, SliceModel, Sliced};
 pub use spencer::{
     factor_curves, factor_curves_around, solve_spencer, solve_spencer_factor,
-    spencer_factor_outcome, ExternalLoad, FactorCurves, FactorOutcome, Seismic, SliceForces,
-    SlopeProblem, Soil, SpencerFactor, SpencerSettings, SpencerSolution, SpencerStatus,
-    ThrustPoint,
+    spencer_factor_outcome, spencer_factor_outcome_near, ExternalLoad, FactorCurves, FactorOutcome,
+    Seismic, SliceForces, SlopeProblem, Soil, SpencerFactor, SpencerSettings, SpencerSolution,
+    SpencerStatus, ThrustPoint,
 };
