@@ -315,7 +315,8 @@ fn a_neighbours_start_finds_the_same_root() {
     // (±3 %), far (×0.5, ×2) or absurd (1e-5, 1e5: outside the admissible range, clamped).
     // Spencer's embankment, and the 10 × 10 slope of
     // `searching_the_lower_end_too_never_does_worse`, where circles have a second root with
-    // every m_α positive that Newton's method reaches from a neighbour's (F, θ).
+    // every m_α positive that Newton's method reaches from a neighbour's (F, θ) (next to a
+    // pole, θ = −53.5°, one base in tension: an artefact).
     let spencer = problem(
         spencer_1967::HEIGHT,
         spencer_1967::LENGTH,
