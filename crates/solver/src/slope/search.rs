@@ -20,7 +20,7 @@ use crate::numerics::{nelder_mead_to, Minimum};
 use crate::outcome::SolverFailure;
 
 use super::section::trial::circle_outcome;
-use super::section::{Section, SectionProblem, SlipShape};
+use super::section::{check_circle, Section, SectionProblem, SlipShape};
 use super::spencer::{Seismic, Soil, SpencerSettings};
 
 /// The region of centres searched and the grid laid over it.
@@ -222,9 +222,6 @@ pub fn factor_of_safety(
     outcome(problem, frames, circle, (settings, 0.0), &Cell::new(None)).ok()
 }
 
-/// The largest |coordinate| and radius of a circle a section takes.
-const MAX_CIRCLE: f64 = 1e9;
-
 /// Spencer's F for one circle on `section` (`mirror`: the section seen from behind, built
 /// once per search); `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it has no
 /// physical solution (with Bishop's F there, if any). Bishop's F, Spencer's start, is looked
@@ -241,11 +238,8 @@ fn outcome(
     else {
         return Err(None);
     };
-    // The limits a section's circle is validated against (SectionProblem::new).
-    let within = |v: f64| v.abs() <= MAX_CIRCLE;
-    if !(within(centre.0) && within(centre.1) && radius > 0.0 && radius <= MAX_CIRCLE) {
-        return Err(None);
-    }
+    // A circle beyond what a section takes cuts no mass of it.
+    check_circle(centre, radius).map_err(|_| None::<Option<f64>>)?;
     circle_outcome(
         frames,
         (centre, radius),

@@ -313,6 +313,29 @@ pub struct SectionProblem {
     slice_loads: Vec<ExternalLoad>,
 }
 
+/// A circle a section takes: finite coordinates, |x|, |y| ≤ 1e9, and 0 < R ≤ 1e9.
+pub(crate) fn check_circle(centre: (f64, f64), radius: f64) -> Result<(), SlopeError> {
+    for v in [centre.0, centre.1] {
+        check_range(
+            SlopeParameter::CircleCentre,
+            v,
+            -1e9,
+            false,
+            1e9,
+            "finite coordinates, |x|, |y| ≤ 1e9",
+        )?;
+    }
+    check_range(
+        SlopeParameter::CircleRadius,
+        radius,
+        0.0,
+        true,
+        1e9,
+        "a finite radius, 0 < R ≤ 1e9",
+    )?;
+    Ok(())
+}
+
 impl SectionProblem {
     /// Places `shape` on `section` and cuts the sliding mass into about `slices` slices (more
     /// when the section has more pieces than that: each slice lies within one piece).
@@ -325,24 +348,7 @@ impl SectionProblem {
     ) -> Result<Self, SlopeError> {
         Seismic::new(seismic.kh, seismic.kv)?;
         if let SlipShape::Circle { centre, radius } = &shape {
-            for v in [centre.0, centre.1] {
-                check_range(
-                    SlopeParameter::CircleCentre,
-                    v,
-                    -1e9,
-                    false,
-                    1e9,
-                    "finite coordinates, |x|, |y| ≤ 1e9",
-                )?;
-            }
-            check_range(
-                SlopeParameter::CircleRadius,
-                *radius,
-                0.0,
-                true,
-                1e9,
-                "a finite radius, 0 < R ≤ 1e9",
-            )?;
+            check_circle(*centre, *radius)?;
         }
         if let Some(c) = moment_centre {
             for v in [c.0, c.1] {
