@@ -143,6 +143,57 @@ fn drawdown(ground: Value, phi: f64, (c_r, phi_r): (f64, f64), pools: (f64, f64)
     json!({"section": s, "slices": 50, "methods": ["bishop"], "include": []})
 }
 
+/// Sheahan & Ho's (2003) nailed walls on a plane through the toe at `angle`°: Amherst, a 6 m
+/// cut in clay (c = 25 kPa, φ = 0, γ = 18.9) with two rows of nails 4.9 m long at 20° (tensile
+/// 118 kN, plate 86 kN, bond 15 kN/m, every 1.5 m) and its facing's 14.6 kN/m at the crest;
+/// Clouterre, a 7 m cut in sand (c′ = 3 kPa, φ′ = 38°, γ = 20) with seven rows at 10° carrying
+/// 15 kN each (every 1.15 m; lengths 6, 8, 7.5, 8, 8, 8 and 6 m) and 13.2 kN/m of facing.
+fn nailed_wall(wall: &str, angle: f64, application: &str) -> Value {
+    let along = |head: [f64; 2], length: f64, declination: f64, sign: f64| {
+        let a = declination.to_radians();
+        [
+            head[0] + sign * length * a.cos(),
+            head[1] - length * a.sin(),
+        ]
+    };
+    let run = |height: f64| height / angle.to_radians().tan();
+    let (ground, soil, load, supports, surface) = if wall == "Amherst" {
+        let nail = |y: f64| {
+            json!({"kind": "soil_nail", "head": [0.001, y], "end": along([0.001, y], 4.9, 20.0, 1.0),
+                   "spacing": 1.5, "tensile_capacity": 118, "plate_capacity": 86,
+                   "bond_strength": 15, "application": application})
+        };
+        (
+            json!([[-6, 0], [0, 0], [0.001, 6], [11, 6]]),
+            json!({"unit_weight": 18.9, "cohesion": 25, "friction_angle_deg": 0}),
+            json!({"x": 0.3, "fy": -14.6}),
+            json!([nail(5.0), nail(3.5)]),
+            json!([[0, 0], [run(6.0), 6]]),
+        )
+    } else {
+        let lengths = [6.0, 8.0, 7.5, 8.0, 8.0, 8.0, 6.0];
+        let rows: Vec<Value> = (0..7)
+            .map(|i| {
+                let head = [11.999, 7.5 - i as f64];
+                json!({"kind": "end_anchored", "head": head, "end": along(head, lengths[i], 10.0, -1.0),
+                       "spacing": 1.15, "tensile_capacity": 15, "plate_capacity": 15,
+                       "application": application})
+            })
+            .collect();
+        (
+            json!([[0, 8], [12, 8], [12.001, 1], [20, 1]]),
+            json!({"unit_weight": 20, "cohesion": 3, "friction_angle_deg": 38}),
+            json!({"x": 11.7, "fy": -13.2}),
+            Value::from(rows),
+            json!([[12.001 - run(7.0), 8], [12.001, 1]]),
+        )
+    };
+    let mut s = section(ground, soil, false);
+    s["line_loads"] = json!([load]);
+    s["supports"] = supports;
+    json!({"section": s, "surface": surface, "slices": 50, "include": []})
+}
+
 /// A row: `shown` the factors (Spencer's and Bishop's, or Bishop's alone), `same` the other
 /// program's value on the same surface for each, `published` every value.
 fn row(
@@ -329,6 +380,48 @@ fn power_curve_rows() -> Vec<Row> {
     ]
 }
 
+fn nailed_wall_rows() -> Vec<Row> {
+    // Sheahan's wedges on the same planes (his nails' tension divided by F, as passive), and
+    // Slide2's.
+    let clouterre = [
+        (45.0, 1.176, 1.123),
+        (50.0, 1.070, 1.043),
+        (55.0, 0.989, 0.989),
+        (60.0, 0.929, 0.945),
+        (65.0, 0.893, 0.922),
+        (70.0, 0.887, 0.923),
+    ];
+    let keys = [
+        "Clouterre 45°",
+        "Clouterre 50°",
+        "Clouterre 55°",
+        "Clouterre 60°",
+        "Clouterre 65°",
+        "Clouterre 70°",
+    ];
+    let mut rows: Vec<Row> = clouterre
+        .iter()
+        .zip(keys)
+        .map(|(&(angle, sheahan, slide), key)| {
+            row(
+                key,
+                nailed_wall("Clouterre", angle, "passive"),
+                &[SPENCER],
+                &[Some(sheahan)],
+                &[sheahan, slide],
+            )
+        })
+        .collect();
+    rows.push(row(
+        "Amherst 44.5°",
+        nailed_wall("Amherst", 44.5, "active"),
+        &[SPENCER],
+        &[None],
+        &[0.887, 0.890],
+    ));
+    rows
+}
+
 fn drawdown_rows() -> Vec<Row> {
     let mut usace = drawdown(
         json!([[-100, 0], [0, 0], [222, 74], [312, 110], [380, 110]]),
@@ -498,4 +591,28 @@ fn the_usace_envelope_is_its_r_envelope() {
         .atan()
         .to_degrees();
     assert_eq!(format!("{d:.0} {psi:.1}"), "1379 18.2");
+}
+
+/// docs/slopes.md's notes: at Amherst the nails' pull-out governs (9.5 and 21.3 kN per metre on
+/// the least plane), and between the 7.28 fill's grids the bare face is an infinite slope of
+/// F = tan 37° / (24/30) ≈ 0.94.
+#[tokio::test]
+async fn the_notes_beside_the_table_hold() {
+    let server = Server::start().await;
+    let (status, _, answer) = server
+        .post("/slope/spencer", &nailed_wall("Amherst", 44.5, "active"))
+        .await;
+    assert_eq!(status, 200, "{answer}");
+    let forces: Vec<String> = answer["supports"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            assert_eq!(s["mode"], "pullout", "{s}");
+            format!("{:.1}", s["force"].as_f64().unwrap())
+        })
+        .collect();
+    assert_eq!(forces, ["9.5", "21.3"]);
+    let face = 37f64.to_radians().tan() / (24.0 / 30.0);
+    assert_eq!(format!("{face:.2}"), "0.94");
 }
