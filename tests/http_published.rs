@@ -481,6 +481,7 @@ async fn published_problems_land_within_their_spread_and_the_docs_show_them() {
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/slopes.md")).unwrap();
     let rows = [
         support_rows(),
+        nailed_wall_rows(),
         undrained_rows(),
         power_curve_rows(),
         drawdown_rows(),
