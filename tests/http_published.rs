@@ -486,7 +486,20 @@ async fn published_problems_land_within_their_spread_and_the_docs_show_them() {
         power_curve_rows(),
         drawdown_rows(),
     ];
-    for row in rows.into_iter().flatten() {
+    let rows: Vec<Row> = rows.into_iter().flatten().collect();
+    // Every row of the docs' table is one of these (none shown unchecked).
+    let table = docs
+        .split("| problem | surface | Spencer / Bishop | published |")
+        .nth(1)
+        .unwrap();
+    let keys: Vec<&str> = table
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| l.split('|').nth(1).unwrap().trim())
+        .collect();
+    assert_eq!(keys, rows.iter().map(|r| r.key).collect::<Vec<_>>());
+    for row in rows {
         let (status, _, answer) = server.post("/slope/spencer", &row.body).await;
         assert_eq!(status, 200, "{}: {answer}", row.key);
         let shown = shown_in_docs(&docs, row.key);
