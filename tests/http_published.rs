@@ -125,6 +125,26 @@ fn baker(ground: Value, base: f64, strength: Value, gamma: f64, ru: Option<f64>)
     json!({"section": s, "search": {}, "slices": 50, "methods": ["bishop"], "include": []})
 }
 
+/// A 45° rock slope of height `h` over a foundation `foot` deep with `side` of level ground
+/// either way, in a Hoek–Brown rock mass (σ_ci, GSI, m_i; D = 0) of unit weight `gamma`,
+/// searched: Hammah et al.'s (2005) example 1 and Li, Merifield & Lyamin's (2008) β = 45° case.
+fn rock(
+    h: f64,
+    (foot, side): (f64, f64),
+    gamma: f64,
+    (sigma_ci, gsi, mi): (f64, f64, f64),
+) -> Value {
+    let strength = json!({"model": "hoek_brown", "sigma_ci": sigma_ci, "gsi": gsi, "mi": mi,
+                          "disturbance": 0});
+    let mut s = section(
+        json!([[-side, 0], [0, 0], [h, h], [h + side, h]]),
+        json!({"unit_weight": gamma, "strength": strength}),
+        false,
+    );
+    s["bedrock"] = json!([[-side, -foot], [h + side, -foot]]);
+    json!({"section": s, "search": {}, "slices": 40, "methods": ["bishop"], "include": []})
+}
+
 fn power(a: f64, b: f64, d: f64) -> Value {
     json!({"model": "power_curve", "a": a, "b": b, "d": d})
 }
@@ -422,6 +442,25 @@ fn nailed_wall_rows() -> Vec<Row> {
     rows
 }
 
+fn rock_rows() -> Vec<Row> {
+    vec![
+        row(
+            "Hammah 1, Hoek–Brown",
+            rock(10.0, (5.0, 20.0), 25.0, (30000.0, 5.0, 2.0)),
+            &BOTH,
+            &[Some(1.152), Some(1.153)],
+            &[1.152, 1.153, 1.15],
+        ),
+        row(
+            "Li 45°, Hoek–Brown",
+            rock(1.0, (2.0, 4.0), 23.0, (4.37, 70.0, 15.0)),
+            &[SPENCER],
+            &[Some(1.035)],
+            &[1.035, 1.0],
+        ),
+    ]
+}
+
 fn drawdown_rows() -> Vec<Row> {
     let mut usace = drawdown(
         json!([[-100, 0], [0, 0], [222, 74], [312, 110], [380, 110]]),
@@ -484,6 +523,7 @@ async fn published_problems_land_within_their_spread_and_the_docs_show_them() {
         nailed_wall_rows(),
         undrained_rows(),
         power_curve_rows(),
+        rock_rows(),
         drawdown_rows(),
     ];
     let rows: Vec<Row> = rows.into_iter().flatten().collect();
