@@ -251,14 +251,15 @@ impl Cut {
             (tolerance, still_water_level(section, xa, xb)),
         );
         let mut loads = loads(section, &slices, ponded, crack);
-        let surface: Vec<(f64, f64)> = boundaries
+        let mut surface: Vec<(f64, f64)> = boundaries
             .iter()
             .copied()
             .zip(base_ys.iter().copied())
-            .chain(crack.map(|c| (c.0, c.2)))
             .collect();
+        // Supports cross the bases only: the crack carries no force but its water.
         let (supports, support_loads) =
             super::supports::forces(&section.supports, &surface, &slices);
+        surface.extend(crack.map(|c| (c.0, c.2)));
         loads.extend(support_loads);
         let (reference, moment_centre, circular) =
             reference(shape, ground, (xa, xb), moment_centre);

@@ -427,8 +427,9 @@ fn first_crossing(
 }
 
 /// Each support against the slip surface as cut (`surface`: the bases' end points, toe end
-/// first, then the crack's top if any; solver frame, like `supports` and `slices`): its force
-/// and the loads it puts on the slices (moments about their base middles).
+/// first; solver frame, like `supports` and `slices`): its force and the loads it puts on the
+/// slices (moments about their base middles). A tension crack's face is no part of it: the
+/// crack carries no force but its water, so a support that crosses only the crack holds nothing.
 pub(super) fn forces(
     supports: &[Support],
     surface: &[(f64, f64)],
@@ -451,8 +452,7 @@ pub(super) fn forces(
         let beyond = (s.end.0 - p.0).hypot(s.end.1 - p.1);
         let (per_support, mode) = s.capacity(inside, beyond);
         let force = per_support / s.spacing;
-        // The surface's segment k: a base (toe end first, so it points up the slope) or the
-        // crack's vertical face.
+        // The surface's segment k: base k (toe end first, so it points up the slope).
         let (a, b) = (surface[k], surface[k + 1]);
         let length = (b.0 - a.0).hypot(b.1 - a.1).max(f64::MIN_POSITIVE);
         let up_slope = ((b.0 - a.0) / length, (b.1 - a.1) / length);
