@@ -292,6 +292,46 @@ fn pockoski_duncan(wall: &str) -> Value {
     }
 }
 
+/// Tandjiria's (2002) embankment (Slide2 problem 39): a 6 m embankment at 1V:1.67H on 3 m of
+/// soft clay (c = 20 kPa, φ = 0) with a crack 2 m deep (full of water under the clay fill),
+/// its fill clay like the foundation (γ = 19.4) or sand (c′ = 0, φ′ = 37°, γ = 17, on clay of
+/// γ = 20); `reinforced`: a geosynthetic along the embankment's base of that strength, anchored
+/// at both ends, on the unreinforced critical circle of this service's search (15.004, 11.750),
+/// R 11.750 (Slide2's required strength is for its own unreinforced critical circle).
+fn tandjiria(sand: bool, reinforced: Option<f64>) -> Value {
+    let (fill, clay_gamma, water) = match sand {
+        true => (
+            json!({"unit_weight": 17, "cohesion": 0, "friction_angle_deg": 37}),
+            20.0,
+            0.0,
+        ),
+        false => (
+            json!({"unit_weight": 19.4, "cohesion": 20, "friction_angle_deg": 0}),
+            19.4,
+            2.0,
+        ),
+    };
+    let mut s = section(json!([[0, 9], [10, 9], [20, 3], [30, 3]]), fill, false);
+    s["layers"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"top": [[0, 3], [30, 3]],
+        "soil": {"unit_weight": clay_gamma, "cohesion": 20, "friction_angle_deg": 0}}));
+    s["bedrock"] = json!([[0, 0], [30, 0]]);
+    s["tension_crack"] = json!({"depth": 2, "water_depth": water});
+    let mut body = json!({"section": s, "slices": 50, "methods": ["bishop"], "include": []});
+    match reinforced {
+        Some(strength) => {
+            body["section"]["supports"] = json!([{"kind": "geosynthetic", "head": [20, 3],
+                "end": [0, 3], "tensile_strength": strength, "bond_strength": 0,
+                "anchorage": "both_ends", "application": "active"}]);
+            body["circle"] = json!({"centre": [15.004, 11.75], "radius": 11.75});
+        }
+        None => body["search"] = json!({}),
+    }
+    body
+}
+
 /// A row: `shown` the factors (Spencer's and Bishop's, or Bishop's alone), `same` the other
 /// program's value on the same surface for each, `published` every value.
 fn row(
@@ -335,6 +375,27 @@ fn support_rows() -> Vec<Row> {
             &BOTH,
             &[Some(1.620), Some(1.629)],
             &[1.620, 1.629, 1.61],
+        ),
+        row(
+            "Tandjiria, clay fill",
+            tandjiria(false, None),
+            &[SPENCER],
+            &[None],
+            &[0.975, 0.981],
+        ),
+        row(
+            "Tandjiria, clay fill, 169 kN/m",
+            tandjiria(false, Some(169.0)),
+            &[SPENCER],
+            &[None],
+            &[1.35],
+        ),
+        row(
+            "Tandjiria, sand fill",
+            tandjiria(true, None),
+            &[SPENCER],
+            &[None],
+            &[1.209, 1.219],
         ),
         row(
             "Yamagami, no pile",
