@@ -332,6 +332,48 @@ fn tandjiria(sand: bool, reinforced: Option<f64>) -> Value {
     body
 }
 
+/// The SNAILZ manual's nailed wall (Slide2 problem 50, SLOPE/W §2.30): a 25-ft face at 1H:1.79V
+/// in sand (c′ = 0, φ′ = 32°, 125 pcf) over a stronger layer 5 ft below the toe (c′ = 500 psf,
+/// φ′ = 35°, 128 pcf), fourteen horizontal rows of nails every 1.8 ft (the last at the toe),
+/// 4–25 ft long, 1,103 or 2,212 lb/ft, plates as strong, bond 241–1,206 lb/ft per foot, passive,
+/// on the printed two-piece wedge through (0, −5).
+fn snailz() -> Value {
+    let lengths = [
+        4.0, 25.0, 4.0, 23.0, 4.0, 21.0, 4.0, 19.0, 4.0, 19.0, 4.0, 20.0, 20.0, 20.0,
+    ];
+    let bonds = [
+        1206.37, 241.274, 1206.37, 482.548, 1206.37, 732.822, 1206.37, 965.096, 1206.37, 1206.31,
+        1206.37, 1206.37, 1206.37, 1206.37,
+    ];
+    let nails: Vec<Value> = (0..14)
+        .map(|i| {
+            let y = if i < 13 {
+                25.0 - 1.8 * (i + 1) as f64
+            } else {
+                0.0
+            };
+            let x = 14.0 * y / 25.0 + if y > 0.0 { 0.001 } else { 0.0 };
+            let capacity = if i >= 11 { 2212.0 } else { 1103.0 };
+            json!({"kind": "soil_nail", "head": [x, y], "end": [x + lengths[i], y], "spacing": 1,
+                   "tensile_capacity": capacity, "plate_capacity": capacity,
+                   "bond_strength": bonds[i], "application": "passive"})
+        })
+        .collect();
+    let mut s = section(
+        json!([[-25, 0], [0, 0], [14, 25], [100, 25]]),
+        json!({"unit_weight": 125, "cohesion": 0, "friction_angle_deg": 32}),
+        true,
+    );
+    s["layers"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"top": [[-25, -5], [100, -5]],
+        "soil": {"unit_weight": 128, "cohesion": 500, "friction_angle_deg": 35}}));
+    s["supports"] = Value::from(nails);
+    json!({"section": s, "surface": [[-15.813, 0], [0, -5], [41.722, 25]], "slices": 50,
+           "methods": ["morgenstern_price"], "include": []})
+}
+
 /// A row: `shown` the factors (Spencer's and Bishop's, or Bishop's alone), `same` the other
 /// program's value on the same surface for each, `published` every value.
 fn row(
@@ -571,6 +613,13 @@ fn nailed_wall_rows() -> Vec<Row> {
             )
         })
         .collect();
+    rows.push(row(
+        "SNAILZ wall",
+        snailz(),
+        &["/methods/morgenstern_price/factor_of_safety"],
+        &[Some(1.606)],
+        &[1.606, 1.46, 1.417, 1.354],
+    ));
     rows.push(row(
         "P&D tied-back wall",
         pockoski_duncan("tiebacks"),
