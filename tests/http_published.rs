@@ -663,6 +663,45 @@ fn rock_rows() -> Vec<Row> {
     ]
 }
 
+/// The R envelope (c_R, φ_R) whose envelope for isotropic consolidation is (d, ψ) when φ′ is
+/// the drained friction angle (Duncan & Wright 2014, eqs. 9.6–9.7, inverted): with
+/// t = tan ψ / cos φ′, sin φ_R = t / (1 + t) and c_R = d·(1 − sin φ_R) / (cos φ_R·cos φ′).
+fn r_envelope(d: f64, psi: f64, phi: f64) -> Value {
+    let t = psi.to_radians().tan() / phi.to_radians().cos();
+    let s = t / (1.0 + t);
+    let c = d * (1.0 - s) / (s.asin().cos() * phi.to_radians().cos());
+    json!({"cohesion": c, "friction_angle_deg": s.asin().to_degrees()})
+}
+
+/// Walter Bouldin Dam (Duncan, Wright & Wong 1990; Slide2 problem 98), which slid in a
+/// drawdown from 47 to 15 ft: riprap over a band of clayey silty sand along the face, micaceous
+/// sand, Cretaceous clay and clayey sandy gravel, zones as XSLOPE traced them from Slide2's
+/// figure, the three soils that do not drain with the envelopes (d, ψ) of the paper's Table 2.
+fn walter_bouldin() -> Value {
+    let soil = |(c, phi, gamma): (f64, f64, f64), undrained: Option<(f64, f64)>| {
+        let mut s = json!({"unit_weight": gamma, "cohesion": c, "friction_angle_deg": phi});
+        if let Some((d, psi)) = undrained {
+            s["r_envelope"] = r_envelope(d, psi, phi);
+        }
+        s
+    };
+    let layers = json!([
+        {"top": null, "soil": soil((0.0, 40.0, 125.0), None)},
+        {"top": [[0, 0], [100, 40], [104, 40], [144, 60], [180, 60]],
+         "soil": soil((240.0, 32.7, 128.0), Some((750.0, 15.0)))},
+        {"top": [[0, 0], [5.3, 0], [158, 51], [180, 51]],
+         "soil": soil((220.0, 22.5, 123.0), Some((480.0, 13.0)))},
+        {"top": [[0, 0], [5.3, 0], [95.6, 30], [180, 30]],
+         "soil": soil((180.0, 19.0, 124.0), Some((280.0, 15.5)))},
+        {"top": [[0, 0], [11, 0], [58, 17], [180, 17]], "soil": soil((0.0, 40.0, 125.0), None)}
+    ]);
+    json!({"section": {"ground": [[-60, 0], [0, 0], [100, 40], [140, 60], [180, 60]],
+                       "bedrock": [[-60, 0], [180, 0]], "water_unit_weight": 62.4,
+                       "layers": layers,
+                       "drawdown": {"before": [[-60, 47], [180, 47]], "after": [[-60, 15], [180, 15]]}},
+           "search": {}, "slices": 50, "methods": ["bishop"], "include": []})
+}
+
 fn drawdown_rows() -> Vec<Row> {
     let mut usace = drawdown(
         json!([[-100, 0], [0, 0], [222, 74], [312, 110], [380, 110]]),
@@ -693,6 +732,13 @@ fn drawdown_rows() -> Vec<Row> {
             &BOTH,
             &[Some(1.043), None],
             &[1.043, 1.05],
+        ),
+        row(
+            "Walter Bouldin Dam",
+            walter_bouldin(),
+            &BOTH,
+            &[Some(1.039), None],
+            &[1.039, 1.04, 1.02, 1.016],
         ),
     ]
 }
@@ -851,7 +897,7 @@ fn the_usace_envelope_is_its_r_envelope() {
 
 /// docs/slopes.md's notes: at Amherst the nails' pull-out governs (9.5 and 21.3 kN per metre on
 /// the least plane), Pockoski & Duncan's top nail crosses only the tension crack and holds
-/// nothing, and between the 7.28 fill's grids the bare face is an infinite slope of
+/// nothing, Walter Bouldin Dam's critical circle runs where the dam slid, and between the 7.28 fill's grids the bare face is an infinite slope of
 /// F = tan 37° / (24/30) ≈ 0.94.
 #[tokio::test]
 async fn the_notes_beside_the_table_hold() {
@@ -878,6 +924,18 @@ async fn the_notes_beside_the_table_hold() {
     let top = &answer["supports"][0];
     assert!(top["crossing"].is_null() && top["force"] == 0.0, "{top}");
     assert_eq!(answer["supports"][1]["mode"], "tensile");
+    // Walter Bouldin Dam's critical circle, from (52.6, 21.0) to (156.5, 60).
+    let (status, _, answer) = server.post("/slope/spencer", &walter_bouldin()).await;
+    assert_eq!(status, 200, "{answer}");
+    let point = |p: &Value| {
+        format!(
+            "({:.1}, {:.1})",
+            p["x"].as_f64().unwrap(),
+            p["y"].as_f64().unwrap()
+        )
+    };
+    assert_eq!(point(&answer["circle"]["lower_end"]), "(52.6, 21.0)");
+    assert_eq!(point(&answer["circle"]["upper_exit"]), "(156.5, 60.0)");
     let face = 37f64.to_radians().tan() / (24.0 / 30.0);
     assert_eq!(format!("{face:.2}"), "0.94");
 }
