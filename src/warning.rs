@@ -59,6 +59,8 @@ pub enum WarningCode {
     StrengthNotConsistent,
     /// Bases lie outside the pore-pressure grid (u = 0 taken there).
     OutsidePorePressureGrid,
+    /// Supports cross a tension crack's face but not the slip surface: they hold nothing.
+    SupportCrossesCrack,
     /// Associative friction may over-estimate the collapse load.
     FrictionMayOverestimate,
     /// Samples of a study without an answer (counted apart: neither safe nor failed).

@@ -959,6 +959,20 @@ async fn the_notes_beside_the_table_hold() {
     assert_eq!(status, 200, "{answer}");
     let top = &answer["supports"][0];
     assert!(top["crossing"].is_null() && top["force"] == 0.0, "{top}");
+    // The answer says so, naming the support.
+    let warning = answer["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "support_crosses_crack")
+        .unwrap_or_else(|| panic!("{answer}"));
+    assert!(
+        warning["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("section.supports 1 cross"),
+        "{warning}"
+    );
     assert_eq!(answer["supports"][1]["mode"], "tensile");
     // Walter Bouldin Dam's critical circle, from (52.6, 21.0) to (156.5, 60).
     let (status, _, answer) = server.post("/slope/spencer", &walter_bouldin()).await;

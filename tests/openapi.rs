@@ -97,6 +97,7 @@ fn points_are_pairs_and_codes_are_enums() {
         "rings_locked",
         "strength_not_consistent",
         "outside_pore_pressure_grid",
+        "support_crosses_crack",
     ] {
         assert!(warnings.contains(&code.to_owned()), "{code}: {warnings:?}");
     }

@@ -100,6 +100,7 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
         ));
     }
     warnings.extend(outside_the_grid(solved));
+    warnings.extend(supports_in_the_crack(solved));
     warnings.extend(crate::study::warnings(
         solved.studies.probabilistic.as_ref(),
         solved.studies.sensitivity.as_ref(),
@@ -139,6 +140,29 @@ fn outside_the_grid(solved: &SolvedSlope) -> Option<Warning> {
             ),
         )
         .slices(slices)
+    })
+}
+
+/// Supports that cross the tension crack's face but not the slip surface: they hold nothing,
+/// which a drawing of a nail through the crack would not suggest.
+fn supports_in_the_crack(solved: &SolvedSlope) -> Option<Warning> {
+    let Analysed::Section(problem) = &solved.problem;
+    let crossing: Vec<usize> = problem
+        .supports()
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.crack_only)
+        .map(|(i, _)| i + 1)
+        .collect();
+    (!crossing.is_empty()).then(|| {
+        Warning::new(
+            Code::SupportCrossesCrack,
+            format!(
+                "section.supports {} cross the tension crack's face but not the slip surface: \
+                 the crack carries no force but its water, so they hold nothing here",
+                listed(&crossing)
+            ),
+        )
     })
 }
 

@@ -257,8 +257,9 @@ impl Cut {
             .zip(base_ys.iter().copied())
             .collect();
         // Supports cross the bases only: the crack carries no force but its water.
+        let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
         let (supports, support_loads) =
-            super::supports::forces(&section.supports, &surface, &slices);
+            super::supports::forces(&section.supports, (&surface, face), &slices);
         surface.extend(crack.map(|c| (c.0, c.2)));
         loads.extend(support_loads);
         let (reference, moment_centre, circular) =

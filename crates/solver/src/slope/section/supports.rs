@@ -150,6 +150,9 @@ pub struct SupportForce {
     pub mode: Option<Mode>,
     /// The slice it acts on (0 at the lower end).
     pub slice: Option<usize>,
+    /// Whether it crosses a tension crack's face but not the slip surface: it then holds
+    /// nothing (the crack carries no force but its water).
+    pub crack_only: bool,
 }
 
 impl Support {
@@ -426,13 +429,17 @@ fn first_crossing(
     best.map(|(_, point, k)| (point, k))
 }
 
+/// A segment: its two ends.
+pub(super) type Segment = [(f64, f64); 2];
+
 /// Each support against the slip surface as cut (`surface`: the bases' end points, toe end
 /// first; solver frame, like `supports` and `slices`): its force and the loads it puts on the
-/// slices (moments about their base middles). A tension crack's face is no part of it: the
-/// crack carries no force but its water, so a support that crosses only the crack holds nothing.
+/// slices (moments about their base middles). A tension crack's face (`crack`: its bottom and
+/// top) is no part of it: the crack carries no force but its water, so a support that crosses
+/// only the crack holds nothing, and says so (`crack_only`).
 pub(super) fn forces(
     supports: &[Support],
-    surface: &[(f64, f64)],
+    (surface, crack): (&[(f64, f64)], Option<Segment>),
     slices: &[BaseSlice],
 ) -> (Vec<SupportForce>, Vec<ExternalLoad>) {
     let mut out = Vec::with_capacity(supports.len());
@@ -445,6 +452,8 @@ pub(super) fn forces(
                 direction: (0.0, 0.0),
                 mode: None,
                 slice: None,
+                crack_only: crack
+                    .is_some_and(|face| first_crossing((s.head, s.end), &face).is_some()),
             });
             continue;
         };
@@ -477,6 +486,7 @@ pub(super) fn forces(
             direction,
             mode: Some(mode),
             slice: Some(slice),
+            crack_only: false,
         });
     }
     (out, loads)
