@@ -6,11 +6,14 @@
 //! published for the problem, widened by 1 %.
 //!
 //! Sources: Duncan & Wright, *Soil Strength and Slope Stability* (2005), Figs. 6.34, 7.28, 14.20
-//! and 15.9; Yamagami et al. (2000); Baker (2003), examples 1–3; Jiang, Baker & Yamagami (2003);
-//! US Army Corps of Engineers EM 1110-2-1902 (2003), App. G; Duncan, Wright & Wong (1990); as
-//! the Slide2 verification manual (problems 41, 44, 45, 54, 61, 83–86, 96, 97) states them, with
-//! its and other programs' results. Coordinates read from that manual's figures are those of
-//! the XSLOPE project's verification corpus (njones61/xslope), which rebuilt the same problems.
+//! and 15.9; Tandjiria et al. (2002); Yamagami et al. (2000); Sheahan & Ho (2003); the SNAILZ
+//! manual; Pockoski & Duncan (2000); Baker (2003), examples 1–3; Jiang, Baker & Yamagami (2003);
+//! Hammah et al. (2005); Li, Merifield & Lyamin (2008); US Army Corps of Engineers EM 1110-2-1902
+//! (2003), App. G; Duncan, Wright & Wong (1990) — mostly as the Slide2 verification manual
+//! (problems 39, 41, 44, 45, 47, 48, 50, 54, 58, 60, 61, 83–86, 96–98) and SLOPE/W's state
+//! them, with their and other programs' results. Coordinates read from those manuals' figures
+//! are those of the XSLOPE project's verification corpus (njones61/xslope), which rebuilt the
+//! same problems.
 // Test helpers: a failed request or a malformed answer should fail the test loudly.
 #![allow(clippy::unwrap_used)]
 
