@@ -216,13 +216,7 @@ async fn friction_is_checked_without_dilatancy_and_the_flag_only_rises_when_it_m
     assert_eq!(status, 200, "{associative}");
     assert_eq!(associative["friction_may_overestimate"], true);
     // The same as a warning (SPEC §6.1), with the sliding interfaces the answer lists.
-    let warning = associative["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|w| w["code"] == "friction_may_overestimate")
-        .unwrap_or_else(|| panic!("{}", associative["warnings"]))
-        .clone();
+    let warning = common::warning(&associative, "friction_may_overestimate").clone();
     assert_eq!(warning["interfaces"], associative["sliding_interfaces"]);
     let assoc = associative["load_factor"].as_f64().unwrap();
     let mut body = wall.clone();

@@ -148,6 +148,16 @@ fn rock(
     json!({"section": s, "search": {}, "slices": 40, "methods": ["bishop"], "include": []})
 }
 
+/// The end of a support `length` long from `head`, declined `degrees` below the horizontal,
+/// towards +x (`towards` 1) or −x (−1).
+fn along(head: [f64; 2], length: f64, degrees: f64, towards: f64) -> [f64; 2] {
+    let a = degrees.to_radians();
+    [
+        head[0] + towards * length * a.cos(),
+        head[1] - length * a.sin(),
+    ]
+}
+
 fn power(a: f64, b: f64, d: f64) -> Value {
     json!({"model": "power_curve", "a": a, "b": b, "d": d})
 }
@@ -172,13 +182,6 @@ fn drawdown(ground: Value, phi: f64, (c_r, phi_r): (f64, f64), pools: (f64, f64)
 /// Clouterre, a 7 m cut in sand (c′ = 3 kPa, φ′ = 38°, γ = 20) with seven rows at 10° carrying
 /// 15 kN each (every 1.15 m; lengths 6, 8, 7.5, 8, 8, 8 and 6 m) and 13.2 kN/m of facing.
 fn nailed_wall(wall: &str, angle: f64, application: &str) -> Value {
-    let along = |head: [f64; 2], length: f64, declination: f64, sign: f64| {
-        let a = declination.to_radians();
-        [
-            head[0] + sign * length * a.cos(),
-            head[1] - length * a.sin(),
-        ]
-    };
     let run = |height: f64| height / angle.to_radians().tan();
     let (ground, soil, load, supports, surface) = if wall == "Amherst" {
         let nail = |y: f64| {
@@ -217,82 +220,80 @@ fn nailed_wall(wall: &str, angle: f64, application: &str) -> Value {
     json!({"section": s, "surface": surface, "slices": 50, "include": []})
 }
 
-/// Pockoski & Duncan's (2000) walls as Slide2's problems 58 and 60 state them (US units).
-/// The tied-back wall: a 44-ft cut at x = 200 in eight level layers, water at the excavation's
-/// floor in front and at 102.5 behind, three tiebacks at 20°, 88 ft long with their last 40 ft
-/// bonded (4,000 lb/ft, every 4 ft), on Slide2's circle. The nailed wall: a 25-ft cut in clay
-/// (c = 800 psf, φ = 0) on firm soil, 250 psf on the crest and 500 more over its first 7.3 ft,
-/// a dry crack 7 ft deep, five nails at 15° every 5 ft (25,918 lb, bond 1,508 lb/ft), on Slide2's
-/// circle from the toe (it also cuts the bench in front, which the surface leaves out).
-fn pockoski_duncan(wall: &str) -> Value {
-    let along = |head: [f64; 2], length: f64, degrees: f64| {
-        let a = f64::to_radians(degrees);
-        json!([head[0] + length * a.cos(), head[1] - length * a.sin()])
-    };
-    if wall == "tiebacks" {
-        let soils: [(f64, f64, f64, Option<f64>); 8] = [
-            (0.0, 30.0, 120.4, None),
-            (0.0, 30.0, 114.7, Some(109.0)),
-            (900.0, 0.0, 110.2, Some(93.0)),
-            (2485.0, 0.0, 117.8, Some(86.0)),
-            (1670.0, 0.0, 117.8, Some(82.5)),
-            (960.0, 0.0, 117.8, Some(69.0)),
-            (1085.0, 0.0, 117.8, Some(40.0)),
-            (1500.0, 0.0, 147.1, Some(24.0)),
-        ];
-        let layers: Vec<Value> = soils
-            .iter()
-            .map(|&(c, phi, gamma, top)| {
-                json!({"top": top.map(|y| json!([[50, y], [350, y]])),
-                       "soil": {"unit_weight": gamma, "cohesion": c, "friction_angle_deg": phi}})
-            })
-            .collect();
-        let supports: Vec<Value> = [104.0, 89.5, 75.0]
-            .iter()
-            .map(|&y| {
-                json!({"kind": "grouted_tieback", "head": [200.001, y],
-                       "end": along([200.001, y], 88.0, 20.0), "spacing": 4,
-                       "tensile_capacity": 1e7, "plate_capacity": 1e7, "bond_strength": 4000,
-                       "bond_length": 40, "application": "active"})
-            })
-            .collect();
-        let water = json!([[50, 69], [200, 69], [200.001, 102.5], [350, 102.5]]);
-        json!({"section": {"ground": [[50, 69], [200, 69], [200.001, 113], [350, 113]],
-                           "water_unit_weight": 62.4, "layers": layers, "supports": supports,
-                           "piezometric_line": water},
-               "circle": {"centre": [208.313, 148.638], "radius": 124.638}, "slices": 100,
-               "methods": ["bishop"], "include": []})
-    } else {
-        let (xo, yo, r) = (-38.803f64, 54.156f64, 66.622f64);
-        let (a1, a2) = ((-yo).atan2(-xo), (26.0 - yo).atan2(21.5 - xo));
-        let mut surface: Vec<[f64; 2]> = (0..=60)
-            .map(|i| {
-                let a = a1 + (a2 - a1) * f64::from(i) / 60.0;
-                [xo + r * a.cos(), yo + r * a.sin()]
-            })
-            .collect();
-        surface[0] = [0.0, 0.0];
-        let nails: Vec<Value> = [40.0, 40.0, 40.0, 33.0, 25.5]
-            .iter()
-            .enumerate()
-            .map(|(k, &length)| {
-                let head = [0.001, 23.0 - 5.0 * k as f64];
-                json!({"kind": "soil_nail", "head": head, "end": along(head, length, 15.0),
-                       "spacing": 5, "tensile_capacity": 25918.14, "plate_capacity": 25918.14,
-                       "bond_strength": 1508, "application": "passive"})
-            })
-            .collect();
-        let clay = json!({"unit_weight": 120, "cohesion": 800, "friction_angle_deg": 0});
-        let firm = json!({"unit_weight": 130, "cohesion": 5000, "friction_angle_deg": 35});
-        json!({"section": {"ground": [[-14, 0], [0, 0], [0.001, 25], [50, 25]],
-                           "water_unit_weight": 62.4,
-                           "layers": [{"top": null, "soil": clay},
-                                      {"top": [[-14, 0], [50, 0]], "soil": firm}],
-                           "surcharges": [{"x_start": 0.001, "x_end": 7.3, "pressure": 500},
-                                          {"x_start": 0.001, "x_end": 50, "pressure": 250}],
-                           "tension_crack": {"depth": 7}, "supports": nails},
-               "surface": surface, "slices": 60, "include": []})
-    }
+/// Pockoski & Duncan's (2000) tied-back wall as Slide2's problem 58 states it (US units): a
+/// 44-ft cut at x = 200 in eight level layers, water at the excavation's floor in front and at
+/// 102.5 behind, three tiebacks at 20°, 88 ft long with their last 40 ft bonded (4,000 lb/ft,
+/// every 4 ft), on Slide2's circle.
+fn pd_tied_back_wall() -> Value {
+    let soils: [(f64, f64, f64, Option<f64>); 8] = [
+        (0.0, 30.0, 120.4, None),
+        (0.0, 30.0, 114.7, Some(109.0)),
+        (900.0, 0.0, 110.2, Some(93.0)),
+        (2485.0, 0.0, 117.8, Some(86.0)),
+        (1670.0, 0.0, 117.8, Some(82.5)),
+        (960.0, 0.0, 117.8, Some(69.0)),
+        (1085.0, 0.0, 117.8, Some(40.0)),
+        (1500.0, 0.0, 147.1, Some(24.0)),
+    ];
+    let layers: Vec<Value> = soils
+        .iter()
+        .map(|&(c, phi, gamma, top)| {
+            json!({"top": top.map(|y| json!([[50, y], [350, y]])),
+                   "soil": {"unit_weight": gamma, "cohesion": c, "friction_angle_deg": phi}})
+        })
+        .collect();
+    let supports: Vec<Value> = [104.0, 89.5, 75.0]
+        .iter()
+        .map(|&y| {
+            json!({"kind": "grouted_tieback", "head": [200.001, y],
+                   "end": along([200.001, y], 88.0, 20.0, 1.0), "spacing": 4,
+                   "tensile_capacity": 1e7, "plate_capacity": 1e7, "bond_strength": 4000,
+                   "bond_length": 40, "application": "active"})
+        })
+        .collect();
+    let water = json!([[50, 69], [200, 69], [200.001, 102.5], [350, 102.5]]);
+    json!({"section": {"ground": [[50, 69], [200, 69], [200.001, 113], [350, 113]],
+                       "water_unit_weight": 62.4, "layers": layers, "supports": supports,
+                       "piezometric_line": water},
+           "circle": {"centre": [208.313, 148.638], "radius": 124.638}, "slices": 100,
+           "methods": ["bishop"], "include": []})
+}
+
+/// Pockoski & Duncan's (2000) nailed wall as Slide2's problem 60 states it (US units): a 25-ft
+/// cut in clay (c = 800 psf, φ = 0) on firm soil, 250 psf on the crest and 500 more over its
+/// first 7.3 ft, a dry crack 7 ft deep, five nails at 15° every 5 ft (25,918 lb, bond
+/// 1,508 lb/ft), on Slide2's circle from the toe (it also cuts the bench in front, which the
+/// surface leaves out).
+fn pd_nailed_wall() -> Value {
+    let (xo, yo, r) = (-38.803f64, 54.156f64, 66.622f64);
+    let (a1, a2) = ((-yo).atan2(-xo), (26.0 - yo).atan2(21.5 - xo));
+    let mut surface: Vec<[f64; 2]> = (0..=60)
+        .map(|i| {
+            let a = a1 + (a2 - a1) * f64::from(i) / 60.0;
+            [xo + r * a.cos(), yo + r * a.sin()]
+        })
+        .collect();
+    surface[0] = [0.0, 0.0];
+    let nails: Vec<Value> = [40.0, 40.0, 40.0, 33.0, 25.5]
+        .iter()
+        .enumerate()
+        .map(|(k, &length)| {
+            let head = [0.001, 23.0 - 5.0 * k as f64];
+            json!({"kind": "soil_nail", "head": head, "end": along(head, length, 15.0, 1.0),
+                   "spacing": 5, "tensile_capacity": 25918.14, "plate_capacity": 25918.14,
+                   "bond_strength": 1508, "application": "passive"})
+        })
+        .collect();
+    let clay = json!({"unit_weight": 120, "cohesion": 800, "friction_angle_deg": 0});
+    let firm = json!({"unit_weight": 130, "cohesion": 5000, "friction_angle_deg": 35});
+    json!({"section": {"ground": [[-14, 0], [0, 0], [0.001, 25], [50, 25]],
+                       "water_unit_weight": 62.4,
+                       "layers": [{"top": null, "soil": clay},
+                                  {"top": [[-14, 0], [50, 0]], "soil": firm}],
+                       "surcharges": [{"x_start": 0.001, "x_end": 7.3, "pressure": 500},
+                                      {"x_start": 0.001, "x_end": 50, "pressure": 250}],
+                       "tension_crack": {"depth": 7}, "supports": nails},
+           "surface": surface, "slices": 60, "include": []})
 }
 
 /// Tandjiria's (2002) embankment (Slide2 problem 39): a 6 m embankment at 1V:1.67H on 3 m of
@@ -483,35 +484,26 @@ fn undrained_rows() -> Vec<Row> {
         )
     };
     let two = |s: f64, b: f64| [Some(s), Some(b)];
-    vec![
-        row(
-            "D&W 15.9, k = 0",
-            fig_15_9(0.0),
-            &BOTH,
-            &two(0.756, 0.761),
-            &[0.756, 0.761, 0.75],
-        ),
-        row(
-            "D&W 15.9, k = 5",
-            fig_15_9(5.0),
-            &BOTH,
-            &two(0.898, 0.909),
-            &[0.898, 0.909, 0.90],
-        ),
-        row(
-            "D&W 15.9, k = 10",
-            fig_15_9(10.0),
-            &BOTH,
-            &two(1.032, 1.045),
-            &[1.032, 1.045, 1.03],
-        ),
-        row(
-            "D&W 15.9, k = 15",
-            fig_15_9(15.0),
-            &BOTH,
-            &two(1.134, 1.154),
-            &[1.134, 1.154, 1.13],
-        ),
+    // Slide2's Spencer and Bishop, and Duncan & Wright's F, at each gradient k.
+    let fig_15_9_published = [
+        ("D&W 15.9, k = 0", 0.0, (0.756, 0.761), 0.75),
+        ("D&W 15.9, k = 5", 5.0, (0.898, 0.909), 0.90),
+        ("D&W 15.9, k = 10", 10.0, (1.032, 1.045), 1.03),
+        ("D&W 15.9, k = 15", 15.0, (1.134, 1.154), 1.13),
+    ];
+    let mut rows: Vec<Row> = fig_15_9_published
+        .iter()
+        .map(|&(key, k, (spencer, bishop), dw)| {
+            row(
+                key,
+                fig_15_9(k),
+                &BOTH,
+                &two(spencer, bishop),
+                &[spencer, bishop, dw],
+            )
+        })
+        .collect();
+    rows.extend([
         row(
             "D&W 14.20-b, I",
             fig_14_20(undrained(200.0, 15.0, 30.0)),
@@ -526,7 +518,8 @@ fn undrained_rows() -> Vec<Row> {
             &two(1.330, 1.335),
             &[1.330, 1.335, 1.312],
         ),
-    ]
+    ]);
+    rows
 }
 
 fn power_curve_rows() -> Vec<Row> {
@@ -625,14 +618,14 @@ fn nailed_wall_rows() -> Vec<Row> {
     ));
     rows.push(row(
         "P&D tied-back wall",
-        pockoski_duncan("tiebacks"),
+        pd_tied_back_wall(),
         &BOTH,
         &[Some(1.145), Some(1.147)],
         &[1.145, 1.147, 1.14],
     ));
     rows.push(row(
         "P&D nailed wall",
-        pockoski_duncan("nails"),
+        pd_nailed_wall(),
         &[SPENCER],
         &[Some(1.009)],
         &[1.009, 1.02, 1.000],
@@ -956,19 +949,12 @@ async fn the_notes_beside_the_table_hold() {
         .collect();
     assert_eq!(forces, ["9.5", "21.3"]);
     // Pockoski & Duncan's top nail crosses the crack's face only: it holds nothing.
-    let (status, _, answer) = server
-        .post("/slope/spencer", &pockoski_duncan("nails"))
-        .await;
+    let (status, _, answer) = server.post("/slope/spencer", &pd_nailed_wall()).await;
     assert_eq!(status, 200, "{answer}");
     let top = &answer["supports"][0];
     assert!(top["crossing"].is_null() && top["force"] == 0.0, "{top}");
     // The answer says so, naming the support.
-    let warning = answer["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|w| w["code"] == "support_crosses_crack")
-        .unwrap_or_else(|| panic!("{answer}"));
+    let warning = common::warning(&answer, "support_crosses_crack");
     assert!(
         warning["message"]
             .as_str()

@@ -197,12 +197,7 @@ async fn a_grid_that_misses_bases_says_so() {
     let body = section(soil, json!({"pore_pressure_grid": grid}));
     let (status, _, answer) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 200, "{answer}");
-    let warning = answer["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|w| w["code"] == "outside_pore_pressure_grid")
-        .unwrap_or_else(|| panic!("{answer}"));
+    let warning = common::warning(&answer, "outside_pore_pressure_grid");
     let named: Vec<u64> = warning["slices"]
         .as_array()
         .unwrap()

@@ -306,12 +306,7 @@ async fn samples_the_route_refuses_are_counted_and_named() {
     let refused = p["refused"].as_u64().unwrap();
     // P(c < 0) = Φ(−1): about 63 of 400; a zero cohesion with φ' = 0 is refused too.
     assert!((40..90).contains(&refused), "{p}");
-    let warning = a["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|w| w["code"] == "samples_refused")
-        .unwrap();
+    let warning = common::warning(&a, "samples_refused");
     assert!(
         warning["message"]
             .as_str()

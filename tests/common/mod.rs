@@ -205,6 +205,14 @@ pub fn assert_problem(
 }
 
 /// The texts of a drawing (its title, key and labels).
+/// The answer's warning of `code`; the test fails, showing the warnings, when there is none.
+pub fn warning<'a>(answer: &'a Value, code: &str) -> &'a Value {
+    answer["warnings"]
+        .as_array()
+        .and_then(|w| w.iter().find(|w| w["code"] == code))
+        .unwrap_or_else(|| panic!("no warning {code}: {}", answer["warnings"]))
+}
+
 pub fn svg_texts<'a>(doc: &'a roxmltree::Document) -> Vec<&'a str> {
     doc.descendants()
         .filter(|n| n.has_tag_name("text"))
