@@ -65,6 +65,31 @@ impl LevelTable {
     pub fn is_empty(&self) -> bool {
         self.rows.is_empty()
     }
+
+    /// The stretch holding x, looked for from `cursor` (the stretch of the last read, which it
+    /// becomes) by walking, and x's distance from the stretch's start. The first start beyond
+    /// x, as `partition_point(|&s| s <= x)` gives it (x is finite).
+    fn stretch(&self, x: f64, cursor: &mut usize) -> (usize, f64) {
+        let starts = &self.starts;
+        let mut j = (*cursor).min(starts.len());
+        while j < starts.len() && starts[j] <= x {
+            j += 1;
+        }
+        while j > 0 && starts[j - 1] > x {
+            j -= 1;
+        }
+        *cursor = j;
+        let dx = x - starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
+        (j, dx)
+    }
+
+    /// The ground's level at x, as [`Levels::read_from`] reads it (the same arithmetic); the
+    /// table must not be empty.
+    pub fn ground_at(&self, x: f64, cursor: &mut usize) -> f64 {
+        let (j, dx) = self.stretch(x, cursor);
+        let (y, slope) = self.rows[j * self.lines];
+        y + slope * dx
+    }
 }
 
 /// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
@@ -88,17 +113,7 @@ impl Levels {
             self.read_lines(section, x);
             return;
         }
-        // The first start beyond x, as `partition_point(|&s| s <= x)` gives it (x is finite).
-        let starts = &table.starts;
-        let mut j = (*cursor).min(starts.len());
-        while j < starts.len() && starts[j] <= x {
-            j += 1;
-        }
-        while j > 0 && starts[j - 1] > x {
-            j -= 1;
-        }
-        *cursor = j;
-        let dx = x - table.starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
+        let (j, dx) = table.stretch(x, cursor);
         let rows = &table.rows[j * table.lines..(j + 1) * table.lines];
         self.0.resize(rows.len(), 0.0);
         for (level, &(y, slope)) in self.0.iter_mut().zip(rows) {

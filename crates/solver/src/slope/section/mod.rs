@@ -17,6 +17,7 @@ mod level_tests;
 #[cfg(test)]
 mod method_tests;
 pub mod noncircular;
+mod plain;
 pub mod polyline;
 pub mod search;
 mod simple;

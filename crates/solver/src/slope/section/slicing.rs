@@ -6,6 +6,7 @@
 //! The lines are read once per side: the column over a side serves the slices on both of it.
 
 use super::column::{column, ground, pore_pressure, side_water, soil_at, water, Levels};
+use super::plain::PlainSoil;
 use super::Section;
 use crate::slope::slices::BaseSlice;
 use crate::slope::strength::Strength;
@@ -108,6 +109,15 @@ pub(super) fn slice_all(
     points: &[f64],
     (tolerance, still): (f64, Option<f64>),
 ) -> Slicing {
+    if let (Some(soil), None) = (PlainSoil::of(section), still) {
+        let (slices, base_ys) = super::plain::slices(section, soil, xs, base_at, points);
+        let ponded = vec![(0.0, 0.0, 0.0); slices.len()];
+        return Slicing {
+            slices,
+            base_ys,
+            ponded,
+        };
+    }
     // The buffers live with the thread: a search cuts thousands of surfaces on each.
     SCRATCH.with(|cell| match cell.try_borrow_mut() {
         Ok(mut s) => slice_with(section, xs, base_at, points, (tolerance, still), &mut s),
@@ -352,5 +362,91 @@ fn strength(
         Strength::MohrCoulomb => (l.soil.cohesion, tan_phi),
         Strength::Undrained(u) => (u.at(y, g), 0.0),
         Strength::Envelope(e) => e.tangent(sigma()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::plain;
+    use super::*;
+    use crate::slope::spencer::Soil;
+
+    /// The plain slicer is the general one's arithmetic: the same slices, bit for bit, on
+    /// grounds with bends inside slices, dry and with r_u, for shallow and deep circles.
+    #[test]
+    fn the_plain_slicer_gives_the_general_slicers_slices_bit_for_bit() {
+        let ground = vec![
+            (-20.0, 0.0),
+            (0.0, 0.0),
+            (10.0, 5.0),
+            (13.3, 5.0),
+            (30.0, 12.7),
+            (60.0, 12.7),
+        ];
+        let mut sections = Vec::new();
+        for ratio in [0.0, 0.35] {
+            let soil = Soil::new(19.5, 8.0, 31.0, ratio).unwrap();
+            sections.push(Section::of_one_soil(ground.clone(), soil).unwrap());
+            let embankment = crate::slope::Embankment::new(7.5, 15.0).unwrap();
+            sections.push(Section::simple(&embankment, soil).unwrap());
+        }
+        let mut compared = 0;
+        for section in &sections {
+            let soil = PlainSoil::of(section).unwrap();
+            let bends: Vec<f64> = section.ground.xs().collect();
+            for (centre, radius) in [
+                ((12.0, 30.0), 29.0),
+                ((8.0, 18.0), 18.5),
+                ((25.0, 40.0), 36.0),
+            ] {
+                let base =
+                    |x: f64| centre.1 - (radius * radius - (x - centre.0).powi(2)).max(0.0).sqrt();
+                let (xa, xb) = (centre.0 - 0.9 * radius, centre.0 + 0.9 * radius);
+                for count in [3, 17, 50] {
+                    let xs: Vec<f64> = (0..=count)
+                        .map(|i| xa + (xb - xa) * i as f64 / count as f64)
+                        .collect();
+                    let base_at = |i: usize, x: f64, g: f64| match i {
+                        0 => g,
+                        i if i == count => g,
+                        _ => base(x).min(g),
+                    };
+                    let points: Vec<f64> = bends
+                        .iter()
+                        .copied()
+                        .filter(|&x| x > xa && x < xb)
+                        .collect();
+                    let general = slice_with(
+                        section,
+                        &xs,
+                        base_at,
+                        &points,
+                        (1e-9, None),
+                        &mut Scratch::default(),
+                    );
+                    let (slices, base_ys) = plain::slices(section, soil, &xs, base_at, &points);
+                    assert_eq!(slices, general.slices);
+                    assert_eq!(base_ys, general.base_ys);
+                    assert!(general.ponded.iter().all(|&p| p == (0.0, 0.0, 0.0)));
+                    compared += slices.len();
+                }
+            }
+        }
+        assert!(compared > 500, "{compared}");
+    }
+
+    #[test]
+    fn a_section_with_water_or_layers_is_not_plain() {
+        let soil = Soil::new(19.5, 8.0, 31.0, 0.0).unwrap();
+        let ground = vec![(0.0, 0.0), (10.0, 5.0), (30.0, 5.0)];
+        let plain = Section::of_one_soil(ground.clone(), soil).unwrap();
+        assert!(PlainSoil::of(&plain).is_some());
+        let mut wet = plain.clone();
+        wet.piezometric_line =
+            Some(super::super::Polyline::new(vec![(0.0, 0.0), (30.0, 3.0)]).unwrap());
+        assert!(PlainSoil::of(&wet).is_none());
+        let mut layered = plain.clone();
+        layered.layers.push(layered.layers[0].clone());
+        assert!(PlainSoil::of(&layered).is_none());
     }
 }
