@@ -372,7 +372,8 @@ mod tests {
     use crate::slope::spencer::Soil;
 
     /// The plain slicer is the general one's arithmetic: the same slices, bit for bit, on
-    /// grounds with bends inside slices, dry and with r_u, for shallow and deep circles.
+    /// grounds with bends and surcharge edges inside slices, a crack at the upper end, dry and
+    /// with r_u, for shallow and deep circles.
     #[test]
     fn the_plain_slicer_gives_the_general_slicers_slices_bit_for_bit() {
         let ground = vec![
@@ -406,16 +407,20 @@ mod tests {
                     let xs: Vec<f64> = (0..=count)
                         .map(|i| xa + (xb - xa) * i as f64 / count as f64)
                         .collect();
+                    // The last side as a tension crack's bottom leaves, 1.5 below the ground.
                     let base_at = |i: usize, x: f64, g: f64| match i {
                         0 => g,
-                        i if i == count => g,
+                        i if i == count => g - 1.5,
                         _ => base(x).min(g),
                     };
-                    let points: Vec<f64> = bends
+                    // Surcharge edges split slices where the ground is straight.
+                    let mut points: Vec<f64> = bends
                         .iter()
                         .copied()
+                        .chain([4.4, 21.7])
                         .filter(|&x| x > xa && x < xb)
                         .collect();
+                    points.sort_by(f64::total_cmp);
                     let general = slice_with(
                         section,
                         &xs,
