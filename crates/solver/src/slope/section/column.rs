@@ -214,6 +214,18 @@ pub(super) fn pore_pressure(
     }
 }
 
+/// The side water of one soil with its own r_u, from the base at b up to the ground at g
+/// (above it): u = r_u·γ·(g − y), so ½·r_u·γ·h² at h/3 above the base.
+pub(super) fn ratio_side_water(ratio: f64, gamma: f64, (g, b): (f64, f64)) -> (f64, f64) {
+    let h = g - b;
+    let force = 0.5 * ratio * gamma * h * h;
+    if force > 0.0 {
+        (force, b + h / 3.0)
+    } else {
+        (0.0, b)
+    }
+}
+
 /// The pore water's force on the vertical at x from the base at y = b up to the ground, and its
 /// height: closed form under a water line, else ∫u dy by Simpson's rule on 8 panels (the r_u
 /// pressures of layered soils are piecewise linear, to ~1e-4 there; a grid's are linear in
@@ -247,16 +259,9 @@ pub(super) fn side_water(section: &Section, levels: &[f64], (x, b): (f64, f64)) 
             (0.0, b)
         };
     }
-    // One soil with its own r_u: u = r_u·γ·(g − y), ½·r_u·γ·h² at h/3 above the base.
     if let ([layer], None) = (layers.as_slice(), &section.water.grid) {
         if let (Some(ratio), None) = (layer.pore_pressure_ratio, &layer.piezometric_line) {
-            let h = g - b;
-            let force = 0.5 * ratio * layer.soil.unit_weight * h * h;
-            return if force > 0.0 {
-                (force, b + h / 3.0)
-            } else {
-                (0.0, b)
-            };
+            return ratio_side_water(ratio, layer.soil.unit_weight, (g, b));
         }
     }
     const PANELS: usize = 8;

@@ -4,7 +4,7 @@
 //! every side: the same slices bit for bit (tested against it), at a fraction of the cost of a
 //! search's circles.
 
-use super::Section;
+use super::{column, Section};
 use crate::slope::slices::BaseSlice;
 use crate::slope::strength::Strength;
 
@@ -47,17 +47,11 @@ impl PlainSoil {
     }
 
     /// The pore water's force on a side from the base at b up to the ground at g, and its
-    /// height: ½·r_u·γ·h² at h/3 above the base.
+    /// height ([`column::ratio_side_water`]; none without r_u or above the ground).
     fn side_water(&self, g: f64, b: f64) -> (f64, f64) {
-        let Some(ratio) = self.ratio.filter(|_| g > b) else {
-            return (0.0, b);
-        };
-        let h = g - b;
-        let force = 0.5 * ratio * self.gamma * h * h;
-        if force > 0.0 {
-            (force, b + h / 3.0)
-        } else {
-            (0.0, b)
+        match self.ratio {
+            Some(ratio) if g > b => column::ratio_side_water(ratio, self.gamma, (g, b)),
+            _ => (0.0, b),
         }
     }
 }

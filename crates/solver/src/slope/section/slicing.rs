@@ -101,7 +101,8 @@ fn base_water(
 /// The slices between the sides `xs`; `base_at(i, x, g)` is the base's height at side i (at x,
 /// where the ground is at g). `points`: the section's bends within the cut, sorted. With
 /// `still`, the level of [`still_water_level`], the slices are written relative to its
-/// hydrostatic field.
+/// hydrostatic field. A plain section ([`PlainSoil`]) is sliced by [`super::plain::slices`],
+/// the same arithmetic without the reads of every line.
 pub(super) fn slice_all(
     section: &Section,
     xs: &[f64],
