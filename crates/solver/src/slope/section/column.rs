@@ -94,8 +94,20 @@ impl LevelTable {
 
 /// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
 /// layer k (the ground for k = 0), index L the piezometric line (NaN without one).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Default)]
 pub(super) struct Levels(Vec<f64>);
+
+/// `clone_from` copies into the buffer it has (a derived one would allocate a new one each
+/// time: the slicer copies levels at every bend inside a slice).
+impl Clone for Levels {
+    fn clone(&self) -> Self {
+        Self(self.0.clone())
+    }
+
+    fn clone_from(&mut self, source: &Self) {
+        self.0.clone_from(&source.0);
+    }
+}
 
 impl Levels {
     /// Reads the section's lines at x.
@@ -115,7 +127,11 @@ impl Levels {
         }
         let (j, dx) = table.stretch(x, cursor);
         let rows = &table.rows[j * table.lines..(j + 1) * table.lines];
-        self.0.resize(rows.len(), 0.0);
+        // The buffer keeps its length from read to read: written in place, not cleared and
+        // refilled (the same levels, without the per-read bookkeeping).
+        if self.0.len() != rows.len() {
+            self.0.resize(rows.len(), 0.0);
+        }
         for (level, &(y, slope)) in self.0.iter_mut().zip(rows) {
             *level = y + slope * dx;
         }
@@ -226,21 +242,33 @@ pub(super) fn ratio_side_water(ratio: f64, gamma: f64, (g, b): (f64, f64)) -> (f
     }
 }
 
+/// Whether every pore pressure comes from the section's piezometric line alone (or there is
+/// none): no grid, no layer with its own r_u or water line. [`side_water`] is then in closed
+/// form; a slicer asks once per cut.
+pub(super) fn water_from_line_alone(section: &Section) -> bool {
+    section.water.grid.is_none()
+        && section
+            .layers
+            .iter()
+            .all(|l| l.pore_pressure_ratio.is_none() && l.piezometric_line.is_none())
+}
+
 /// The pore water's force on the vertical at x from the base at y = b up to the ground, and its
 /// height: closed form under a water line, else ∫u dy by Simpson's rule on 8 panels (the r_u
 /// pressures of layered soils are piecewise linear, to ~1e-4 there; a grid's are linear in
-/// each triangle).
-pub(super) fn side_water(section: &Section, levels: &[f64], (x, b): (f64, f64)) -> (f64, f64) {
+/// each triangle). `line_alone`: [`water_from_line_alone`] of the section.
+pub(super) fn side_water(
+    section: &Section,
+    levels: &[f64],
+    (x, b): (f64, f64),
+    line_alone: bool,
+) -> (f64, f64) {
     let g = ground(levels);
     if g <= b {
         return (0.0, b);
     }
     let layers = &section.layers;
-    let simple = section.water.grid.is_none()
-        && layers
-            .iter()
-            .all(|l| l.pore_pressure_ratio.is_none() && l.piezometric_line.is_none());
-    if simple {
+    if line_alone {
         let Some(line) = &section.piezometric_line else {
             return (0.0, b);
         };

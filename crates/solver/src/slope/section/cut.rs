@@ -48,14 +48,21 @@ fn shape_y(shape: &SlipShape, x: f64) -> f64 {
 
 /// x where the slip surface meets `line` within (a, b).
 fn shape_crossings(shape: &SlipShape, line: &Polyline, a: f64, b: f64) -> Vec<f64> {
+    let mut xs = Vec::new();
+    add_shape_crossings(shape, line, (a, b), &mut xs);
+    xs
+}
+
+/// [`shape_crossings`] added to `xs`.
+fn add_shape_crossings(shape: &SlipShape, line: &Polyline, (a, b): (f64, f64), xs: &mut Vec<f64>) {
     match shape {
-        SlipShape::Circle { centre, radius } => line
-            .circle_crossings(*centre, *radius, a, b)
-            .into_iter()
-            .filter(|c| c.1)
-            .map(|c| c.0)
-            .collect(),
-        SlipShape::Polyline(surface) => surface.crossings(line, a, b),
+        SlipShape::Circle { centre, radius } => xs.extend(
+            line.circle_crossings(*centre, *radius, a, b)
+                .into_iter()
+                .filter(|c| c.1)
+                .map(|c| c.0),
+        ),
+        SlipShape::Polyline(surface) => xs.extend(surface.crossings(line, a, b)),
     }
 }
 
@@ -251,11 +258,8 @@ impl Cut {
             (tolerance, still_water_level(section, xa, xb)),
         );
         let mut loads = loads(section, &slices, ponded, crack);
-        let mut surface: Vec<(f64, f64)> = boundaries
-            .iter()
-            .copied()
-            .zip(base_ys.iter().copied())
-            .collect();
+        let mut surface: Vec<(f64, f64)> = Vec::with_capacity(boundaries.len() + 1);
+        surface.extend(boundaries.iter().copied().zip(base_ys.iter().copied()));
         // Supports cross the bases only: the crack carries no force but its water.
         let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
         let (supports, support_loads) =
@@ -368,15 +372,11 @@ fn crack_at(
     Ok((x, crack_line.y_at(x), ground.y_at(x)))
 }
 
-/// Sorted x in (a, b) closer than `tolerance` merged, with a and b at the ends.
-fn sorted_between(xs: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
-    let mut cuts: Vec<f64> = std::iter::once(a)
-        .chain(
-            xs.into_iter()
-                .filter(|&x| x > a + tolerance && x < b - tolerance),
-        )
-        .chain(std::iter::once(b))
-        .collect();
+/// Sorted x in (a, b) closer than `tolerance` merged, with a and b at the ends. (Values equal
+/// under `total_cmp` are the same bits: the order they come in does not matter.)
+fn sorted_between(mut cuts: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+    cuts.retain(|&x| x > a + tolerance && x < b - tolerance);
+    cuts.extend([a, b]);
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|next, kept| *next - *kept <= tolerance);
     if let Some(end) = cuts.last_mut() {
@@ -395,23 +395,25 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
         .layers
         .iter()
         .filter_map(|l| l.piezometric_line.as_ref().map(|w| &w.line));
-    let lines: Vec<&Polyline> = tops
-        .chain(section.bedrock.as_ref())
-        .chain(section.piezometric_line.as_ref())
-        .chain(section.other_water_line.as_ref())
-        .chain(own)
-        .collect();
-    let mut xs: Vec<f64> = Vec::new();
+    let lines = || {
+        tops.clone()
+            .chain(section.bedrock.as_ref())
+            .chain(section.piezometric_line.as_ref())
+            .chain(section.other_water_line.as_ref())
+            .chain(own.clone())
+    };
+    // Room for two crossings a line and the ends: no growing for a circle.
+    let mut xs: Vec<f64> = Vec::with_capacity(2 * section.layers.len() + 8);
     if let SlipShape::Polyline(line) = shape {
         xs.extend(line.xs());
     }
-    for line in &lines {
-        xs.extend(shape_crossings(shape, line, a, b));
+    for line in lines() {
+        add_shape_crossings(shape, line, (a, b), &mut xs);
     }
     if let Some(bedrock) = &section.bedrock {
         let on_bedrock = |x: f64| bedrock.y_at(x) >= shape_y(shape, x) - tolerance;
         xs.extend(bedrock.xs().filter(|&x| on_bedrock(x)));
-        for line in &lines {
+        for line in lines() {
             xs.extend(
                 bedrock
                     .crossings(line, a, b)
@@ -486,12 +488,10 @@ pub(super) fn ponded(section: &Section) -> Vec<(f64, f64)> {
 fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     let first = section.bends.partition_point(|&x| x <= a + tolerance);
     let last = section.bends.partition_point(|&x| x < b - tolerance);
-    sorted_between(
-        section.bends[first..last.max(first)].to_vec(),
-        a,
-        b,
-        tolerance,
-    )
+    let inner = &section.bends[first..last.max(first)];
+    let mut xs = Vec::with_capacity(inner.len() + 2);
+    xs.extend_from_slice(inner);
+    sorted_between(xs, a, b, tolerance)
 }
 
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
@@ -499,16 +499,15 @@ fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
 fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
     let span = cuts[cuts.len() - 1] - cuts[0];
     let width = span / n as f64;
-    let lengths: Vec<f64> = cuts.windows(2).map(|w| w[1] - w[0]).collect();
-    let mut counts: Vec<usize> = lengths
-        .iter()
-        .map(|&l| ((l / width).floor() as usize).max(1))
+    let length = |i: usize| cuts[i + 1] - cuts[i];
+    let mut counts: Vec<usize> = (0..cuts.len() - 1)
+        .map(|i| ((length(i) / width).floor() as usize).max(1))
         .collect();
     let mut total: usize = counts.iter().sum();
     // Hand out what is left to the pieces whose slices are widest.
     while total < n {
         let widest = (0..counts.len()).max_by(|&i, &j| {
-            (lengths[i] / counts[i] as f64).total_cmp(&(lengths[j] / counts[j] as f64))
+            (length(i) / counts[i] as f64).total_cmp(&(length(j) / counts[j] as f64))
         });
         let Some(i) = widest else { break };
         counts[i] += 1;
@@ -574,16 +573,20 @@ fn loads(
             }
         }
     }
-    totals
-        .into_iter()
-        .enumerate()
-        .filter(|(_, t)| *t != (0.0, 0.0, 0.0))
-        .map(|(slice, (fx, fy, moment))| ExternalLoad {
-            slice,
-            fx,
-            fy,
-            moment,
-            passive: false,
-        })
-        .collect()
+    let carrying = |t: &(f64, f64, f64)| *t != (0.0, 0.0, 0.0);
+    let mut out = Vec::with_capacity(totals.iter().filter(|t| carrying(t)).count());
+    out.extend(
+        totals
+            .into_iter()
+            .enumerate()
+            .filter(|(_, t)| carrying(t))
+            .map(|(slice, (fx, fy, moment))| ExternalLoad {
+                slice,
+                fx,
+                fy,
+                moment,
+                passive: false,
+            }),
+    );
+    out
 }

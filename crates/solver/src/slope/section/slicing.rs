@@ -5,7 +5,9 @@
 //!
 //! The lines are read once per side: the column over a side serves the slices on both of it.
 
-use super::column::{column, ground, pore_pressure, side_water, soil_at, water, Levels};
+use super::column::{
+    column, ground, pore_pressure, side_water, soil_at, water, water_from_line_alone, Levels,
+};
 use super::plain::PlainSoil;
 use super::Section;
 use crate::slope::slices::BaseSlice;
@@ -32,6 +34,10 @@ struct Scratch {
     middle: Levels,
     /// The level table's stretch of the last read (the reads move along x).
     cursor: usize,
+    /// tan φ′ per layer.
+    tan_phi: Vec<f64>,
+    /// [`water_from_line_alone`] of the section being cut.
+    line_water: bool,
 }
 
 /// The level of still water standing over the whole top of the mass between a and b, when it
@@ -55,19 +61,16 @@ pub(super) fn still_water_level(section: &Section, a: f64, b: f64) -> Option<f64
         return None;
     }
     let inside = |x: f64| x > a && x < b;
-    let xs: Vec<f64> = [a, b]
-        .into_iter()
-        .chain(line.xs().filter(|&x| inside(x)))
-        .chain(section.ground.xs().filter(|&x| inside(x)))
-        .collect();
+    let xs = || {
+        [a, b]
+            .into_iter()
+            .chain(line.xs().filter(move |&x| inside(x)))
+            .chain(section.ground.xs().filter(move |&x| inside(x)))
+    };
     // Both lines are straight between these x: the water is above the ground all along if it
     // is at each of them.
-    let standing = xs.iter().all(|&x| line.y_at(x) >= section.ground.y_at(x));
-    standing.then(|| {
-        xs.iter()
-            .map(|&x| line.y_at(x))
-            .fold(f64::INFINITY, f64::min)
-    })
+    let standing = xs().all(|x| line.y_at(x) >= section.ground.y_at(x));
+    standing.then(|| xs().map(|x| line.y_at(x)).fold(f64::INFINITY, f64::min))
 }
 
 /// The pore pressure at the base middle (levels, layer, height) and the pore water's force on
@@ -93,7 +96,7 @@ fn base_water(
         }
         None => (
             pore_pressure(section, levels, layer, (xm, bm)),
-            side_water(section, right, (xr, br)),
+            side_water(section, right, (xr, br), s.line_water),
         ),
     }
 }
@@ -146,11 +149,15 @@ fn slice_with(
     (tolerance, still): (f64, Option<f64>),
     s: &mut Scratch,
 ) -> Slicing {
-    let tan_phi: Vec<f64> = section
-        .layers
-        .iter()
-        .map(|l| l.soil.friction_angle_rad.tan())
-        .collect();
+    s.line_water = water_from_line_alone(section);
+    let mut tan_phi = std::mem::take(&mut s.tan_phi);
+    tan_phi.clear();
+    tan_phi.extend(
+        section
+            .layers
+            .iter()
+            .map(|l| l.soil.friction_angle_rad.tan()),
+    );
     let count = xs.len().saturating_sub(1);
     let mut out = Slicing {
         slices: Vec::with_capacity(count),
@@ -180,6 +187,7 @@ fn slice_with(
         std::mem::swap(&mut s.left, &mut s.right);
         (bl, column_left) = (br, column_right);
     }
+    s.tan_phi = tan_phi;
     out
 }
 
