@@ -425,65 +425,6 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
     sorted_between(xs, a, b, tolerance)
 }
 
-/// Where the lines above the bases bend or cross (ground, layer tops, the water line, surcharge
-/// edges), over the whole section, sorted: the slice weights and loads are integrated piecewise
-/// between these, exactly. Computed once per section.
-pub(super) fn bends(section: &Section) -> Vec<f64> {
-    let lines: Vec<&Polyline> = std::iter::once(&section.ground)
-        .chain(section.layers.iter().filter_map(|l| l.top.as_ref()))
-        .chain(section.piezometric_line.as_ref())
-        .collect();
-    let mut xs: Vec<f64> = lines.iter().flat_map(|l| l.xs()).collect();
-    xs.extend(section.surcharges.iter().flat_map(|s| [s.x_start, s.x_end]));
-    // A layer's own water line bends its pore pressures (not the levels): its vertices.
-    xs.extend(
-        section
-            .layers
-            .iter()
-            .filter_map(|l| l.piezometric_line.as_ref())
-            .flat_map(|w| w.line.xs()),
-    );
-    // Beyond every vertex the lines run level: no crossing lies outside their range.
-    let (lo, hi) = xs
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-            (a.min(x), b.max(x))
-        });
-    let (lo, hi) = (lo - 1.0, hi + 1.0);
-    for (i, line) in lines.iter().enumerate() {
-        for other in &lines[i + 1..] {
-            xs.extend(line.crossings(other, lo, hi));
-        }
-    }
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    xs
-}
-
-/// The stretches of x where the piezometric line lies above the ground somewhere (ponded
-/// water), merged. Between the bends both lines are straight, beyond them level: the water
-/// stands above the ground on a stretch only if it does at one of its ends.
-pub(super) fn ponded(section: &Section) -> Vec<(f64, f64)> {
-    let mut ponded: Vec<(f64, f64)> = Vec::new();
-    let Some(line) = &section.piezometric_line else {
-        return ponded;
-    };
-    let above = |x: f64| line.y_at(x) > section.ground.y_at(x);
-    let ends = std::iter::once(f64::NEG_INFINITY)
-        .chain(section.bends.iter().copied())
-        .chain(std::iter::once(f64::INFINITY));
-    for (a, b) in ends.clone().zip(ends.skip(1)) {
-        if !((a.is_finite() && above(a)) || (b.is_finite() && above(b))) {
-            continue;
-        }
-        match ponded.last_mut() {
-            Some(last) if last.1 == a => last.1 = b,
-            _ => ponded.push((a, b)),
-        }
-    }
-    ponded
-}
-
 /// The bends of the section within (a, b), with a and b at the ends.
 fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
     let first = section.bends.partition_point(|&x| x <= a + tolerance);
@@ -515,16 +456,15 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
     }
     let mut sides = Vec::with_capacity(total + 1);
     for (w, &count) in cuts.windows(2).zip(&counts) {
-        for k in 0..count {
-            sides.push(w[0] + (w[1] - w[0]) * k as f64 / count as f64);
-        }
+        sides.extend((0..count).map(|k| w[0] + (w[1] - w[0]) * k as f64 / count as f64));
     }
     sides.push(cuts[cuts.len() - 1]);
     sides
 }
 
-/// The known forces on the slices: ponded water (as sliced), surcharges, line loads and the
-/// water in the crack, one load per slice that carries any (moments about the base middle).
+/// The known forces on the slices: ponded water (as sliced; none when `ponded` is empty),
+/// surcharges, line loads and the water in the crack, one load per slice that carries any
+/// (moments about the base middle).
 fn loads(
     section: &Section,
     slices: &[BaseSlice],
@@ -532,7 +472,17 @@ fn loads(
     crack: Option<(f64, f64, f64)>,
 ) -> Vec<ExternalLoad> {
     let ground = &section.ground;
-    let mut totals = ponded;
+    let unloaded = section.surcharges.is_empty()
+        && section.line_loads.is_empty()
+        && section.tension_crack.is_none();
+    if unloaded && ponded.is_empty() {
+        return Vec::new();
+    }
+    let mut totals = if ponded.is_empty() {
+        vec![(0.0, 0.0, 0.0); slices.len()]
+    } else {
+        ponded
+    };
     // A force (fx, fy) at (x, y) on slice i.
     let mut add = |i: usize, (x, y): (f64, f64), (fx, fy): (f64, f64), s: &BaseSlice| {
         let (xb, yb) = s.base_middle;

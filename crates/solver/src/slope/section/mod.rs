@@ -7,6 +7,7 @@
 //! sliding mass into [`SliceModel`] slices in the solver's frame (crest towards +x: a section
 //! whose crest lies to the left is mirrored, x → −x, and mirrored back for the answer).
 
+mod bends;
 mod blocks;
 mod column;
 mod cut;
@@ -111,7 +112,7 @@ pub struct Section {
     /// Per layer, its nonlinear envelope (empty when none has one): what the slice models of
     /// this section carry.
     envelopes: Option<Arc<[Option<Envelope>]>>,
-    /// Where the lines above the bases bend or cross, sorted ([`cut::bends`]).
+    /// Where the lines above the bases bend or cross, sorted ([`bends::bends`]).
     bends: Vec<f64>,
     /// The lines above the bases between the bends.
     levels: column::LevelTable,
@@ -182,9 +183,9 @@ impl Section {
 
     /// The section with its bends found.
     fn with_bends(mut self) -> Self {
-        self.bends = cut::bends(&self);
+        self.bends = bends::bends(&self);
         self.levels = column::LevelTable::new(&self, &self.bends);
-        self.ponded = cut::ponded(&self);
+        self.ponded = bends::ponded(&self);
         self
     }
 

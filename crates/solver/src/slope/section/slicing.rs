@@ -19,7 +19,7 @@ pub(super) struct Slicing {
     /// The base's height at each side.
     pub base_ys: Vec<f64>,
     /// Per slice, the ponded water's force on its top: (f_x, f_y, moment about the base
-    /// middle).
+    /// middle); empty when no water can stand on any (a plain section).
     pub ponded: Vec<(f64, f64, f64)>,
 }
 
@@ -115,11 +115,10 @@ pub(super) fn slice_all(
 ) -> Slicing {
     if let (Some(soil), None) = (PlainSoil::of(section), still) {
         let (slices, base_ys) = super::plain::slices(section, soil, xs, base_at, points);
-        let ponded = vec![(0.0, 0.0, 0.0); slices.len()];
         return Slicing {
             slices,
             base_ys,
-            ponded,
+            ponded: Vec::new(),
         };
     }
     // The buffers live with the thread: a search cuts thousands of surfaces on each.
@@ -442,6 +441,9 @@ mod tests {
                     assert_eq!(slices, general.slices);
                     assert_eq!(base_ys, general.base_ys);
                     assert!(general.ponded.iter().all(|&p| p == (0.0, 0.0, 0.0)));
+                    let sliced = slice_all(section, &xs, base_at, &points, (1e-9, None));
+                    assert_eq!(sliced.slices, general.slices);
+                    assert!(sliced.ponded.is_empty());
                     compared += slices.len();
                 }
             }
