@@ -179,18 +179,24 @@ pub(super) fn water(levels: &[f64]) -> f64 {
 
 /// The weight of the column over y and its first moment ∫γ·y dy, by the soil rule: layer k
 /// holds the points at or below its top and above every later layer's top.
+///
+/// The smaller and larger of two levels are taken by comparison, not `f64::min`/`max` (whose
+/// handling of NaN costs several instructions in this, the slicer's innermost loop): the levels
+/// and y are finite, and where the two differ only in the sign of a zero, the weight and moment
+/// are the same either way (a zero enters only as `upper − below` with `upper > below`, or
+/// squared).
 pub(super) fn column(section: &Section, levels: &[f64], y: f64) -> (f64, f64) {
     let g = ground(levels);
     let mut below = y;
     let (mut w, mut m) = (0.0, 0.0);
     for (layer, &top) in section.layers.iter().zip(levels).rev() {
-        let upper = g.min(top);
+        let upper = if top < g { top } else { g };
         if upper > below {
             let gamma = layer.soil.unit_weight;
             w += gamma * (upper - below);
             m += gamma * 0.5 * (upper * upper - below * below);
         }
-        below = below.max(top);
+        below = if top > below { top } else { below };
     }
     (w, m)
 }

@@ -174,3 +174,48 @@ fn a_section_too_large_for_a_table_reads_its_lines_one_by_one() {
     let f = layered_factor(section, 50);
     assert!(f.is_finite() && f > 0.0, "F = {f}");
 }
+
+/// The column as the soil rule states it, with `f64::min`/`max` (what `column` computed before
+/// it compared instead).
+fn column_by_min_max(section: &Section, levels: &[f64], y: f64) -> (f64, f64) {
+    let g = levels[0];
+    let mut below = y;
+    let (mut w, mut m) = (0.0, 0.0);
+    for (layer, &top) in section.layers.iter().zip(levels).rev() {
+        let upper = g.min(top);
+        if upper > below {
+            let gamma = layer.soil.unit_weight;
+            w += gamma * (upper - below);
+            m += gamma * 0.5 * (upper * upper - below * below);
+        }
+        below = below.max(top);
+    }
+    (w, m)
+}
+
+#[test]
+fn the_column_by_comparisons_is_the_rule_with_min_and_max_bit_for_bit() {
+    let section = Section::new(three_layers()).unwrap();
+    // Levels above, at and below one another, signed zeros among them, and tops above the
+    // ground (a layer cut off by it), for bases above, at and below every level.
+    let values = [-7.5, -3.0, -0.0, 0.0, 1e-300, 2.25, 10.0];
+    let mut compared = 0;
+    for &g in &values {
+        for &t1 in &values {
+            for &t2 in &values {
+                let levels = [g, t1, t2, f64::NAN];
+                for &y in values.iter().chain(&[-20.0, 30.0]) {
+                    let (w, m) = super::column::column(&section, &levels, y);
+                    let (w0, m0) = column_by_min_max(&section, &levels, y);
+                    assert_eq!(
+                        (w.to_bits(), m.to_bits()),
+                        (w0.to_bits(), m0.to_bits()),
+                        "levels {levels:?}, y {y}"
+                    );
+                    compared += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(compared, 7 * 7 * 7 * 9);
+}
