@@ -92,6 +92,30 @@ impl LevelTable {
     }
 }
 
+/// The bends of a cut that lie inside each of its slices, found by walking (the slices come left
+/// to right): for sides x_l ≤ x_r, the points p with x_l < p < x_r, the same as
+/// `partition_point` finds them, without a search per slice.
+#[derive(Debug, Default)]
+pub(super) struct InnerPoints {
+    /// Points at or left of the last x_l, and left of the last x_r.
+    first: usize,
+    last: usize,
+}
+
+impl InnerPoints {
+    /// The points (sorted) strictly between `xl` and `xr`; `xl` and `xr` never less than at
+    /// the last call.
+    pub fn within<'a>(&mut self, points: &'a [f64], (xl, xr): (f64, f64)) -> &'a [f64] {
+        while self.first < points.len() && points[self.first] <= xl {
+            self.first += 1;
+        }
+        while self.last < points.len() && points[self.last] < xr {
+            self.last += 1;
+        }
+        &points[self.first..self.last.max(self.first)]
+    }
+}
+
 /// The heights of the section's lines at one x, in a reusable buffer: index k < L is the top of
 /// layer k (the ground for k = 0), index L the piezometric line (NaN without one).
 #[derive(Debug, Default)]

@@ -219,3 +219,27 @@ fn the_column_by_comparisons_is_the_rule_with_min_and_max_bit_for_bit() {
     }
     assert_eq!(compared, 7 * 7 * 7 * 9);
 }
+
+#[test]
+fn the_points_inside_each_slice_found_by_walking_are_those_a_search_finds() {
+    use super::column::InnerPoints;
+    let points = [-3.0, 0.0, 0.0, 1.5, 2.0, 7.25, 9.0];
+    // Sides on points, between them, repeated (a slice of no width), beyond both ends.
+    let sides = [
+        -5.0, -3.0, -3.0, -1.0, 0.0, 0.5, 1.5, 1.75, 2.0, 7.0, 7.25, 9.0, 9.0, 12.0,
+    ];
+    let mut walk = InnerPoints::default();
+    for w in sides.windows(2) {
+        let (xl, xr) = (w[0], w[1]);
+        let first = points.partition_point(|&p| p <= xl);
+        let last = points.partition_point(|&p| p < xr);
+        assert_eq!(
+            walk.within(&points, (xl, xr)),
+            &points[first..last.max(first)],
+            "slice [{xl}, {xr}]"
+        );
+    }
+    // No points: nothing inside any slice.
+    let mut walk = InnerPoints::default();
+    assert!(walk.within(&[], (0.0, 1.0)).is_empty());
+}

@@ -68,6 +68,7 @@ pub(super) fn slices(
 ) -> (Vec<BaseSlice>, Vec<f64>) {
     let table = &section.levels;
     let mut cursor = 0;
+    let mut inner_points = column::InnerPoints::default();
     let count = xs.len().saturating_sub(1);
     let mut slices = Vec::with_capacity(count);
     let mut base_ys = Vec::with_capacity(xs.len());
@@ -79,9 +80,7 @@ pub(super) fn slices(
         let (xl, xr) = (xs[i], xs[i + 1]);
         let gr = table.ground_at(xr, &mut cursor);
         let br = base_at(i + 1, xr, gr);
-        let first = points.partition_point(|&p| p <= xl);
-        let last = points.partition_point(|&p| p < xr);
-        let inner = &points[first..last.max(first)];
+        let inner = inner_points.within(points, (xl, xr));
         let ((weight, moment), column_right, gm) = if inner.is_empty() {
             let piece = piece(soil, ((xl, bl, gl), (xr, br, gr)), column_left);
             (piece.0, piece.1, 0.5 * (gl + gr))

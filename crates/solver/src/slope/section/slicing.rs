@@ -6,7 +6,8 @@
 //! The lines are read once per side: the column over a side serves the slices on both of it.
 
 use super::column::{
-    column, ground, pore_pressure, side_water, soil_at, water, water_from_line_alone, Levels,
+    column, ground, pore_pressure, side_water, soil_at, water, water_from_line_alone, InnerPoints,
+    Levels,
 };
 use super::plain::PlainSoil;
 use super::Section;
@@ -38,6 +39,8 @@ struct Scratch {
     tan_phi: Vec<f64>,
     /// [`water_from_line_alone`] of the section being cut.
     line_water: bool,
+    /// The cut's bends inside the slice at hand.
+    inner: InnerPoints,
 }
 
 /// The level of still water standing over the whole top of the mass between a and b, when it
@@ -164,6 +167,7 @@ fn slice_with(
         ponded: Vec::with_capacity(count),
     };
     s.cursor = 0;
+    s.inner = InnerPoints::default();
     s.left.read_from(section, xs[0], &mut s.cursor);
     let mut bl = base_at(0, xs[0], ground(s.left.values()));
     out.base_ys.push(bl);
@@ -267,9 +271,7 @@ fn slice(
     let width = xr - xl;
     let (xm, bm) = (0.5 * (xl + xr), 0.5 * (bl + br));
     let ponded = section.piezometric_line.is_some() && section.is_ponded_over(xl, xr);
-    let first = points.partition_point(|&p| p <= xl);
-    let last = points.partition_point(|&p| p < xr);
-    let inner = &points[first..last.max(first)];
+    let inner = s.inner.within(points, (xl, xr));
     let (mut weight, mut moment) = (0.0, 0.0);
     let mut water_force = (0.0, 0.0, 0.0);
     let mut add = |piece: Piece| {
