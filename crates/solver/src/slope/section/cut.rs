@@ -523,20 +523,16 @@ fn loads(
             }
         }
     }
-    let carrying = |t: &(f64, f64, f64)| *t != (0.0, 0.0, 0.0);
-    let mut out = Vec::with_capacity(totals.iter().filter(|t| carrying(t)).count());
-    out.extend(
-        totals
-            .into_iter()
-            .enumerate()
-            .filter(|(_, t)| carrying(t))
-            .map(|(slice, (fx, fy, moment))| ExternalLoad {
-                slice,
-                fx,
-                fy,
-                moment,
-                passive: false,
-            }),
-    );
-    out
+    totals
+        .into_iter()
+        .enumerate()
+        .filter(|(_, t)| *t != (0.0, 0.0, 0.0))
+        .map(|(slice, (fx, fy, moment))| ExternalLoad {
+            slice,
+            fx,
+            fy,
+            moment,
+            passive: false,
+        })
+        .collect()
 }
