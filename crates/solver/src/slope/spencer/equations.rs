@@ -4,7 +4,7 @@
 use super::kernel::{resultant, Kernel, Lane, Sums};
 use super::scan::Scan;
 use crate::numerics::brent;
-use crate::slope::slices::SliceModel;
+use crate::slope::slices::{BaseSlice, SliceModel};
 
 /// The relative Newton step after which a root started from a neighbour's F is taken (see
 /// [`Equations::f_at_theta_from`]).
@@ -29,6 +29,35 @@ pub(super) struct SliceTerms {
     pub arm: (f64, f64),
     /// Moment of the known forces about the base middle.
     pub moment: f64,
+}
+
+impl SliceTerms {
+    /// One slice's constants before the known loads (`model.loads`) are added to them.
+    #[inline]
+    pub fn unloaded(model: &SliceModel, s: &BaseSlice) -> Self {
+        let weight = s.weight;
+        let tan_phi = s.tan_phi;
+        let (sin_a, cos_a) = s.base_sin_cos;
+        let fx = -model.seismic.kh * weight;
+        let fy = -(1.0 + model.seismic.kv) * weight;
+        let pore_force = s.pore_pressure * s.base_length;
+        let a_n = fx * sin_a - fy * cos_a;
+        SliceTerms {
+            sin_alpha: sin_a,
+            cos_alpha: cos_a,
+            a_t: -fx * cos_a - fy * sin_a,
+            a_n,
+            pore_force,
+            resistance: s.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
+            tan_phi,
+            arm: (
+                s.base_middle.0 - model.reference.0,
+                s.base_middle.1 - model.reference.1,
+            ),
+            // Horizontal seismic force at the centroid height: r × F = −dy·F_x.
+            moment: -(s.centroid_y - s.base_middle.1) * fx,
+        }
+    }
 }
 
 /// Value and derivatives of the two scaled residuals.
@@ -86,29 +115,8 @@ impl Equations {
             .slices
             .iter()
             .map(|s| {
-                let weight = s.weight;
-                total_weight += weight;
-                let tan_phi = s.tan_phi;
-                let (sin_a, cos_a) = s.base_sin_cos;
-                let fx = -model.seismic.kh * weight;
-                let fy = -(1.0 + model.seismic.kv) * weight;
-                let pore_force = s.pore_pressure * s.base_length;
-                let a_n = fx * sin_a - fy * cos_a;
-                SliceTerms {
-                    sin_alpha: sin_a,
-                    cos_alpha: cos_a,
-                    a_t: -fx * cos_a - fy * sin_a,
-                    a_n,
-                    pore_force,
-                    resistance: s.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
-                    tan_phi,
-                    arm: (
-                        s.base_middle.0 - model.reference.0,
-                        s.base_middle.1 - model.reference.1,
-                    ),
-                    // Horizontal seismic force at the centroid height: r × F = −dy·F_x.
-                    moment: -(s.centroid_y - s.base_middle.1) * fx,
-                }
+                total_weight += s.weight;
+                SliceTerms::unloaded(model, s)
             })
             .collect();
         for load in &model.loads {

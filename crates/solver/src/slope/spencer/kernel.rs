@@ -350,7 +350,10 @@ mod tests {
             let kernel = Kernel::new(lanes.iter().copied());
             let expected = one_by_one(&lanes, 1.2, 0.3, 0.0).min_m_alpha;
             assert!(expected.is_finite());
-            assert_eq!(kernel.sums(1.2, 0.3f64.sin_cos(), 0.0).min_m_alpha, expected);
+            assert_eq!(
+                kernel.sums(1.2, 0.3f64.sin_cos(), 0.0).min_m_alpha,
+                expected
+            );
             assert_eq!(kernel.one(1.2, 0.3f64.sin_cos(), None)[2], expected);
         }
     }

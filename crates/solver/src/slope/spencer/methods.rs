@@ -95,7 +95,7 @@ fn ordinary_factor(model: &SliceModel) -> MethodFactor {
         return MethodFactor::plain(None);
     };
     let equations = Equations::new(&model.about(centre));
-    let (driving, _) = ordinary_moments(&equations.terms);
+    let (driving, _) = ordinary_moments(equations.terms.iter().copied());
     let resisting: f64 = equations
         .terms
         .iter()
@@ -107,7 +107,7 @@ fn ordinary_factor(model: &SliceModel) -> MethodFactor {
 
 /// The moment of the known forces about the reference (negative: towards the toe), with the
 /// known normal force on each base, and the sum of the terms' sizes (for rounding).
-fn ordinary_moments(terms: &[SliceTerms]) -> (f64, f64) {
+pub(super) fn ordinary_moments(terms: impl IntoIterator<Item = SliceTerms>) -> (f64, f64) {
     let (mut driving, mut size) = (0.0, 0.0);
     for t in terms {
         let (s, c) = (t.sin_alpha, t.cos_alpha);
@@ -125,7 +125,26 @@ fn ordinary_moments(terms: &[SliceTerms]) -> (f64, f64) {
 /// Whether the known forces drive the mass towards the toe about the reference (a circle's
 /// centre): a moment beyond rounding (1e-12 of its terms' sizes).
 pub(super) fn drives(terms: &[SliceTerms]) -> bool {
-    let (driving, size) = ordinary_moments(terms);
+    is_driving(ordinary_moments(terms.iter().copied()))
+}
+
+/// [`drives`] of `model`'s slice terms, the known loads added ([`Equations::slice_terms`]).
+pub(super) fn model_drives(model: &SliceModel) -> bool {
+    is_driving(model_moments(model))
+}
+
+/// [`ordinary_moments`] of `model`'s slice terms, bit for bit; without known loads each
+/// slice's terms are made and summed as they come, with no vector of them.
+pub(super) fn model_moments(model: &SliceModel) -> (f64, f64) {
+    if model.loads.is_empty() {
+        ordinary_moments(model.slices.iter().map(|s| SliceTerms::unloaded(model, s)))
+    } else {
+        ordinary_moments(Equations::slice_terms(model).0)
+    }
+}
+
+/// A driving moment beyond rounding (1e-12 of its terms' sizes).
+fn is_driving((driving, size): (f64, f64)) -> bool {
     driving < -1e-12 * size
 }
 

@@ -182,7 +182,7 @@ fn linear_factor_outcome(
 /// known forces' moment about its centre (a lens of level ground symmetric about the centre's
 /// vertical has none, and nothing to hold).
 pub fn drives_towards_toe(model: &SliceModel) -> bool {
-    !model.circular || methods::drives(&Equations::slice_terms(model).0)
+    !model.circular || methods::model_drives(model)
 }
 
 /// Bishop's F as reported: a moment equation about the centre of rotation, meaningless without

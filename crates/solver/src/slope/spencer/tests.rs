@@ -373,3 +373,50 @@ fn bounded_scan_finds_the_full_scans_crossing_bit_for_bit() {
     // The bounds settle most stretches: far fewer samples than 49 a scan.
     assert!(samples < cases * 20, "{samples} samples for {cases} scans");
 }
+
+#[test]
+fn what_drives_a_mass_is_summed_without_the_vector_of_terms_bit_for_bit() {
+    // The check made while placing a search's surfaces, against the same sums over the
+    // equations' slice terms: the same two numbers to the bit, with and without seismic
+    // coefficients, and with known loads (which take the vector's path).
+    let loads = vec![
+        ExternalLoad {
+            slice: 3,
+            fx: 12.5,
+            fy: -40.0,
+            moment: 2.0,
+            passive: false,
+        },
+        ExternalLoad {
+            slice: 3,
+            fx: -1.0,
+            fy: -3.0,
+            moment: 0.0,
+            passive: true,
+        },
+    ];
+    for (n, seismic, loads) in [
+        (7, Seismic::default(), Vec::new()),
+        (50, Seismic::default(), Vec::new()),
+        (50, Seismic::new(0.15, -0.05).unwrap(), Vec::new()),
+        (20, Seismic::new(0.1, 0.0).unwrap(), loads),
+    ] {
+        let p = spencer_example(n, 10.0, 1.0);
+        let p = SlopeProblem::new(
+            spencer_1967::embankment(),
+            spencer_1967::circle(),
+            NonZeroUsize::new(n).unwrap(),
+            p.soil,
+            seismic,
+            loads,
+        )
+        .unwrap();
+        let model = p.model();
+        let (driving, size) = methods::model_moments(&model);
+        let (expected_driving, expected_size) =
+            methods::ordinary_moments(equations::Equations::slice_terms(&model).0);
+        assert_eq!(driving.to_bits(), expected_driving.to_bits(), "n = {n}");
+        assert_eq!(size.to_bits(), expected_size.to_bits(), "n = {n}");
+        assert!(driving < 0.0 && methods::model_drives(&model));
+    }
+}
