@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
-# loads the page from a running release server; the page solves its nine examples on load
+# loads the page from a running server; the page solves its nine examples on load
 # (Milankovitch's dead load, a live load, the minimum thickness, a bridge with fill, passive
 # restraint and rolling axles, Spencer's circle, the critical circle, a probabilistic study, a
 # layered section). The
 # test reads the rendered DOM for the numbers and the nine drawings, and keeps a screenshot in
 # target/ci-artifacts/page.png.
-# Usage: .ci/browser.sh   (builds the release binary if needed)
+# Usage: .ci/browser.sh   (builds the release binary if needed; THRUSTLINE_BIN=path serves that
+# binary instead, as .ci/run does with the build its tests share)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,9 +17,13 @@ if ! command -v chromium > /dev/null 2>&1; then
     apt-get update -q > /dev/null
     apt-get install -y -q chromium > /dev/null
 fi
-cargo build --release --locked --bin thrustline
+bin="${THRUSTLINE_BIN:-}"
+if [ -z "$bin" ]; then
+    cargo build --release --locked --bin thrustline
+    bin=./target/release/thrustline
+fi
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-./target/release/thrustline serve --addr "127.0.0.1:$port" > /dev/null 2>&1 &
+"$bin" serve --addr "127.0.0.1:$port" > /dev/null 2>&1 &
 server=$!
 profile=$(mktemp -d)
 trap 'kill "$server" 2>/dev/null || true; rm -rf "$profile"' EXIT
