@@ -2,8 +2,8 @@
 # Browser test of the page at /: headless Chromium (Debian's package, installed here if missing)
 # loads the page from a running server; the page solves its nine examples on load
 # (Milankovitch's dead load, a live load, the minimum thickness, a bridge with fill, passive
-# restraint and rolling axles, Spencer's circle, the critical circle, a probabilistic study, a
-# layered section). The
+# restraint and rolling axles, a bridge by profile with backing, a vehicle and ring mortar,
+# Spencer's circle, the critical circle, a probabilistic study, a layered section). The
 # test reads the rendered DOM for the numbers and the nine drawings, and keeps a screenshot in
 # target/ci-artifacts/page.png.
 # Usage: .ci/browser.sh   (builds the release binary if needed; THRUSTLINE_BIN=path serves that

@@ -473,3 +473,28 @@ fn the_runner_reads_what_a_page_shows() {
         ]
     );
 }
+
+#[test]
+fn the_readme_counts_the_pages_examples() {
+    // The README said "eight examples" after the page had grown a ninth.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let page = std::fs::read_to_string(root.join("src/page.html")).unwrap();
+    let panels = page.matches(" title: \"").count();
+    let words = [
+        "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven",
+        "twelve",
+    ];
+    let said = readme
+        .split("solves and draws ")
+        .nth(1)
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|word| words.iter().position(|w| *w == word))
+        .map(|i| i + 1);
+    assert!(panels >= 9, "{panels} panels found in the page");
+    assert_eq!(
+        said,
+        Some(panels),
+        "the README's count of the page's examples"
+    );
+}
