@@ -2,9 +2,14 @@
 running thrustline servers, compared number for number. Wall times are left out; every other
 number must agree within --rtol (default 0: bit for bit, as JSON prints it).
 
-Usage: python3 bench/golden.py OLD_URL NEW_URL [--rtol 1e-12]
-Prints one line per request and exits 1 on any difference.
+Usage: python3 bench/golden.py OLD_URL NEW_URL [--rtol 1e-12] [--report]
+Prints one line per request and exits 1 on any difference. With --report it measures the
+differences instead: for each field (list indices left out: every slice's `force` is one field),
+the largest |old - new| over the largest |value| of that field in the answer, field by field
+across all requests, largest first (a change at rounding shows ~1e-16..1e-14 on well-conditioned
+fields; a difference of two close numbers, or a quotient by a force near zero, shows more).
 """
+import re
 import json, math, sys, urllib.error, urllib.request
 
 TIMES = {"solve_time_ms", "time_ms", "time_per_position_ms", "first_position_ms", "path_ms"}
@@ -114,8 +119,49 @@ def differences(a, b, rtol, where=""):
     return [] if a == b else [f"{where}: {a!r} vs {b!r}"]
 
 
+def fields(value, where="", out=None):
+    """Every number in an answer, by field (list indices left out)."""
+    out = {} if out is None else out
+    if isinstance(value, dict):
+        for k, v in value.items():
+            if k not in TIMES:
+                fields(v, f"{where}.{k}", out)
+    elif isinstance(value, list):
+        for v in value:
+            fields(v, f"{where}[]", out)
+    elif isinstance(value, float) and math.isfinite(value):
+        out.setdefault(where, []).append(value)
+    return out
+
+
+def report(old, new):
+    """The largest difference of each field relative to its largest value, over all requests."""
+    worst = {}
+    for path, body in REQUESTS:
+        (sa, a), (sb, b) = post(old, path, body), post(new, path, body)
+        if sa != sb:
+            print(f"status {sa} vs {sb}: {path} {json.dumps(body)[:70]}")
+            continue
+        fa, fb = fields(json.loads(a)), fields(json.loads(b))
+        for name in fa.keys() & fb.keys():
+            xs, ys = fa[name], fb[name]
+            if len(xs) != len(ys):
+                print(f"{name}: {len(xs)} vs {len(ys)} values: {path}")
+                continue
+            scale = max(abs(v) for v in xs + ys)
+            diff = max(abs(x - y) for x, y in zip(xs, ys))
+            if scale > 0:
+                field = re.sub(r"^\.", "", name)
+                worst[field] = max(worst.get(field, 0.0), diff / scale)
+    for field, rel in sorted(worst.items(), key=lambda kv: -kv[1]):
+        print(f"{rel:9.1e}  {field}")
+
+
 def main():
     old, new = sys.argv[1], sys.argv[2]
+    if "--report" in sys.argv:
+        report(old, new)
+        return
     rtol = float(sys.argv[sys.argv.index("--rtol") + 1]) if "--rtol" in sys.argv else 0.0
     failed = 0
     for path, body in REQUESTS:

@@ -35,7 +35,7 @@ fn sign_of(value: f64) -> Sign {
 }
 
 /// The residual of one equation at fixed θ, term by term, over the sample grid: the residual
-/// at F is (constant + Σ terms(F)) / scale, the terms summed in order.
+/// at F is (constant + Σ terms(F)) / scale, the terms summed as the kernel sums them.
 pub(super) struct Scan<T: FnMut(f64, &mut Vec<f64>)> {
     terms_at: T,
     constant: f64,
@@ -84,11 +84,10 @@ impl<T: FnMut(f64, &mut Vec<f64>)> Scan<T> {
         self.terms[i].as_deref().unwrap_or(&[])
     }
 
-    /// The residual at sample i.
+    /// The residual at sample i, summed as the kernel sums it.
     pub fn value(&mut self, i: usize) -> f64 {
         let constant = self.constant;
-        let sum = self.terms(i).iter().fold(constant, |s, &t| s + t);
-        sum / self.scale
+        super::kernel::sum_as_lanes(constant, self.terms(i)) / self.scale
     }
 
     /// The signs of samples i..=j when the bounds settle them, `None` when they do not.

@@ -420,3 +420,67 @@ fn what_drives_a_mass_is_summed_without_the_vector_of_terms_bit_for_bit() {
         assert!(driving < 0.0 && methods::model_drives(&model));
     }
 }
+
+#[test]
+fn a_neighbours_start_finds_the_same_roots_and_reports_bishop_settled() {
+    // A 76° face 10 high (c' = 20, φ' = 30°; tests/http_honest.rs): near its critical circle
+    // many circles have no Spencer root, and whether one has can turn on rounding. Over a field
+    // of circles through the toe, started as in a search from a neighbour's F 3 % away
+    // (Bishop's F, Spencer's start, settled from there) and without one: the same root to
+    // rounding where there is one, and where there is none the same Bishop F, as reported.
+    // (With Bishop's F settled only to a relative step of 1e-3, ~2e-7 from it, the search of
+    // that test chose a circle on which Spencer's equations, solved alone, have no root.)
+    let settings = SpencerSettings::default();
+    let (mut solved, mut unsolved) = (0, 0);
+    for i in 0..12 {
+        for j in 0..12 {
+            let Ok(problem) = SlopeProblem::new(
+                Embankment::new(10.0, 2.5).unwrap(),
+                SlipCircle {
+                    x: -8.0 + 1.5 * f64::from(i),
+                    y: 4.0 + 2.0 * f64::from(j),
+                    lower_end_factor: 0.0,
+                },
+                NonZeroUsize::new(50).unwrap(),
+                Soil::new(20.0, 20.0, 30.0, 0.0).unwrap(),
+                Seismic::default(),
+                Vec::new(),
+            ) else {
+                continue;
+            };
+            let equations = Equations::new(&problem.model());
+            let alone = newton::solve_equations(&equations, &settings, None);
+            let Some(bishop) = alone.bishop else {
+                continue;
+            };
+            for near in [1.03 * bishop, 0.97 * bishop] {
+                let started = newton::solve_equations(&equations, &settings, Some(near));
+                match (alone.root, started.root) {
+                    (Some((f, theta)), Some((f_near, theta_near))) => {
+                        assert!(
+                            (f_near - f).abs() <= 1e-13 * f
+                                && (theta_near - theta).abs() <= 1e-11,
+                            "({i}, {j}): ({f}, {theta}) alone, ({f_near}, {theta_near}) from {near}"
+                        );
+                        solved += 1;
+                    }
+                    (None, None) => {
+                        let reported = started.bishop.unwrap();
+                        assert!(
+                            (reported - bishop).abs() <= 1e-14 * bishop,
+                            "({i}, {j}): Bishop {bishop} alone, {reported} from {near}"
+                        );
+                        unsolved += 1;
+                    }
+                    (alone, started) => {
+                        panic!("({i}, {j}): {alone:?} alone, {started:?} from {near}")
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        solved > 100 && unsolved >= 6,
+        "{solved} solved, {unsolved} unsolved"
+    );
+}
