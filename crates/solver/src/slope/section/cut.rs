@@ -8,6 +8,8 @@
 
 use std::num::NonZeroUsize;
 
+use smallvec::SmallVec;
+
 use super::polyline::Polyline;
 use super::slicing::{slice_all, still_water_level, Slicing};
 use super::{Section, SlipShape};
@@ -54,7 +56,12 @@ fn shape_crossings(shape: &SlipShape, line: &Polyline, a: f64, b: f64) -> Vec<f6
 }
 
 /// [`shape_crossings`] added to `xs`.
-fn add_shape_crossings(shape: &SlipShape, line: &Polyline, (a, b): (f64, f64), xs: &mut Vec<f64>) {
+fn add_shape_crossings(
+    shape: &SlipShape,
+    line: &Polyline,
+    (a, b): (f64, f64),
+    xs: &mut impl Extend<f64>,
+) {
     match shape {
         SlipShape::Circle { centre, radius } => xs.extend(
             line.circle_crossings(*centre, *radius, a, b)
@@ -374,8 +381,8 @@ fn crack_at(
 
 /// Sorted x in (a, b) closer than `tolerance` merged, with a and b at the ends. (Values equal
 /// under `total_cmp` are the same bits: the order they come in does not matter.)
-fn sorted_between(mut cuts: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
-    cuts.retain(|&x| x > a + tolerance && x < b - tolerance);
+fn sorted_between(mut cuts: Sides, a: f64, b: f64, tolerance: f64) -> Sides {
+    cuts.retain(|x| *x > a + tolerance && *x < b - tolerance);
     cuts.extend([a, b]);
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|next, kept| *next - *kept <= tolerance);
@@ -385,11 +392,15 @@ fn sorted_between(mut cuts: Vec<f64>, a: f64, b: f64, tolerance: f64) -> Vec<f64
     cuts
 }
 
+/// Places along a cut where slice sides must fall: a few for a circle through a simple
+/// section, kept on the stack (a search cuts thousands of surfaces).
+type Sides = SmallVec<[f64; 16]>;
+
 /// Where a slice side must fall, so that each base is straight, in one soil and on one side of
 /// each water line: the surface's vertices, its crossings with layer tops, bedrock and the
 /// piezometric lines (the section's and the layers' own), and the bedrock's kinks and crossings
 /// where the base follows it.
-fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f64) -> Sides {
     let tops = section.layers.iter().filter_map(|l| l.top.as_ref());
     let own = section
         .layers
@@ -402,8 +413,7 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
             .chain(section.other_water_line.as_ref())
             .chain(own.clone())
     };
-    // Room for two crossings a line and the ends: no growing for a circle.
-    let mut xs: Vec<f64> = Vec::with_capacity(2 * section.layers.len() + 8);
+    let mut xs = Sides::new();
     if let SlipShape::Polyline(line) = shape {
         xs.extend(line.xs());
     }
@@ -426,13 +436,11 @@ fn base_cuts(section: &Section, shape: &SlipShape, a: f64, b: f64, tolerance: f6
 }
 
 /// The bends of the section within (a, b), with a and b at the ends.
-fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Vec<f64> {
+fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Sides {
     let first = section.bends.partition_point(|&x| x <= a + tolerance);
     let last = section.bends.partition_point(|&x| x < b - tolerance);
     let inner = &section.bends[first..last.max(first)];
-    let mut xs = Vec::with_capacity(inner.len() + 2);
-    xs.extend_from_slice(inner);
-    sorted_between(xs, a, b, tolerance)
+    sorted_between(Sides::from_slice(inner), a, b, tolerance)
 }
 
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
@@ -441,7 +449,7 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
     let span = cuts[cuts.len() - 1] - cuts[0];
     let width = span / n as f64;
     let length = |i: usize| cuts[i + 1] - cuts[i];
-    let mut counts: Vec<usize> = (0..cuts.len() - 1)
+    let mut counts: SmallVec<[usize; 16]> = (0..cuts.len() - 1)
         .map(|i| ((length(i) / width).floor() as usize).max(1))
         .collect();
     let mut total: usize = counts.iter().sum();

@@ -1,5 +1,7 @@
 //! Where a slip surface enters and leaves the ground (model §4.2).
 
+use smallvec::{smallvec, SmallVec};
+
 use super::polyline::Polyline;
 use super::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
@@ -10,26 +12,26 @@ const ON_GROUND: f64 = 1e-9;
 /// Relative distance of a crossing from a ground vertex that is rounding.
 const VERTEX_ROUNDING: f64 = 1e-12;
 
+/// Entry and exit of each mass a surface cuts out of the ground: a few, on the stack (a search
+/// asks at every circle).
+pub(super) type Pieces = SmallVec<[(f64, f64); 4]>;
+
 /// The x of entry and exit (entry < exit) of the masses `shape` may cut out of `ground`, the
 /// deepest first (a polyline cuts one).
-pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<Vec<(f64, f64)>, SlopeError> {
+pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<Pieces, SlopeError> {
     match shape {
         SlipShape::Circle { centre, radius } => circle_ends(ground, *centre, *radius),
-        SlipShape::Polyline(line) => polyline_ends(ground, line).map(|e| vec![e]),
+        SlipShape::Polyline(line) => polyline_ends(ground, line).map(|e| smallvec![e]),
     }
 }
 
 /// The pairs of the arc's crossings of the ground that bound a part of it below the ground, the
 /// deepest part first (the deepest two reaching equally deep is ambiguous: an error).
-fn circle_ends(
-    ground: &Polyline,
-    centre: (f64, f64),
-    radius: f64,
-) -> Result<Vec<(f64, f64)>, SlopeError> {
+fn circle_ends(ground: &Polyline, centre: (f64, f64), radius: f64) -> Result<Pieces, SlopeError> {
     let (xc, yc) = centre;
     let (left, right) = (xc - radius, xc + radius);
     let arc = |x: f64| yc - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
-    let mut cuts: Vec<f64> = std::iter::once(left)
+    let mut cuts: SmallVec<[f64; 10]> = std::iter::once(left)
         .chain(
             ground
                 .circle_crossings(centre, radius, left, right)
@@ -60,7 +62,7 @@ fn circle_ends(
                 .fold(f64::NEG_INFINITY, f64::max);
             (a, b, deepest)
         })
-        .collect::<Vec<_>>();
+        .collect::<SmallVec<[_; 4]>>();
     let deepest_depth = deepest
         .iter()
         .map(|p| p.2)

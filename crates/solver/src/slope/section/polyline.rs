@@ -1,6 +1,10 @@
 //! Polylines of a cross-section (ground, layer tops, bedrock, water line, slip surfaces): points
 //! with strictly increasing x, continued horizontally beyond their ends.
 
+/// A circle's crossings of a line, (x, whether the line lies at or below the centre there):
+/// a handful, kept on the stack (a search asks for them at every circle).
+pub type Crossings = smallvec::SmallVec<[(f64, bool); 8]>;
+
 /// A polyline with strictly increasing x and at least one point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Polyline {
@@ -220,9 +224,9 @@ impl Polyline {
         radius: f64,
         x_min: f64,
         x_max: f64,
-    ) -> Vec<(f64, bool)> {
+    ) -> Crossings {
         let (xc, yc) = centre;
-        let mut found = Vec::new();
+        let mut found = Crossings::new();
         for (x0, x1, m, k) in self.pieces(x_min, x_max) {
             // (x − xc)² + (m x + k − yc)² = R²  →  a x² + b x + c = 0
             let d = k - yc;
