@@ -255,7 +255,7 @@ impl Cut {
         };
         let Slicing {
             slices,
-            base_ys,
+            mut surface,
             ponded,
         } = slice_all(
             section,
@@ -265,8 +265,6 @@ impl Cut {
             (tolerance, still_water_level(section, xa, xb)),
         );
         let mut loads = loads(section, &slices, ponded, crack);
-        let mut surface: Vec<(f64, f64)> = Vec::with_capacity(boundaries.len() + 1);
-        surface.extend(boundaries.iter().copied().zip(base_ys.iter().copied()));
         // Supports cross the bases only: the crack carries no force but its water.
         let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
         let (supports, support_loads) =

@@ -57,24 +57,24 @@ impl PlainSoil {
 }
 
 /// The slices between the sides `xs` (the base at side i from `base_at(i, x, g)`, the ground
-/// at x being g; `points`, the ground's bends within the cut, sorted) and the base's height at
-/// each side.
+/// at x being g; `points`, the ground's bends within the cut, sorted) and the base's end point
+/// at each side (with room for one more).
 pub(super) fn slices(
     section: &Section,
     soil: PlainSoil,
     xs: &[f64],
     base_at: impl Fn(usize, f64, f64) -> f64,
     points: &[f64],
-) -> (Vec<BaseSlice>, Vec<f64>) {
+) -> (Vec<BaseSlice>, Vec<(f64, f64)>) {
     let table = &section.levels;
     let mut cursor = 0;
     let mut inner_points = column::InnerPoints::default();
     let count = xs.len().saturating_sub(1);
     let mut slices = Vec::with_capacity(count);
-    let mut base_ys = Vec::with_capacity(xs.len());
+    let mut surface = Vec::with_capacity(xs.len() + 1);
     let mut gl = table.ground_at(xs[0], &mut cursor);
     let mut bl = base_at(0, xs[0], gl);
-    base_ys.push(bl);
+    surface.push((xs[0], bl));
     let mut column_left = soil.column(gl, bl);
     for i in 0..count {
         let (xl, xr) = (xs[i], xs[i + 1]);
@@ -108,10 +108,10 @@ pub(super) fn slices(
             ((xl, bl), (xr, br), (gm, gr)),
             (weight, moment),
         ));
-        base_ys.push(br);
+        surface.push((xr, br));
         (gl, bl, column_left) = (gr, br, column_right);
     }
-    (slices, base_ys)
+    (slices, surface)
 }
 
 /// One straight piece from (x_a, y_a) to (x_b, y_b) on the base, the ground over its ends

@@ -17,8 +17,8 @@ use crate::slope::strength::Strength;
 /// The slices of one cut.
 pub(super) struct Slicing {
     pub slices: Vec<BaseSlice>,
-    /// The base's height at each side.
-    pub base_ys: Vec<f64>,
+    /// The base's end points (x, y) at each side, with room for one more (a crack's top).
+    pub surface: Vec<(f64, f64)>,
     /// Per slice, the ponded water's force on its top: (f_x, f_y, moment about the base
     /// middle); empty when no water can stand on any (a plain section).
     pub ponded: Vec<(f64, f64, f64)>,
@@ -117,10 +117,10 @@ pub(super) fn slice_all(
     (tolerance, still): (f64, Option<f64>),
 ) -> Slicing {
     if let (Some(soil), None) = (PlainSoil::of(section), still) {
-        let (slices, base_ys) = super::plain::slices(section, soil, xs, base_at, points);
+        let (slices, surface) = super::plain::slices(section, soil, xs, base_at, points);
         return Slicing {
             slices,
-            base_ys,
+            surface,
             ponded: Vec::new(),
         };
     }
@@ -163,14 +163,14 @@ fn slice_with(
     let count = xs.len().saturating_sub(1);
     let mut out = Slicing {
         slices: Vec::with_capacity(count),
-        base_ys: Vec::with_capacity(xs.len()),
+        surface: Vec::with_capacity(xs.len() + 1),
         ponded: Vec::with_capacity(count),
     };
     s.cursor = 0;
     s.inner = InnerPoints::default();
     s.left.read_from(section, xs[0], &mut s.cursor);
     let mut bl = base_at(0, xs[0], ground(s.left.values()));
-    out.base_ys.push(bl);
+    out.surface.push((xs[0], bl));
     let mut column_left = column(section, s.left.values(), bl);
     for i in 0..count {
         let (xl, xr) = (xs[i], xs[i + 1]);
@@ -185,7 +185,7 @@ fn slice_with(
             s,
         );
         out.slices.push(slice);
-        out.base_ys.push(br);
+        out.surface.push((xr, br));
         out.ponded.push(ponded);
         std::mem::swap(&mut s.left, &mut s.right);
         (bl, column_left) = (br, column_right);
@@ -439,9 +439,9 @@ mod tests {
                         (1e-9, None),
                         &mut Scratch::default(),
                     );
-                    let (slices, base_ys) = plain::slices(section, soil, &xs, base_at, &points);
+                    let (slices, surface) = plain::slices(section, soil, &xs, base_at, &points);
                     assert_eq!(slices, general.slices);
-                    assert_eq!(base_ys, general.base_ys);
+                    assert_eq!(surface, general.surface);
                     assert!(general.ponded.iter().all(|&p| p == (0.0, 0.0, 0.0)));
                     let sliced = slice_all(section, &xs, base_at, &points, (1e-9, None));
                     assert_eq!(sliced.slices, general.slices);
