@@ -1,6 +1,8 @@
 //! Spencer's two equations for one slip surface, their derivatives in (F, θ), and F from either
 //! equation alone at a fixed θ (model §2.2; the equations are written out in [`super`]).
 
+use std::cell::Cell;
+
 use super::kernel::{resultant, Kernel, Lane, Sums};
 use super::scan::Scan;
 use crate::numerics::brent;
@@ -85,6 +87,18 @@ pub(super) struct Equations {
     kernel: Kernel,
 }
 
+thread_local! {
+    /// The terms of the last equations dropped on this thread, for the next ones to fill: a
+    /// search builds thousands one after the other.
+    static SPARE_TERMS: Cell<Vec<SliceTerms>> = const { Cell::new(Vec::new()) };
+}
+
+impl Drop for Equations {
+    fn drop(&mut self) {
+        SPARE_TERMS.set(std::mem::take(&mut self.terms));
+    }
+}
+
 impl Equations {
     pub fn new(model: &SliceModel) -> Self {
         let (terms, total_weight) = Self::slice_terms(model);
@@ -111,14 +125,12 @@ impl Equations {
     /// equations are built from (and all that whether anything drives the mass needs).
     pub fn slice_terms(model: &SliceModel) -> (Vec<SliceTerms>, f64) {
         let mut total_weight = 0.0;
-        let mut terms: Vec<SliceTerms> = model
-            .slices
-            .iter()
-            .map(|s| {
-                total_weight += s.weight;
-                SliceTerms::unloaded(model, s)
-            })
-            .collect();
+        let mut terms = SPARE_TERMS.take();
+        terms.clear();
+        terms.extend(model.slices.iter().map(|s| {
+            total_weight += s.weight;
+            SliceTerms::unloaded(model, s)
+        }));
         for load in &model.loads {
             let t = &mut terms[load.slice];
             let (sin_a, cos_a) = (t.sin_alpha, t.cos_alpha);

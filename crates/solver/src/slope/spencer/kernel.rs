@@ -13,6 +13,8 @@
 //! of the tests; against one sum slice after slice they differ at rounding (a few units in the
 //! last place of the sums).
 
+use std::cell::Cell;
+
 /// Slices per block.
 const LANES: usize = 4;
 
@@ -110,17 +112,31 @@ pub(super) struct Kernel {
     arch: pulp::Arch,
 }
 
+thread_local! {
+    /// The blocks of the last kernel dropped on this thread, for the next one to fill: a search
+    /// builds thousands of kernels one after the other.
+    static SPARE_BLOCKS: Cell<Vec<Block>> = const { Cell::new(Vec::new()) };
+}
+
+impl Drop for Kernel {
+    fn drop(&mut self) {
+        SPARE_BLOCKS.set(std::mem::take(&mut self.blocks));
+    }
+}
+
 impl Kernel {
     pub fn new(lanes: impl ExactSizeIterator<Item = Lane>) -> Self {
         let slices = lanes.len();
-        let mut blocks = vec![
+        let mut blocks = SPARE_BLOCKS.take();
+        blocks.clear();
+        blocks.resize(
+            slices.div_ceil(LANES),
             Block {
                 // Padding: m_α = 1, Q = 0.
                 cos_alpha: [1.0; LANES],
                 ..Block::default()
-            };
-            slices.div_ceil(LANES)
-        ];
+            },
+        );
         for (i, lane) in lanes.enumerate() {
             let (b, k) = (&mut blocks[i / LANES], i % LANES);
             b.sin_alpha[k] = lane.sin_alpha;
