@@ -264,6 +264,7 @@ impl Cut {
             &points,
             (tolerance, still_water_level(section, xa, xb)),
         );
+        SPARE_SIDES.set(boundaries);
         let mut loads = loads(section, &slices, ponded, crack);
         // Supports cross the bases only: the crack carries no force but its water.
         let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
@@ -441,6 +442,11 @@ fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Sides {
     sorted_between(Sides::from_slice(inner), a, b, tolerance)
 }
 
+thread_local! {
+    /// The last cut's slice sides, for the next cut on the thread ([`allocate`]).
+    static SPARE_SIDES: std::cell::Cell<Vec<f64>> = const { std::cell::Cell::new(Vec::new()) };
+}
+
 /// Slice sides: every cut, and between cuts slices of about the width (b − a)/n; at least one
 /// slice between two cuts, so there may be more than n.
 fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
@@ -460,7 +466,9 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
         counts[i] += 1;
         total += 1;
     }
-    let mut sides = Vec::with_capacity(total + 1);
+    let mut sides = SPARE_SIDES.take();
+    sides.clear();
+    sides.reserve(total + 1);
     for (w, &count) in cuts.windows(2).zip(&counts) {
         sides.extend((0..count).map(|k| w[0] + (w[1] - w[0]) * k as f64 / count as f64));
     }

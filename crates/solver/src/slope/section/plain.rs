@@ -70,8 +70,7 @@ pub(super) fn slices(
     let mut cursor = 0;
     let mut inner_points = column::InnerPoints::default();
     let count = xs.len().saturating_sub(1);
-    let mut slices = Vec::with_capacity(count);
-    let mut surface = Vec::with_capacity(xs.len() + 1);
+    let (mut slices, mut surface) = super::slicing::vectors(xs.len());
     let mut gl = table.ground_at(xs[0], &mut cursor);
     let mut bl = base_at(0, xs[0], gl);
     surface.push((xs[0], bl));

@@ -140,6 +140,29 @@ pub(super) fn slice_all(
 
 thread_local! {
     static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
+    /// A searched cut's slices and surface, given back once it is solved ([`give_back`]), for
+    /// the next cut on the thread to fill.
+    static SPARE: std::cell::Cell<CutVectors> =
+        const { std::cell::Cell::new((Vec::new(), Vec::new())) };
+}
+
+/// A cut's slices and its surface's end points.
+type CutVectors = (Vec<BaseSlice>, Vec<(f64, f64)>);
+
+/// Empty vectors for a cut's slices and surface, with room for `sides` sides (and a crack's
+/// top): the last ones given back on this thread, if any.
+pub(super) fn vectors(sides: usize) -> CutVectors {
+    let (mut slices, mut surface) = SPARE.take();
+    slices.clear();
+    surface.clear();
+    slices.reserve(sides.saturating_sub(1));
+    surface.reserve(sides + 1);
+    (slices, surface)
+}
+
+/// A cut's slices and surface, no longer needed, for the next cut on this thread.
+pub(super) fn give_back(slices: Vec<BaseSlice>, surface: Vec<(f64, f64)>) {
+    SPARE.set((slices, surface));
 }
 
 /// [`slice_all`] with its buffers given.
@@ -161,9 +184,10 @@ fn slice_with(
             .map(|l| l.soil.friction_angle_rad.tan()),
     );
     let count = xs.len().saturating_sub(1);
+    let (slices, surface) = vectors(xs.len());
     let mut out = Slicing {
-        slices: Vec::with_capacity(count),
-        surface: Vec::with_capacity(xs.len() + 1),
+        slices,
+        surface,
         ponded: Vec::with_capacity(count),
     };
     s.cursor = 0;

@@ -53,9 +53,11 @@ pub(super) fn trial(
     if cut.model.depth() < min_depth || excluded(&cut) {
         return Err(None);
     }
-    match spencer_factor_outcome_near(&cut.model, spencer, near) {
+    let outcome = match spencer_factor_outcome_near(&cut.model, spencer, near) {
         FactorOutcome::Solved(s) => Ok(s),
         FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
         FactorOutcome::Undriven => Err(None),
-    }
+    };
+    super::slicing::give_back(cut.model.slices, cut.surface);
+    outcome
 }
