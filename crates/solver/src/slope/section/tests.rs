@@ -541,3 +541,46 @@ fn side_water_under_a_water_line_is_hydrostatic() {
     }
     assert!(full_sides > 5);
 }
+
+#[test]
+fn a_searched_circle_answers_the_same_after_other_circles_on_its_thread() {
+    // A search's circles reuse the vectors the last circle on the thread gave back (slices,
+    // surface, slice sides, slice terms, kernel blocks). Whatever came before — nothing, a
+    // circle of many more slices, one on a layered section with water — a circle's F and θ
+    // are the same bits, and those of the same circle cut and solved as an analysis.
+    let parts = one_soil(
+        &[(-100.0, 0.0), (0.0, 0.0), (60.96, 30.48), (200.0, 30.48)],
+        10.0,
+        6.096,
+        40.0,
+    );
+    let section = Section::new(parts.clone()).unwrap();
+    let mirror = section.mirrored();
+    let layered = slope_over_layer(&[(-20.0, 3.0), (40.0, 1.0)], 2.0, 20.0);
+    let layered_mirror = layered.mirrored();
+    let settings = SpencerSettings::default();
+    let circle = |n: usize, on: (&Section, &Section), centre: (f64, f64), radius: f64| {
+        trial::circle_outcome(
+            on,
+            (centre, radius),
+            (NonZeroUsize::new(n).unwrap(), Seismic::default()),
+            (&settings, 0.0),
+            None,
+        )
+        .unwrap()
+    };
+    let centre = (9.63168, 63.76416);
+    let radius = 9.63168f64.hypot(63.76416);
+    let first = circle(50, (&section, &mirror), centre, radius);
+    let others = [
+        circle(400, (&section, &mirror), (20.0, 70.0), 72.0),
+        circle(60, (&layered, &layered_mirror), (12.0, 28.0), 26.0),
+        circle(7, (&section, &mirror), (15.0, 50.0), 52.0),
+    ];
+    assert!(others.iter().all(|o| o.factor_of_safety > 0.1));
+    let again = circle(50, (&section, &mirror), centre, radius);
+    assert_eq!(again, first);
+    let (_, analysis) = solve(parts, SlipShape::Circle { centre, radius }, 50);
+    assert_eq!(analysis.factor_of_safety, Some(first.factor_of_safety));
+    assert_eq!(analysis.theta_rad, first.theta_rad);
+}
