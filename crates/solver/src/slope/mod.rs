@@ -23,6 +23,7 @@ pub mod refinement;
 pub mod search;
 pub mod section;
 pub mod slices;
+mod spare;
 pub mod spencer;
 pub mod strength;
 

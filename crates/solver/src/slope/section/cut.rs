@@ -15,6 +15,7 @@ use super::slicing::{slice_all, still_water_level, Slicing};
 use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
+use crate::slope::spare;
 use crate::slope::spencer::{drives_towards_toe, ExternalLoad, Seismic};
 
 /// Relative distance below which two cuts are one.
@@ -264,7 +265,7 @@ impl Cut {
             &points,
             (tolerance, still_water_level(section, xa, xb)),
         );
-        SPARE_SIDES.set(boundaries);
+        spare::keep(&SPARE_SIDES, boundaries);
         let mut loads = loads(section, &slices, ponded, crack);
         // Supports cross the bases only: the crack carries no force but its water.
         let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
@@ -443,7 +444,7 @@ fn top_points(section: &Section, a: f64, b: f64, tolerance: f64) -> Sides {
 }
 
 thread_local! {
-    /// The last cut's slice sides, for the next cut on the thread ([`allocate`]).
+    /// The last cut's slice sides ([`spare`]).
     static SPARE_SIDES: std::cell::Cell<Vec<f64>> = const { std::cell::Cell::new(Vec::new()) };
 }
 
@@ -466,8 +467,7 @@ fn allocate(cuts: &[f64], n: usize) -> Vec<f64> {
         counts[i] += 1;
         total += 1;
     }
-    let mut sides = SPARE_SIDES.take();
-    sides.clear();
+    let mut sides = spare::take(&SPARE_SIDES);
     sides.reserve(total + 1);
     for (w, &count) in cuts.windows(2).zip(&counts) {
         sides.extend((0..count).map(|k| w[0] + (w[1] - w[0]) * k as f64 / count as f64));

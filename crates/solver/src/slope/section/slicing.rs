@@ -12,6 +12,7 @@ use super::column::{
 use super::plain::PlainSoil;
 use super::Section;
 use crate::slope::slices::BaseSlice;
+use crate::slope::spare;
 use crate::slope::strength::Strength;
 
 /// The slices of one cut.
@@ -140,29 +141,26 @@ pub(super) fn slice_all(
 
 thread_local! {
     static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
-    /// A searched cut's slices and surface, given back once it is solved ([`give_back`]), for
-    /// the next cut on the thread to fill.
-    static SPARE: std::cell::Cell<CutVectors> =
-        const { std::cell::Cell::new((Vec::new(), Vec::new())) };
+    /// A searched cut's slices and surface, given back once it is solved ([`give_back`]).
+    static SPARE_SLICES: std::cell::Cell<Vec<BaseSlice>> =
+        const { std::cell::Cell::new(Vec::new()) };
+    static SPARE_SURFACE: std::cell::Cell<Vec<(f64, f64)>> =
+        const { std::cell::Cell::new(Vec::new()) };
 }
 
-/// A cut's slices and its surface's end points.
-type CutVectors = (Vec<BaseSlice>, Vec<(f64, f64)>);
-
 /// Empty vectors for a cut's slices and surface, with room for `sides` sides (and a crack's
-/// top): the last ones given back on this thread, if any.
-pub(super) fn vectors(sides: usize) -> CutVectors {
-    let (mut slices, mut surface) = SPARE.take();
-    slices.clear();
-    surface.clear();
+/// top): the thread's spares ([`spare`]).
+pub(super) fn vectors(sides: usize) -> (Vec<BaseSlice>, Vec<(f64, f64)>) {
+    let (mut slices, mut surface) = (spare::take(&SPARE_SLICES), spare::take(&SPARE_SURFACE));
     slices.reserve(sides.saturating_sub(1));
     surface.reserve(sides + 1);
     (slices, surface)
 }
 
-/// A cut's slices and surface, no longer needed, for the next cut on this thread.
+/// A cut's slices and surface, no longer needed, kept for the next cut on this thread.
 pub(super) fn give_back(slices: Vec<BaseSlice>, surface: Vec<(f64, f64)>) {
-    SPARE.set((slices, surface));
+    spare::keep(&SPARE_SLICES, slices);
+    spare::keep(&SPARE_SURFACE, surface);
 }
 
 /// [`slice_all`] with its buffers given.

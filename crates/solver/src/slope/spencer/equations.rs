@@ -7,6 +7,7 @@ use super::kernel::{resultant, Kernel, Lane, Sums};
 use super::scan::Scan;
 use crate::numerics::brent;
 use crate::slope::slices::{BaseSlice, SliceModel};
+use crate::slope::spare;
 
 /// The relative Newton step after which a root started from a neighbour's F is taken (see
 /// [`Equations::f_at_theta_from`]).
@@ -88,14 +89,13 @@ pub(super) struct Equations {
 }
 
 thread_local! {
-    /// The terms of the last equations dropped on this thread, for the next ones to fill: a
-    /// search builds thousands one after the other.
+    /// The terms of the last equations dropped on this thread ([`spare`]).
     static SPARE_TERMS: Cell<Vec<SliceTerms>> = const { Cell::new(Vec::new()) };
 }
 
 impl Drop for Equations {
     fn drop(&mut self) {
-        SPARE_TERMS.set(std::mem::take(&mut self.terms));
+        spare::keep(&SPARE_TERMS, std::mem::take(&mut self.terms));
     }
 }
 
@@ -125,8 +125,7 @@ impl Equations {
     /// equations are built from (and all that whether anything drives the mass needs).
     pub fn slice_terms(model: &SliceModel) -> (Vec<SliceTerms>, f64) {
         let mut total_weight = 0.0;
-        let mut terms = SPARE_TERMS.take();
-        terms.clear();
+        let mut terms = spare::take(&SPARE_TERMS);
         terms.extend(model.slices.iter().map(|s| {
             total_weight += s.weight;
             SliceTerms::unloaded(model, s)

@@ -15,6 +15,8 @@
 
 use std::cell::Cell;
 
+use crate::slope::spare;
+
 /// Slices per block.
 const LANES: usize = 4;
 
@@ -113,22 +115,20 @@ pub(super) struct Kernel {
 }
 
 thread_local! {
-    /// The blocks of the last kernel dropped on this thread, for the next one to fill: a search
-    /// builds thousands of kernels one after the other.
+    /// The blocks of the last kernel dropped on this thread ([`spare`]).
     static SPARE_BLOCKS: Cell<Vec<Block>> = const { Cell::new(Vec::new()) };
 }
 
 impl Drop for Kernel {
     fn drop(&mut self) {
-        SPARE_BLOCKS.set(std::mem::take(&mut self.blocks));
+        spare::keep(&SPARE_BLOCKS, std::mem::take(&mut self.blocks));
     }
 }
 
 impl Kernel {
     pub fn new(lanes: impl ExactSizeIterator<Item = Lane>) -> Self {
         let slices = lanes.len();
-        let mut blocks = SPARE_BLOCKS.take();
-        blocks.clear();
+        let mut blocks = spare::take(&SPARE_BLOCKS);
         blocks.resize(
             slices.div_ceil(LANES),
             Block {
