@@ -7,7 +7,7 @@ use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 
 use crate::error::ApiError;
-use crate::AppState;
+use crate::state::AppState;
 
 /// Lets the request through when no token is configured, or when it carries the right one.
 pub async fn require_token(

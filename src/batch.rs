@@ -22,10 +22,8 @@ use utoipa::ToSchema;
 use crate::error::{ApiError, ProblemResponses, PROBLEM_JSON};
 use crate::headers::RequestId;
 use crate::limits::MAX_BATCH_LINES;
-use crate::AppState;
-
-/// The media type of a batch, in and out.
-pub const NDJSON: &str = "application/x-ndjson";
+use crate::state::AppState;
+use crate::study::stream::NDJSON;
 
 /// The routes a batch line may name: the JSON solve routes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
@@ -107,7 +105,7 @@ pub async fn batch(
 ) -> Result<Response, ApiError> {
     let lines = read_lines(&headers, &body)?;
     let deadline = Instant::now() + state.batch_time_limit;
-    let router = crate::solve_routes().with_state(state.clone());
+    let router = crate::routes::solve_routes().with_state(state.clone());
     let running = state.pool.max_running();
     let limit_secs = state.batch_time_limit.as_secs_f64();
     let answers = stream::iter(lines.into_iter().enumerate())

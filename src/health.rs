@@ -1,14 +1,17 @@
-//! `GET /healthz`: the service is up and can take solves.
+//! The operational routes: `GET /healthz` (the service is up and can take solves), `GET /metrics`
+//! (the counters of `metrics` in Prometheus' text format) and the middleware that counts every
+//! answered request.
 
-use axum::extract::State;
-use axum::http::{header, StatusCode};
-use axum::response::IntoResponse;
+use axum::extract::{MatchedPath, Request, State};
+use axum::http::{header, HeaderValue, StatusCode};
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use axum::{Json, Router};
 use serde::Serialize;
 use utoipa::ToSchema;
 
-use crate::AppState;
+use crate::state::AppState;
 
 /// Liveness and readiness of the service.
 #[derive(Debug, Serialize, ToSchema)]
@@ -77,4 +80,46 @@ async fn at_connection_cap() -> impl IntoResponse {
         ],
         problem.to_string(),
     )
+}
+
+/// Counts every answered request under its route template (not the raw path: bounded labels).
+pub async fn count_requests(
+    State(state): State<AppState>,
+    request: Request,
+    next: Next,
+) -> Response {
+    let route = request
+        .extensions()
+        .get::<MatchedPath>()
+        .map_or_else(|| "unmatched".to_owned(), |p| p.as_str().to_owned());
+    let response = next.run(request).await;
+    state
+        .metrics
+        .observe_request(&route, response.status().as_u16());
+    response
+}
+
+/// Prometheus metrics of this instance.
+///
+/// Requests by route and status, the solve-time histogram, solves running and waiting, in the
+/// Prometheus text format.
+#[utoipa::path(
+    get,
+    path = "/metrics",
+    tag = "service",
+    responses(
+        (status = 200, description = "Prometheus text exposition format 0.0.4", body = String, content_type = "text/plain"),
+        (status = 401, description = "THRUSTLINE_TOKEN is set and the request has no `Authorization: Bearer` with it", body = crate::error::Problem, content_type = "application/problem+json"),
+    )
+)]
+pub async fn metrics(State(state): State<AppState>) -> Response {
+    let text = state
+        .metrics
+        .render(state.pool.running(), state.pool.queue_depth());
+    let mut response = text.into_response();
+    response.headers_mut().insert(
+        header::CONTENT_TYPE,
+        HeaderValue::from_static("text/plain; version=0.0.4; charset=utf-8"),
+    );
+    response
 }

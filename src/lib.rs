@@ -33,7 +33,9 @@ pub mod openapi;
 pub mod page;
 pub mod pool;
 pub mod report;
+pub mod routes;
 pub mod slope;
+pub mod state;
 pub mod stop;
 pub mod study;
 pub mod svg;
@@ -61,57 +63,16 @@ use utoipa::OpenApi;
 use utoipa_swagger_ui::SwaggerUi;
 
 pub use config::Settings;
-
-/// What every handler shares.
-#[derive(Debug, Clone)]
-pub struct AppState {
-    /// The bounded pool that runs solves.
-    pub pool: pool::SolvePool,
-    /// Time limit of one solve (the solvers' own limit: `spawn_blocking` cannot be cancelled).
-    pub solve_time_limit: std::time::Duration,
-    /// Time limit of a whole batch.
-    pub batch_time_limit: std::time::Duration,
-    /// Counters for /metrics.
-    pub metrics: std::sync::Arc<metrics::Metrics>,
-    /// The bearer token every endpoint but /healthz requires, if any.
-    pub token: Option<std::sync::Arc<str>>,
-}
-
-impl AppState {
-    /// State for the given settings.
-    pub fn new(settings: &Settings) -> Self {
-        let metrics = std::sync::Arc::new(metrics::Metrics::default());
-        Self {
-            pool: pool::SolvePool::new(
-                settings.max_running,
-                settings.max_queued,
-                settings.solve_memory_mib,
-                // The solvers stop themselves at the solve timeout and answer; the pool's own
-                // deadline, later, only catches what could not (waiting in the queue included).
-                settings.solve_timeout * 2 + std::time::Duration::from_secs(1),
-                metrics.clone(),
-            ),
-            solve_time_limit: settings.solve_timeout,
-            batch_time_limit: settings.batch_timeout,
-            metrics,
-            token: settings.token.as_deref().map(std::sync::Arc::from),
-        }
-    }
-
-    /// The solvers' time limit in seconds.
-    pub fn solve_time_limit_secs(&self) -> f64 {
-        self.solve_time_limit.as_secs_f64()
-    }
-}
+pub use state::AppState;
 
 /// The service's router.
 pub fn app(state: AppState, settings: &Settings) -> Router {
     let api = Router::new()
         .route("/", get(page::index))
         .route("/healthz", get(health::healthz))
-        .route("/metrics", get(metrics::metrics))
+        .route("/metrics", get(health::metrics))
         .route("/batch", post(batch::batch))
-        .merge(solve_routes())
+        .merge(routes::solve_routes())
         .with_state(state.clone());
     let request_id = HeaderName::from_static("x-request-id");
     let router = Router::new()
@@ -129,7 +90,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
         // Outside the token check: 401s, unknown paths, the document and the docs count too.
         .layer(axum::middleware::from_fn_with_state(
             state,
-            metrics::count_requests,
+            health::count_requests,
         ))
         .layer(DefaultBodyLimit::max(settings.body_limit))
         .layer(axum::middleware::from_fn_with_state(
@@ -177,51 +138,13 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
             .and(NotForContentType::IMAGES)
             .and(NotForContentType::SSE)
             // A batch's lines stream as they finish: a compressor would hold them back.
-            .and(NotForContentType::const_new(batch::NDJSON)),
+            .and(NotForContentType::const_new(study::stream::NDJSON)),
     );
     let router = router.layer(compression);
     match cors(&settings.cors_origins) {
         Some(cors) => router.layer(cors),
         None => router,
     }
-}
-
-/// The solve routes: each problem's JSON answer and its `/svg`, `/csv` and `/report` twins
-/// (also what a batch's lines are sent through).
-pub fn solve_routes() -> Router<AppState> {
-    Router::new()
-        .route("/slope/spencer", post(slope::spencer))
-        .route("/slope/spencer/svg", post(slope::spencer_svg))
-        .route("/slope/spencer/stream", post(slope::spencer_stream))
-        .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
-        .route("/slope/spencer/report", post(slope::report::spencer_report))
-        .route("/arch/dead-load", post(arch::dead_load))
-        .route("/arch/dead-load/svg", post(arch::dead_load_svg))
-        .route("/arch/dead-load/csv", post(arch::tables::dead_load_csv))
-        .route(
-            "/arch/dead-load/report",
-            post(arch::report::dead_load_report),
-        )
-        .route("/arch/live-load", post(arch::live_load))
-        .route("/arch/live-load/svg", post(arch::live_load_svg))
-        .route("/arch/live-load/stream", post(arch::live_load_stream))
-        .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
-        .route(
-            "/arch/live-load/report",
-            post(arch::report::live_load_report),
-        )
-        .route(
-            "/arch/minimum-thickness",
-            post(arch::minimum_thickness::minimum_thickness),
-        )
-        .route(
-            "/arch/minimum-thickness/csv",
-            post(arch::minimum_thickness::minimum_thickness_csv),
-        )
-        .route(
-            "/arch/minimum-thickness/svg",
-            post(arch::minimum_thickness::minimum_thickness_svg),
-        )
 }
 
 /// CORS for the configured origins (`*` for any); `None` when none are configured.

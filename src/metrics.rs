@@ -1,19 +1,13 @@
-//! `GET /metrics`: Prometheus text exposition (format 0.0.4) of requests by route and status,
-//! the solve-time histogram and the solve pool's load. Kept in process, no global registry: the
-//! `Metrics` value lives in the application state.
+//! The counters behind `GET /metrics` (served by `health`): requests by route and status, the
+//! solve-time histogram and the solve pool's load, rendered in the Prometheus text exposition
+//! format 0.0.4. Kept in process, no global registry: the `Metrics` value lives in the
+//! application state.
 
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::Duration;
-
-use axum::extract::{MatchedPath, Request, State};
-use axum::http::{header, HeaderValue};
-use axum::middleware::Next;
-use axum::response::{IntoResponse, Response};
-
-use crate::AppState;
 
 /// Upper bounds of the solve-time histogram buckets, in seconds.
 const BUCKETS: [f64; 12] = [
@@ -121,46 +115,4 @@ impl Metrics {
         writeln!(out, "# TYPE thrustline_solve_queue_depth gauge")?;
         writeln!(out, "thrustline_solve_queue_depth {queued}")
     }
-}
-
-/// Counts every answered request under its route template (not the raw path: bounded labels).
-pub async fn count_requests(
-    State(state): State<AppState>,
-    request: Request,
-    next: Next,
-) -> Response {
-    let route = request
-        .extensions()
-        .get::<MatchedPath>()
-        .map_or_else(|| "unmatched".to_owned(), |p| p.as_str().to_owned());
-    let response = next.run(request).await;
-    state
-        .metrics
-        .observe_request(&route, response.status().as_u16());
-    response
-}
-
-/// Prometheus metrics of this instance.
-///
-/// Requests by route and status, the solve-time histogram, solves running and waiting, in the
-/// Prometheus text format.
-#[utoipa::path(
-    get,
-    path = "/metrics",
-    tag = "service",
-    responses(
-        (status = 200, description = "Prometheus text exposition format 0.0.4", body = String, content_type = "text/plain"),
-        (status = 401, description = "THRUSTLINE_TOKEN is set and the request has no `Authorization: Bearer` with it", body = crate::error::Problem, content_type = "application/problem+json"),
-    )
-)]
-pub async fn metrics(State(state): State<AppState>) -> Response {
-    let text = state
-        .metrics
-        .render(state.pool.running(), state.pool.queue_depth());
-    let mut response = text.into_response();
-    response.headers_mut().insert(
-        header::CONTENT_TYPE,
-        HeaderValue::from_static("text/plain; version=0.0.4; charset=utf-8"),
-    );
-    response
 }

@@ -30,7 +30,7 @@ use crate::limits::Limit;
     ),
     paths(
         crate::health::healthz,
-        crate::metrics::metrics,
+        crate::health::metrics,
         crate::batch::batch,
         crate::arch::dead_load,
         crate::arch::dead_load_svg,

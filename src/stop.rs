@@ -4,7 +4,7 @@
 use thrustline_solver::budget::Stop;
 
 use crate::error::ApiError;
-use crate::AppState;
+use crate::state::AppState;
 
 /// What a stopped analysis tells the client: the field that sets the work, what to change when
 /// the budget ended it, and what to change when a search found no candidate.

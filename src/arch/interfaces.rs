@@ -2,47 +2,13 @@
 //! a multi-ring arch (`ring_interface`, their mortar's cohesion) and single interfaces named
 //! by the blocks they join (`interfaces`: a wall's base, a ring's joint).
 
-use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{ArchProblem, InterfaceKind};
-use utoipa::ToSchema;
 
+use super::request::interfaces::{InterfaceDto, RingInterfaceDto};
 use super::request::LimitFields;
 use crate::error::ApiError;
 use crate::limits::{FRICTION, INTERFACE_OVERRIDES, STRESS};
 use crate::validation::{count, count_within, within};
-
-/// The interfaces between the rings of a multi-ring arch.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct RingInterfaceDto {
-    /// Friction coefficient μ ≥ 0 between the rings (as `ring_friction_coefficient`, which
-    /// it replaces); null or left out: no sliding.
-    #[serde(default)]
-    #[schema(examples(0.6))]
-    pub friction_coefficient: Option<f64>,
-    /// Cohesion c ≥ 0 of the mortar between the rings, a force per unit length of interface:
-    /// the shear capacity of an interface of length ℓ is μ·N + c·ℓ. Needs a friction
-    /// coefficient (0 for cohesion alone). Defaults to 0.
-    #[serde(default)]
-    #[schema(examples(50.0))]
-    pub cohesion: Option<f64>,
-}
-
-/// One interface with friction and cohesion of its own.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct InterfaceDto {
-    /// The two blocks it joins, 1-based; 0 for a support (`[3, 0]`: block 3 on its
-    /// supports). Every contact between them takes these values.
-    #[schema(examples(json!([3, 0])))]
-    pub blocks: [usize; 2],
-    /// Its friction coefficient μ ≥ 0. Left out: the arch's (or the rings').
-    #[serde(default)]
-    pub friction_coefficient: Option<f64>,
-    /// Its cohesion c ≥ 0 (shear capacity μ·N + c·ℓ). Defaults to 0.
-    #[serde(default)]
-    pub cohesion: Option<f64>,
-}
 
 /// The ring interfaces' friction from `ring_friction_coefficient` or `ring_interface`, and
 /// the cohesion of `ring_interface`: (μ, c) when `ring_interface` is given.

@@ -20,11 +20,11 @@ use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJson;
 use crate::limits::THICKNESS_TOLERANCE;
 use crate::pool::Cost;
+use crate::state::AppState;
 use crate::stop::Work;
 use crate::svg::Svg;
 use crate::table::{csv, Csv, Table};
 use crate::validation::within;
-use crate::AppState;
 use thrustline_solver::arch::memory::chain_memory_bound;
 use thrustline_solver::budget::Stop;
 

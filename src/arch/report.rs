@@ -11,7 +11,7 @@ use crate::error::{ApiError, ProblemResponses};
 use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::headers::RequestId;
 use crate::report::{table, without_nulls, Report, ReportTable};
-use crate::AppState;
+use crate::state::AppState;
 use axum::response::Html;
 
 /// The tables an arch report prints: hinges, reactions and the line of thrust.

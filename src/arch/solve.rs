@@ -9,14 +9,14 @@ use thrustline_solver::arch::{ArchError, ArchProblem};
 use thrustline_solver::budget::Budget;
 
 use super::input::ArchInput;
-use super::response::{ArchStatusDto, SolvedArch};
 use super::rolling::Axles;
+use super::solved::{ArchStatusDto, SolvedArch};
 use crate::error::ApiError;
 use crate::pool::Cost;
+use crate::state::AppState;
 use crate::stop::Work;
 use crate::study::run::StudyStop;
 use crate::study::StudyAnswers;
-use crate::AppState;
 
 /// Which of Livesley's two programmes a route asks for.
 #[derive(Debug, Clone, Copy)]

@@ -15,13 +15,13 @@ use thrustline_solver::budget::Budget;
 
 use super::input::ArchInput;
 use super::request::LiveLoadRequest;
-use super::response::SolvedArch;
 use super::solve::{plan as route_plan, solve_studied, Problem, StudyJob};
+use super::solved::SolvedArch;
 use crate::error::ApiError;
+use crate::state::AppState;
 use crate::study::request::StudySurfaceDto;
 use crate::study::run::{Sampled, Tally};
 use crate::study::Study;
-use crate::AppState;
 
 /// A live-load request read into what runs: its input and its studies.
 pub struct PreparedLive {

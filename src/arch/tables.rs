@@ -15,8 +15,8 @@ use super::solve::{solve, Problem};
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::report::{table, ReportTable};
+use crate::state::AppState;
 use crate::table::{csv, Csv, Row, Table, TableQuery};
-use crate::AppState;
 
 /// A table of the dead-load answer as CSV.
 ///

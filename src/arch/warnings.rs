@@ -1,6 +1,6 @@
 //! The warnings of an arch answer: what the engineer should look at before trusting λ.
 
-use super::response::{ArchStatusDto, SolvedArch};
+use super::solved::{ArchStatusDto, SolvedArch};
 use thrustline_solver::arch::InterfaceKind;
 
 use crate::warning::{one_based, Warning, WarningCode};

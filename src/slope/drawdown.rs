@@ -1,46 +1,18 @@
 //! `section.drawdown` and `soil.r_envelope` (model §8): a rapid drawdown's two water lines and
 //! the soils that do not drain, read into the solver's [`Section::with_drawdown`].
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use thrustline_solver::slope::design::Design;
 use thrustline_solver::slope::section::drawdown::REnvelope;
 use thrustline_solver::slope::section::Section;
 use utoipa::ToSchema;
 
 use super::lines::polyline;
-use super::request::{Coordinates, SectionDto};
+use super::options::Coordinates;
+use super::request::SectionDto;
 use crate::error::ApiError;
 use crate::limits::{FRICTION_ANGLE_DEG, STRESS};
 use crate::validation::within;
-
-/// A rapid drawdown (Duncan, Wright & Wong 1990, three stages): the water lines before and after
-/// it, in place of `piezometric_line`. Soils with an `r_envelope` do not drain: after the
-/// drawdown they have the undrained strength of their consolidation before it; the others drain
-/// freely.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct DrawdownDto {
-    /// The piezometric line before the drawdown (the pool up), 1 to 1000 points.
-    #[schema(value_type = Vec<Vec<f64>>)]
-    pub before: Vec<Coordinates>,
-    /// The piezometric line after it (the pool down), 1 to 1000 points.
-    #[schema(value_type = Vec<Vec<f64>>)]
-    pub after: Vec<Coordinates>,
-}
-
-/// A soil's total-stress (R) envelope from consolidated-undrained triaxial tests: the line
-/// tangent to the circles drawn with the effective consolidation pressure σ′_3c and the
-/// principal stress difference at failure.
-#[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct REnvelopeDto {
-    /// Its intercept c_R, 0 ≤ c_R ≤ 1e12.
-    #[schema(examples(5.0))]
-    pub cohesion: f64,
-    /// Its slope φ_R in degrees, 0 ≤ φ_R ≤ 89.9.
-    #[schema(examples(15.0))]
-    pub friction_angle_deg: f64,
-}
 
 /// The after-line a drawdown puts in place of `section.piezometric_line`, refusing both.
 pub fn after_line(dto: &SectionDto) -> Result<Option<&[Coordinates]>, ApiError> {

@@ -3,7 +3,7 @@
 
 use thrustline_solver::slope::section::Polyline;
 
-use super::request::Coordinates;
+use super::options::Coordinates;
 use crate::error::ApiError;
 use crate::limits::{MAX_POLYLINE_POINTS, POLYLINE_POINTS};
 use crate::validation::count_within;

@@ -1,8 +1,38 @@
-//! Small option types of a Spencer request and answer: the accuracy asked for and answered, and
-//! whether a search may answer composite surfaces.
+//! Small types of a Spencer request and answer: a point, the details an answer may leave out,
+//! the accuracy asked for and answered, and whether a search may answer composite surfaces.
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
+
+/// A point [x, y] of a polyline, in the section's coordinates (y up).
+pub type Coordinates = [f64; 2];
+
+/// A detail of the answer that `include` can leave out.
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum SlopeDetailDto {
+    /// `slices`.
+    Slices,
+    /// `surface`.
+    Surface,
+    /// `thrust_line`.
+    ThrustLine,
+    /// `effective_thrust_line`.
+    EffectiveThrustLine,
+    /// `grid` (with `search`).
+    Grid,
+}
+
+impl SlopeDetailDto {
+    /// Every detail, in the order of the answer.
+    pub const ALL: [Self; 5] = [
+        Self::Surface,
+        Self::Slices,
+        Self::ThrustLine,
+        Self::EffectiveThrustLine,
+        Self::Grid,
+    ];
+}
 
 /// The accuracy a request asks for.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]

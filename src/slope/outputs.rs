@@ -45,7 +45,7 @@ pub struct SearchOutDto {
     pub min_depth: f64,
     /// Whether circles that would cross the bedrock were candidates (`follow_bedrock`) or not
     /// (`circles_only`).
-    pub composite: super::request::CompositeDto,
+    pub composite: super::options::CompositeDto,
     /// With `shape: noncircular`: whether a budget (`time_budget_ms`, `max_evaluations` or the
     /// time limit) ended the polyline search: its answer is the best found by then, never
     /// above the critical circle.

@@ -10,7 +10,7 @@ use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJsonWithBody;
 use crate::headers::RequestId;
 use crate::report::{table, without_nulls, Report};
-use crate::AppState;
+use crate::state::AppState;
 use axum::response::Html;
 
 /// The Spencer answer as a printable calculation report.

@@ -1,12 +1,12 @@
 //! The Spencer answer, built whole from the solver's results: slices numbered from 1 at the
 //! lower end of the slip surface, angles in degrees.
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 use thrustline_solver::slope::{Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
-use super::options::AccuracyOutDto;
+use super::options::{AccuracyOutDto, SlopeDetailDto};
 use super::outputs::{CurvesDto, GridDto, SearchOutDto};
 use super::slices::slice_dtos;
 pub use super::slices::SliceDto;
@@ -15,33 +15,6 @@ use super::warnings::warnings;
 use crate::warning::Warning;
 
 use utoipa::ToSchema;
-
-/// A detail of the answer that `include` can leave out.
-#[derive(Debug, Clone, Copy, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum SlopeDetailDto {
-    /// `slices`.
-    Slices,
-    /// `surface`.
-    Surface,
-    /// `thrust_line`.
-    ThrustLine,
-    /// `effective_thrust_line`.
-    EffectiveThrustLine,
-    /// `grid` (with `search`).
-    Grid,
-}
-
-impl SlopeDetailDto {
-    /// Every detail, in the order of the answer.
-    pub const ALL: [Self; 5] = [
-        Self::Surface,
-        Self::Slices,
-        Self::ThrustLine,
-        Self::EffectiveThrustLine,
-        Self::Grid,
-    ];
-}
 
 /// A point in the plane of the section.
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -372,9 +345,9 @@ fn search_out(search: &SearchReport) -> SearchOutDto {
         unsolved_near_minimum: search.unsolved_near_minimum,
         min_depth: search.candidates.min_depth,
         composite: if search.candidates.circles_only {
-            super::request::CompositeDto::CirclesOnly
+            super::options::CompositeDto::CirclesOnly
         } else {
-            super::request::CompositeDto::FollowBedrock
+            super::options::CompositeDto::FollowBedrock
         },
         budget_exhausted: search.timed_out,
         path: search.path.clone(),

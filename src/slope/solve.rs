@@ -12,9 +12,9 @@ use super::solved::SolvedSlope;
 use super::study;
 use crate::error::ApiError;
 use crate::pool::Cost;
+use crate::state::AppState;
 use crate::stop::Work;
 use crate::study::run::Tally;
-use crate::AppState;
 
 /// A request read into what runs: the analysis' plan and its studies.
 pub struct Prepared {

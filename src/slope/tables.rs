@@ -5,15 +5,14 @@ use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
+use super::options::SlopeDetailDto;
 use super::request::SpencerRequest;
-use super::response::{
-    BoundaryThrustPointDto, PointDto, SliceDto, SlopeDetailDto, SpencerResponse,
-};
+use super::response::{BoundaryThrustPointDto, PointDto, SliceDto, SpencerResponse};
 use super::solve::solve;
 use crate::error::{ApiError, ProblemResponses};
 use crate::extract::ApiJsonWithBody;
+use crate::state::AppState;
 use crate::table::{csv, Csv, Row, Table, TableQuery};
-use crate::AppState;
 
 /// A table of the Spencer answer as CSV.
 ///

@@ -17,9 +17,9 @@ use serde_json::Value;
 use thrustline_solver::budget::Budget;
 
 use crate::error::ApiError;
+use crate::state::AppState;
 use crate::stop::Work;
 use crate::warning::{Warning, WarningCode};
-use crate::AppState;
 use plan::{ProbabilisticPlan, SensitivityPlan};
 use request::{ProbabilisticDto, SensitivityDto};
 use response::{ProbabilisticOutDto, SensitivityOutDto};

@@ -18,8 +18,10 @@ use serde_json::json;
 use utoipa::ToSchema;
 
 use super::run::Tally;
-use crate::batch::NDJSON;
 use crate::error::ApiError;
+
+/// The media type of a batch and of a stream, in and out: one JSON value per line.
+pub const NDJSON: &str = "application/x-ndjson";
 
 /// A progress line.
 #[derive(Debug, Serialize, ToSchema)]

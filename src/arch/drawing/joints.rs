@@ -3,7 +3,7 @@
 
 use thrustline_solver::arch::{ArchProblem, Assembly, Interface, Mechanism};
 
-use super::Legend;
+use super::parts::Legend;
 use crate::svg::Canvas;
 
 /// Passive pressure where mobilised: horizontal arrows onto the extrados.

@@ -5,51 +5,15 @@ mod joints;
 mod parts;
 mod rolling;
 
-use super::response::SolvedArch;
 use super::rolling::RollingOutDto;
+use super::solved::SolvedArch;
 use crate::svg::Canvas;
+use parts::{Legend, MAX_HINGE_LABELS};
 
-/// The key's entries: colour and text.
-type Legend = Vec<(&'static str, std::borrow::Cow<'static, str>)>;
-
-/// Chains of more blocks than this are drawn as one outline.
-const MERGED_ABOVE: usize = 200;
 /// Assemblies of more blocks than this are drawn without the displaced blocks and the sliding
 /// joints (both in the JSON; the key says so): each block is then a pixel or two wide, and
 /// drawing them twice more doubled the picture (1.4 MB for eight rings of 1000).
 const MECHANISM_DRAWN_UP_TO: usize = 1000;
-/// Hinges are labelled with their angle when there are at most this many.
-const MAX_HINGE_LABELS: usize = 8;
-
-/// Points along a voussoir's outline: straight sides, or arcs about the origin when `curved`.
-fn outline(corners: &[(f64, f64)], curved: bool) -> Vec<(f64, f64)> {
-    if !curved || corners.len() != 4 {
-        return corners.to_vec();
-    }
-    // Intrados-start → extrados-start (straight), along the extrados, extrados-end →
-    // intrados-end (straight), back along the intrados.
-    let arc = |a: (f64, f64), b: (f64, f64)| -> Vec<(f64, f64)> {
-        let (ra, ta) = (a.0.hypot(a.1), a.1.atan2(a.0));
-        let mut tb = b.1.atan2(b.0);
-        while tb - ta > std::f64::consts::PI {
-            tb -= 2.0 * std::f64::consts::PI;
-        }
-        while ta - tb > std::f64::consts::PI {
-            tb += 2.0 * std::f64::consts::PI;
-        }
-        (0..=6)
-            .map(|i| {
-                let t = ta + (tb - ta) * f64::from(i) / 6.0;
-                (ra * t.cos(), ra * t.sin())
-            })
-            .collect()
-    };
-    let mut points = vec![corners[0]];
-    points.extend(arc(corners[1], corners[2]));
-    points.extend(arc(corners[3], corners[0]));
-    points
-}
-
 /// The dead-load drawing's title: λ₀ and whether the arch stands.
 pub fn dead_load_title(solved: &SolvedArch) -> String {
     match solved.solution.load_factor {

@@ -4,7 +4,7 @@
 use thrustline_solver::slope::analysis::Analysed;
 
 use super::super::fills::layer_fills;
-use super::Scene;
+use super::scene::Scene;
 use crate::svg::Canvas;
 
 /// The ground between `left` and `right` down to `bottom`; answers the key's entries.

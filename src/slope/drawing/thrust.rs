@@ -5,7 +5,7 @@ use thrustline_solver::slope::analysis::PlacedCircle;
 use thrustline_solver::slope::ThrustPoint;
 
 use super::super::solved::SolvedSlope;
-use super::Scene;
+use super::scene::Scene;
 use crate::svg::Canvas;
 
 /// The slices, the surface, the centre and the lines of thrust; the key's entries go to

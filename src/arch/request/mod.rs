@@ -10,6 +10,9 @@ use utoipa::ToSchema;
 
 use super::geometry::GeometryDto;
 
+pub mod design;
+pub mod interfaces;
+
 /// The model of the limit-analysis programmes.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
@@ -195,9 +198,9 @@ pub struct LimitFields<'a> {
     /// `include`: the details to answer with; `None` is all of them.
     pub include: Option<&'a [ArchDetailDto]>,
     /// `ring_interface`.
-    pub ring_interface: Option<&'a super::interfaces::RingInterfaceDto>,
+    pub ring_interface: Option<&'a interfaces::RingInterfaceDto>,
     /// `interfaces`.
-    pub interfaces: &'a [super::interfaces::InterfaceDto],
+    pub interfaces: &'a [interfaces::InterfaceDto],
     /// The material.
     pub material: MaterialFields<'a>,
 }
@@ -310,12 +313,12 @@ macro_rules! limit_request {
                 /// `ring_friction_coefficient`. Defaults to none (no sliding between rings).
                 #[serde(default)]
                 #[schema(nullable)]
-                pub ring_interface: Option<super::interfaces::RingInterfaceDto>,
+                pub ring_interface: Option<$crate::arch::request::interfaces::RingInterfaceDto>,
                 /// Interfaces with friction and cohesion of their own (a wall's base, one
                 /// joint), named by the blocks they join; 0 to 10000 of them. Defaults to
                 /// none.
                 #[serde(default)]
-                pub interfaces: Option<Vec<super::interfaces::InterfaceDto>>,
+                pub interfaces: Option<Vec<$crate::arch::request::interfaces::InterfaceDto>>,
                 $($(#[$field_attr])* pub $field: $ty,)*
             }
         }
@@ -393,7 +396,7 @@ limit_request! {
         /// The analysis runs on the design values; the answer adds `design` with the adequacy
         /// factor (λ on the factored live load) and whether it is at least 1.
         #[serde(default)]
-        pub design: Option<super::design::ArchDesignDto>,
+        pub design: Option<design::ArchDesignDto>,
         /// A probabilistic study of this analysis (model §9.2): numbers of this request as
         /// variables, the analysis run on each sample, the probability of failure (λ < 1).
         #[serde(default)]

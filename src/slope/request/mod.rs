@@ -5,7 +5,10 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 pub use super::loads::{LineLoadDto, SurchargeDto};
-pub use super::options::{AccuracyDto, CompositeDto};
+pub use super::options::{AccuracyDto, CompositeDto, Coordinates, SlopeDetailDto};
+
+pub mod soil;
+pub mod water;
 
 /// The embankment: toe at the origin, slope face up to (length, height), level crest beyond.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
@@ -71,7 +74,7 @@ pub struct SoilDto {
     /// strength with depth, a power curve, Hoek–Brown or a shear–normal function. In a
     /// section's layers only.
     #[serde(default)]
-    pub strength: Option<super::strength::StrengthDto>,
+    pub strength: Option<soil::StrengthDto>,
     /// Pore pressure ratio r_u = u/σ_v (σ_v = W/b, γh in one soil), 0 ≤ r_u ≤ 1. Defaults to
     /// 0 for `soil`; in a section's layer, when given it sets the pore pressure at bases in
     /// this soil in place of the piezometric line.
@@ -81,7 +84,7 @@ pub struct SoilDto {
     /// In a section's layer with `section.drawdown`: the soil does not drain during the
     /// drawdown, and this is its total-stress (R) envelope.
     #[serde(default)]
-    pub r_envelope: Option<super::drawdown::REnvelopeDto>,
+    pub r_envelope: Option<soil::REnvelopeDto>,
 }
 
 /// Pseudo-static seismic coefficients, applied at the slice centroids.
@@ -180,7 +183,7 @@ pub struct SpencerRequest {
     /// listed in `omitted`; F, θ, the totals and the other fields are always there. Defaults to
     /// all of them. Drawings ignore it.
     #[serde(default)]
-    pub include: Option<Vec<super::response::SlopeDetailDto>>,
+    pub include: Option<Vec<SlopeDetailDto>>,
     /// A partial-factor check (EN 1997-1): `{"approach": "DA1-2"}` or `{"factors": {...}}`.
     /// The analysis (and a search) runs on the design values; the answer adds `design` with the
     /// over-design factor and whether it is verified.
@@ -324,9 +327,6 @@ fn default_grid() -> usize {
     21
 }
 
-/// A point [x, y] of a polyline, in the section's coordinates (y up).
-pub type Coordinates = [f64; 2];
-
 /// A cross-section (model §4.1). Polylines run left to right with strictly increasing x and are
 /// continued horizontally beyond their ends; the section may face either way.
 #[derive(Debug, Clone, Deserialize, Serialize, ToSchema)]
@@ -346,16 +346,16 @@ pub struct SectionDto {
     /// the water is ponded and presses on the ground. Its points (1 to 1000), or `{points,
     /// hu}` with h_u a number 0–1 or `auto` (cos²α of the line's inclination).
     #[serde(default)]
-    pub piezometric_line: Option<super::water::PiezometricLineDto>,
+    pub piezometric_line: Option<water::PiezometricLineDto>,
     /// Pore pressures at points [x, y, u], linear over their Delaunay triangulation: u at bases
     /// in soils without their own r_u or piezometric line (in place of the section's line,
     /// which still sets ponded water). Outside the grid u = 0, with a warning.
     #[serde(default)]
-    pub pore_pressure_grid: Option<super::water::PoreGridDto>,
+    pub pore_pressure_grid: Option<water::PoreGridDto>,
     /// A rapid drawdown (model §8): the water lines before and after it, in place of
     /// `piezometric_line`; soils with an `r_envelope` do not drain.
     #[serde(default)]
-    pub drawdown: Option<super::drawdown::DrawdownDto>,
+    pub drawdown: Option<water::DrawdownDto>,
     /// Unit weight of water γ_w, in the units of the soils' unit weights. Defaults to 9.81
     /// (kN/m³); give 62.4 for pcf.
     #[serde(default)]
@@ -392,7 +392,7 @@ pub struct LayerDto {
     /// The layer's own piezometric line: the pore pressure at bases in this soil (unless it has
     /// its own r_u), in place of the grid and the section's line. Points, or `{points, hu}`.
     #[serde(default)]
-    pub piezometric_line: Option<super::water::PiezometricLineDto>,
+    pub piezometric_line: Option<water::PiezometricLineDto>,
 }
 
 /// A tension crack: where the slip surface rises through the ground moved down by `depth`, it
