@@ -22,6 +22,7 @@ pub mod body;
 pub mod config;
 pub mod error;
 pub mod extract;
+pub mod family;
 pub mod fields;
 pub mod headers;
 pub mod health;
@@ -59,7 +60,6 @@ use tower_http::request_id::{
     MakeRequestId, PropagateRequestIdLayer, RequestId, SetRequestIdLayer,
 };
 use tower_http::trace::TraceLayer;
-use utoipa::OpenApi;
 use utoipa_swagger_ui::SwaggerUi;
 
 pub use config::Settings;
@@ -77,7 +77,7 @@ pub fn app(state: AppState, settings: &Settings) -> Router {
     let request_id = HeaderName::from_static("x-request-id");
     let router = Router::new()
         .merge(
-            Router::from(SwaggerUi::new("/docs").url("/openapi.json", openapi::ApiDoc::openapi()))
+            Router::from(SwaggerUi::new("/docs").url("/openapi.json", openapi::document()))
                 .layer(axum::middleware::from_fn(docs_not_found)),
         )
         .merge(api)

@@ -6,7 +6,8 @@ use utoipa::OpenApi;
 
 use crate::limits::Limit;
 
-/// The service's OpenAPI document.
+/// The service's own part of the OpenAPI document: its description, the operational routes and
+/// `/batch`; [`document`] adds each family's paths.
 #[derive(OpenApi)]
 #[openapi(
     info(
@@ -19,43 +20,8 @@ use crate::limits::Limit;
         contact(name = "thrustline maintainers")
     ),
     servers((url = "/", description = "The service that serves this document")),
-    modifiers(
-        &SchemaLimits,
-        &PointPairs,
-        &BearerToken,
-        &DescriptionsOnProperties,
-        &RequestIdHeader,
-        &DrawingExamples,
-        &SvgMediaType
-    ),
-    paths(
-        crate::health::healthz,
-        crate::health::metrics,
-        crate::batch::batch,
-        crate::arch::dead_load,
-        crate::arch::dead_load_svg,
-        crate::arch::tables::dead_load_csv,
-        crate::arch::report::dead_load_report,
-        crate::arch::live_load,
-        crate::arch::live_load_svg,
-        crate::arch::live_load_stream,
-        crate::arch::tables::live_load_csv,
-        crate::arch::report::live_load_report,
-        crate::arch::minimum_thickness::minimum_thickness,
-        crate::arch::minimum_thickness::minimum_thickness_csv,
-        crate::arch::minimum_thickness::minimum_thickness_svg,
-        crate::slope::spencer,
-        crate::slope::spencer_svg,
-        crate::slope::spencer_stream,
-        crate::slope::tables::spencer_csv,
-        crate::slope::report::spencer_report
-    ),
-    components(schemas(
-        crate::error::Problem,
-        crate::arch::tables::ArchTableDto,
-        crate::arch::tables::MinimumThicknessTableDto,
-        crate::slope::tables::SlopeTableDto
-    )),
+    paths(crate::health::healthz, crate::health::metrics, crate::batch::batch),
+    components(schemas(crate::error::Problem)),
     tags(
         (name = "arch", description = "Limit analysis of rigid-block arches (Livesley 1978)"),
         (name = "slope", description = "Embankment stability by Spencer's method"),
@@ -63,6 +29,31 @@ use crate::limits::Limit;
     )
 )]
 pub struct ApiDoc;
+
+/// The service's OpenAPI document: [`ApiDoc`], every registered family's paths
+/// (`crate::routes::FAMILIES`), then the modifiers that write what the derive cannot (limits,
+/// point pairs, the token, property descriptions, the request id header, drawing examples, the
+/// SVG media type), in that order.
+pub fn document() -> utoipa::openapi::OpenApi {
+    use utoipa::Modify;
+    let mut openapi = ApiDoc::openapi();
+    for family in crate::routes::FAMILIES {
+        openapi.merge((family.openapi)());
+    }
+    let modifiers: [&dyn Modify; 7] = [
+        &SchemaLimits,
+        &PointPairs,
+        &BearerToken,
+        &DescriptionsOnProperties,
+        &RequestIdHeader,
+        &DrawingExamples,
+        &SvgMediaType,
+    ];
+    for modifier in modifiers {
+        modifier.modify(&mut openapi);
+    }
+    openapi
+}
 
 /// The limits of [`crate::limits::schema::SCHEMA_LIMITS`] written on their properties: the one
 /// table the checks read too. A table entry that names no property of the document is a fault
@@ -198,7 +189,7 @@ fn apply_limit(target: &mut utoipa::openapi::RefOr<utoipa::openapi::schema::Sche
 
 /// The table's entries that name no property of the generated document.
 pub fn limit_targets_missing() -> Vec<String> {
-    let mut openapi = ApiDoc::openapi();
+    let mut openapi = document();
     let Some(components) = openapi.components.as_mut() else {
         return vec!["no components".to_owned()];
     };
@@ -388,7 +379,7 @@ fn responses_mut(
 
 /// The document as pretty-printed JSON, exactly as committed in `openapi/openapi.json`.
 pub fn openapi_json() -> String {
-    let mut text = ApiDoc::openapi()
+    let mut text = document()
         .to_pretty_json()
         .expect("the OpenAPI document serialises: it is built from plain data");
     text.push('\n');

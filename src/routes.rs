@@ -1,47 +1,25 @@
-//! The solve routes, one registration per problem family: each family's JSON answer and its
-//! `/svg`, `/csv`, `/stream` and `/report` twins. The router mounts them and `/batch` sends its
-//! lines through them.
+//! The problem families the service answers, registered once each: the router mounts their
+//! routes, `/batch` sends its lines through them and the OpenAPI document takes their paths.
+//! Adding a family is its folder and one line here.
 
-use axum::routing::post;
 use axum::Router;
 
+use crate::family::Registration;
 use crate::state::AppState;
 use crate::{arch, slope};
 
-/// The solve routes: each problem's JSON answer and its `/svg`, `/csv` and `/report` twins
-/// (also what a batch's lines are sent through).
+/// Every family, in the order the batch schema lists their routes.
+pub const FAMILIES: [Registration; 4] = [
+    slope::routes::REGISTRATION,
+    arch::routes::DEAD_LOAD,
+    arch::routes::LIVE_LOAD,
+    arch::minimum_thickness::routes::REGISTRATION,
+];
+
+/// The solve routes: each family's JSON answer and its twins (also what a batch's lines are
+/// sent through).
 pub fn solve_routes() -> Router<AppState> {
-    Router::new()
-        .route("/slope/spencer", post(slope::spencer))
-        .route("/slope/spencer/svg", post(slope::spencer_svg))
-        .route("/slope/spencer/stream", post(slope::spencer_stream))
-        .route("/slope/spencer/csv", post(slope::tables::spencer_csv))
-        .route("/slope/spencer/report", post(slope::report::spencer_report))
-        .route("/arch/dead-load", post(arch::dead_load))
-        .route("/arch/dead-load/svg", post(arch::dead_load_svg))
-        .route("/arch/dead-load/csv", post(arch::tables::dead_load_csv))
-        .route(
-            "/arch/dead-load/report",
-            post(arch::report::dead_load_report),
-        )
-        .route("/arch/live-load", post(arch::live_load))
-        .route("/arch/live-load/svg", post(arch::live_load_svg))
-        .route("/arch/live-load/stream", post(arch::live_load_stream))
-        .route("/arch/live-load/csv", post(arch::tables::live_load_csv))
-        .route(
-            "/arch/live-load/report",
-            post(arch::report::live_load_report),
-        )
-        .route(
-            "/arch/minimum-thickness",
-            post(arch::minimum_thickness::minimum_thickness),
-        )
-        .route(
-            "/arch/minimum-thickness/csv",
-            post(arch::minimum_thickness::minimum_thickness_csv),
-        )
-        .route(
-            "/arch/minimum-thickness/svg",
-            post(arch::minimum_thickness::minimum_thickness_svg),
-        )
+    FAMILIES.iter().fold(Router::new(), |router, family| {
+        router.merge((family.routes)())
+    })
 }

@@ -1,72 +1,16 @@
-//! `POST /arch/dead-load/csv` and `/arch/live-load/csv`: the arch answers as CSV tables
-//! (`?table=`), which tables there are and their columns.
+//! The arch answers' CSV tables (`POST /arch/dead-load/csv`, `/arch/live-load/csv` and
+//! `/arch/minimum-thickness/csv`, `?table=`): which tables there are and their columns.
 
-use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use super::mechanism::{ActiveConstraintDto, BlockVelocityDto, HingeDto};
-use super::request::{ArchDetailDto, DeadLoadRequest, LiveLoadRequest};
-use super::response::{
-    ArchOutcomeDto, DeadLoadResponse, InterfaceThrustPointDto, LiveLoadResponse, ReactionDto,
-};
+use super::request::ArchDetailDto;
+use super::response::{ArchOutcomeDto, InterfaceThrustPointDto, ReactionDto};
 use super::rolling::RollingOutDto;
-use super::solve::{solve, Problem};
-use crate::error::{ApiError, ProblemResponses};
-use crate::extract::{ApiJson, ApiJsonWithBody};
+use crate::error::ApiError;
 use crate::report::{table, ReportTable};
-use crate::state::AppState;
-use crate::table::{csv, Csv, Row, Table, TableQuery};
-
-/// A table of the dead-load answer as CSV.
-///
-/// The same request and solve as `/arch/dead-load`; `table` chooses the table (a header row of
-/// the JSON field names, then one row per item).
-#[utoipa::path(
-    post,
-    path = "/arch/dead-load/csv",
-    tag = "arch",
-    request_body = DeadLoadRequest,
-    params(ArchTableQuery),
-    responses(
-        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-        ProblemResponses,
-    )
-)]
-pub async fn dead_load_csv(
-    State(state): State<AppState>,
-    Table(table): Table<ArchTableQuery>,
-    ApiJson(request): ApiJson<DeadLoadRequest>,
-) -> Result<Csv, ApiError> {
-    let input = request.validate(state.solve_time_limit_secs())?;
-    let solved = solve(&state, Problem::DeadLoad, input).await?;
-    arch_table(&DeadLoadResponse::new(&solved).outcome, None, table)
-}
-
-/// A table of the live-load answer as CSV.
-///
-/// The same request and solve as `/arch/live-load`; `table` chooses the table (a header row of
-/// the JSON field names, then one row per item); `rolling` is λ at each stop of a rolling load.
-#[utoipa::path(
-    post,
-    path = "/arch/live-load/csv",
-    tag = "arch",
-    request_body = LiveLoadRequest,
-    params(ArchTableQuery),
-    responses(
-        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-        ProblemResponses,
-    )
-)]
-pub async fn live_load_csv(
-    State(state): State<AppState>,
-    Table(table): Table<ArchTableQuery>,
-    ApiJsonWithBody { request, body }: ApiJsonWithBody<LiveLoadRequest>,
-) -> Result<Csv, ApiError> {
-    let solved = super::study::solve_live(&state, (&request, &body), Default::default()).await?;
-    let answer = LiveLoadResponse::new(&solved);
-    arch_table(&answer.outcome, answer.rolling.as_ref(), table)
-}
+use crate::table::{csv, Csv, Row, TableQuery};
 
 /// A table of a dead- or live-load answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]

@@ -1,44 +1,13 @@
-//! `POST /slope/spencer/csv`: the Spencer answer as CSV tables (`?table=`), which tables there
-//! are and their columns.
+//! The Spencer answer's CSV tables (`POST /slope/spencer/csv?table=`): which tables there are
+//! and their columns.
 
-use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use super::options::SlopeDetailDto;
-use super::request::SpencerRequest;
 use super::response::{BoundaryThrustPointDto, PointDto, SliceDto, SpencerResponse};
-use super::solve::solve;
-use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJsonWithBody;
-use crate::state::AppState;
-use crate::table::{csv, Csv, Row, Table, TableQuery};
-
-/// A table of the Spencer answer as CSV.
-///
-/// The same request and solve as `/slope/spencer`; `table` chooses the table (a header row of
-/// the JSON field names, then one row per item): the slices, a line of thrust, the surface or
-/// a search's grid of F.
-#[utoipa::path(
-    post,
-    path = "/slope/spencer/csv",
-    tag = "slope",
-    request_body = SpencerRequest,
-    params(SlopeTableQuery),
-    responses(
-        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-        ProblemResponses,
-    )
-)]
-pub async fn spencer_csv(
-    State(state): State<AppState>,
-    Table(table): Table<SlopeTableQuery>,
-    ApiJsonWithBody { request, body }: ApiJsonWithBody<SpencerRequest>,
-) -> Result<Csv, ApiError> {
-    let solved = solve(&state, (&request, &body), Default::default()).await?;
-    let answer = SpencerResponse::new(&solved).with_details(request.include.as_deref());
-    slope_table(&answer, table)
-}
+use crate::error::ApiError;
+use crate::table::{csv, Csv, Row, TableQuery};
 
 /// A table of a Spencer answer.
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, ToSchema, PartialEq, Eq)]

@@ -136,10 +136,10 @@ pub(crate) fn read_mechanism(
         let k = tag.interface;
         let angle_deg = assembly.interfaces[k].angle_deg;
         let hinge = match (tag.resultant, tag.bound) {
-            (super::Resultant::Q, Bound::Lower) => Some(HingeSide::Intrados),
-            (super::Resultant::S, Bound::Lower) => Some(HingeSide::Extrados),
-            (super::Resultant::M, Bound::Upper) => Some(HingeSide::Extrados),
-            (super::Resultant::M, Bound::Lower) => Some(HingeSide::Intrados),
+            (Resultant::Q, Bound::Lower) => Some(HingeSide::Intrados),
+            (Resultant::S, Bound::Lower) => Some(HingeSide::Extrados),
+            (Resultant::M, Bound::Upper) => Some(HingeSide::Extrados),
+            (Resultant::M, Bound::Lower) => Some(HingeSide::Intrados),
             _ => None,
         };
         if let Some(side) = hinge {

@@ -41,7 +41,7 @@ pub fn memory_bound(problem: &ArchProblem, plan: &ArchPlan) -> usize {
         Programme::Rolling(stops) => stops.iter().map(Vec::len).sum::<usize>(),
         Programme::DeadLoad | Programme::LiveLoad => 0,
     };
-    let stops = stops.saturating_mul(2 * std::mem::size_of::<super::LiveLoad>());
+    let stops = stops.saturating_mul(2 * std::mem::size_of::<super::equilibrium::LiveLoad>());
     if on_chain(problem, plan) {
         return chain_memory_bound(assembly.blocks.len()).saturating_add(stops);
     }

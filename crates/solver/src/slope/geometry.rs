@@ -113,11 +113,11 @@ impl SlipCircle {
 
     /// The circle as a section's: centre (−F_e·H + X, Y), radius √(X² + Y²), after the checks
     /// of the thesis' variables (Y > 0, F_e ≥ 0, all finite).
-    pub fn placed(&self, height: f64) -> Result<super::section::SlipShape, SlopeError> {
+    pub fn placed(&self, height: f64) -> Result<super::section::shape::SlipShape, SlopeError> {
         self.check()?;
         // `+ 0.0` turns −0.0 (F_e = 0) into 0.0.
         let through = -self.lower_end_factor * height + 0.0;
-        Ok(super::section::SlipShape::Circle {
+        Ok(super::section::shape::SlipShape::Circle {
             centre: (through + self.x, self.y),
             radius: self.x.hypot(self.y),
         })

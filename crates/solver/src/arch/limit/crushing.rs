@@ -6,7 +6,7 @@
 //! falls monotonically to the exact value. Without crushing, one solve.
 
 use super::problem::{ArchProblem, Crushing, LimitSettings, LimitSolution, LimitStatus};
-use crate::arch::ArchError;
+use crate::arch::error::ArchError;
 use crate::outcome::SolverFailure;
 
 /// Rounds of cuts at most (each adds at most two rows per interface).

@@ -9,26 +9,25 @@
 pub mod methods;
 pub mod report;
 mod search;
+mod search_plan;
 pub mod surface;
 
 use std::num::NonZeroUsize;
-use std::time::Duration;
 
 use crate::budget::{Budget, Stop};
 use crate::slope::accuracy::{estimate, to_accuracy, Accuracy, Recut};
 use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStatus};
 use crate::slope::search::{SearchGrid, SearchProblem};
-use crate::slope::section::search::CircleRegion;
-use crate::slope::section::Section;
 use crate::slope::slices::{SliceModel, Sliced};
 use crate::slope::spencer::methods::InterSliceFunction;
 use crate::slope::spencer::{
-    factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress, Seismic,
+    factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress,
     SpencerSettings, SpencerSolution,
 };
 use crate::slope::SlopeError;
 pub use methods::{Method, MethodAnswer, MethodFactors};
 pub use report::{Refinement, SearchReport, SlopeAnswer, SlopeOutcome, SlopeStage};
+pub use search_plan::{Candidates, Noncircular, SectionSearch};
 pub use surface::{Analysed, PlacedCircle};
 
 /// What an analysis answers: one given surface, or the critical one of a search.
@@ -48,35 +47,6 @@ pub enum Target {
     },
     /// The critical circle of a section, then perhaps a non-circular surface.
     SectionSearch(Box<SectionSearch>),
-}
-
-/// A search for the critical circle of a section.
-#[derive(Debug, Clone)]
-pub struct SectionSearch {
-    /// The section.
-    pub section: Section,
-    /// The centres and radii.
-    pub region: CircleRegion,
-    /// Whether the bounds were given (they then stay put).
-    pub hard: bool,
-    /// Slices per surface.
-    pub slices: NonZeroUsize,
-    /// Seismic coefficients.
-    pub seismic: Seismic,
-    /// With a non-circular stage: its polyline.
-    pub noncircular: Option<Noncircular>,
-}
-
-/// The non-circular stage: a polyline of `vertices` points, moved from the best circle's.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Noncircular {
-    /// Vertices of the polyline.
-    pub vertices: usize,
-    /// The most the stage may spend (within the analysis' own budget).
-    pub budget: Option<Duration>,
-    /// The most trial surfaces the stage may evaluate: a budget that gives the same answer on
-    /// any machine.
-    pub max_evaluations: Option<usize>,
 }
 
 /// The slices an accuracy asked for starts doubling from.
@@ -110,16 +80,6 @@ pub struct SlopePlan {
     /// A design check: the target is already in its design values; the answer gets the
     /// verdict.
     pub design: Option<crate::slope::design::Design>,
-}
-
-/// The surfaces a search may answer (model §6.4).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Candidates {
-    /// Surfaces whose greatest depth below the ground is smaller are not candidates.
-    pub min_depth: f64,
-    /// Whether a circle that would cross the bedrock is not a candidate (otherwise it follows
-    /// the bedrock: a composite surface).
-    pub circles_only: bool,
 }
 
 impl SlopePlan {

@@ -39,7 +39,7 @@ pub struct SearchReport {
     /// Whether the budget ended a non-circular search (its answer is the best so far).
     pub timed_out: bool,
     /// What the search could answer.
-    pub candidates: super::Candidates,
+    pub candidates: super::search_plan::Candidates,
 }
 
 impl SearchReport {
@@ -59,7 +59,7 @@ impl SearchReport {
             path: None,
             path_ms: None,
             timed_out: false,
-            candidates: super::Candidates::default(),
+            candidates: super::search_plan::Candidates::default(),
         }
     }
 
@@ -78,7 +78,7 @@ impl SearchReport {
             path: None,
             path_ms: None,
             timed_out: false,
-            candidates: super::Candidates::default(),
+            candidates: super::search_plan::Candidates::default(),
         }
     }
 }

@@ -3,8 +3,8 @@
 //! found (rebuilt at the plan's slices) with its report, or the stop that left it without one.
 
 use super::report::SearchReport;
+use super::search_plan::{Candidates, SectionSearch};
 use super::surface::Analysed;
-use super::{Candidates, SectionSearch};
 use crate::budget::{Budget, Stop};
 use crate::slope::search::{
     search_critical_circle, SearchGrid, SearchProblem, SearchSettings, SearchStatus,

@@ -2,8 +2,8 @@
 //! slices' weights and loads are integrated piecewise between these) and where water stands
 //! above the ground.
 
+use super::model::Section;
 use super::polyline::Polyline;
-use super::Section;
 
 /// Where the lines above the bases bend or cross (ground, layer tops, the water line, surcharge
 /// edges), over the whole section, sorted: the slice weights and loads are integrated piecewise

@@ -4,8 +4,8 @@
 //! is where the critical surface runs, and no circle, nor a polyline moved from one, finds a
 //! seam a few centimetres thick; a base laid along it does.
 
+use super::model::Section;
 use super::polyline::Polyline;
-use super::Section;
 
 /// How far above or below a boundary a base runs, relative to the section's size: inside the
 /// layer on that side however thin the layer, yet the same line to any measurement.

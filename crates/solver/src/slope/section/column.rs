@@ -5,92 +5,7 @@
 //! Levels are read once per slice side; between the points where a line bends or two lines
 //! cross every line is straight, so the levels half-way are the mean of the levels at the ends.
 
-use super::polyline::Polyline;
-use super::Section;
-
-/// Entries a [`LevelTable`] may hold (16 bytes each: 4 MiB). Sections of realistic size need a
-/// few thousand; one of 50 zigzag layers crossing a zigzag ground would need a hundred
-/// megabytes, and is read line by line instead.
-const MAX_TABLE_ENTRIES: usize = 1 << 18;
-
-/// The section's lines (layer tops, the ground for a layer without one, then the water line)
-/// stretch by stretch between the bends, where each is straight: reading the levels at x is one
-/// search for the stretch and a line per level. Empty (each line searched on its own) when it
-/// would exceed [`MAX_TABLE_ENTRIES`].
-#[derive(Debug, Clone, Default, PartialEq)]
-pub(super) struct LevelTable {
-    /// Where each stretch starts: the bends (the first stretch, before them, starts at the first).
-    starts: Vec<f64>,
-    /// Per stretch and line: the level at the stretch's start and the slope.
-    rows: Vec<(f64, f64)>,
-    /// Lines per stretch.
-    lines: usize,
-}
-
-impl LevelTable {
-    /// The table of `section`'s lines over `bends` (sorted, at least one, every vertex of the
-    /// lines among them: beyond the first and last the lines are level).
-    pub fn new(section: &Section, bends: &[f64]) -> Self {
-        let lines: Vec<Option<&Polyline>> = section
-            .layers
-            .iter()
-            .map(|l| Some(l.top.as_ref().unwrap_or(&section.ground)))
-            .chain(std::iter::once(section.piezometric_line.as_ref()))
-            .collect();
-        if (bends.len() + 1).saturating_mul(lines.len()) > MAX_TABLE_ENTRIES {
-            return Self::default();
-        }
-        let y = |line: Option<&Polyline>, x: f64| line.map_or(f64::NAN, |l| l.y_at(x));
-        let mut rows = Vec::with_capacity((bends.len() + 1) * lines.len());
-        for j in 0..=bends.len() {
-            for &line in &lines {
-                rows.push(match (j.checked_sub(1), bends.get(j)) {
-                    (Some(i), Some(&end)) => {
-                        let (start, y0) = (bends[i], y(line, bends[i]));
-                        (y0, (y(line, end) - y0) / (end - start))
-                    }
-                    (Some(i), None) => (y(line, bends[i]), 0.0),
-                    (None, _) => (y(line, bends.first().copied().unwrap_or(0.0)), 0.0),
-                });
-            }
-        }
-        Self {
-            starts: bends.to_vec(),
-            rows,
-            lines: lines.len(),
-        }
-    }
-
-    /// Whether there is no table (the lines are read one by one).
-    pub fn is_empty(&self) -> bool {
-        self.rows.is_empty()
-    }
-
-    /// The stretch holding x, looked for from `cursor` (the stretch of the last read, which it
-    /// becomes) by walking, and x's distance from the stretch's start. The first start beyond
-    /// x, as `partition_point(|&s| s <= x)` gives it (x is finite).
-    fn stretch(&self, x: f64, cursor: &mut usize) -> (usize, f64) {
-        let starts = &self.starts;
-        let mut j = (*cursor).min(starts.len());
-        while j < starts.len() && starts[j] <= x {
-            j += 1;
-        }
-        while j > 0 && starts[j - 1] > x {
-            j -= 1;
-        }
-        *cursor = j;
-        let dx = x - starts.get(j.saturating_sub(1)).copied().unwrap_or(x);
-        (j, dx)
-    }
-
-    /// The ground's level at x, as [`Levels::read_from`] reads it (the same arithmetic); the
-    /// table must not be empty.
-    pub fn ground_at(&self, x: f64, cursor: &mut usize) -> f64 {
-        let (j, dx) = self.stretch(x, cursor);
-        let (y, slope) = self.rows[j * self.lines];
-        y + slope * dx
-    }
-}
+use super::model::Section;
 
 /// The bends of a cut that lie inside each of its slices, found by walking (the slices come left
 /// to right): for sides x_l ≤ x_r, the points p with x_l < p < x_r, the same as
@@ -161,7 +76,8 @@ impl Levels {
         }
     }
 
-    /// Reads each line at x on its own (sections too large for a [`LevelTable`]).
+    /// Reads each line at x on its own (sections too large for a
+    /// [`LevelTable`](super::model::LevelTable)).
     fn read_lines(&mut self, section: &Section, x: f64) {
         self.0.clear();
         let g = section.ground.y_at(x);

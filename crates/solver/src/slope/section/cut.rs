@@ -10,9 +10,10 @@ use std::num::NonZeroUsize;
 
 use smallvec::SmallVec;
 
+use super::model::Section;
 use super::polyline::Polyline;
+use super::shape::SlipShape;
 use super::slicing::{slice_all, still_water_level, Slicing};
-use super::{Section, SlipShape};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
 use crate::slope::spare;
@@ -34,7 +35,7 @@ pub(super) struct Cut {
     /// Whether the solver frame is the section mirrored.
     pub mirrored: bool,
     /// Each support of the section against this surface (solver frame).
-    pub supports: Vec<super::SupportForce>,
+    pub supports: Vec<super::supports::SupportForce>,
     /// With a rapid drawdown: what its stages gave (the model has the last stage's strengths).
     pub drawdown: Option<super::drawdown::DrawdownStages>,
 }

@@ -16,30 +16,13 @@
 //! The slices of both stages are the same: each stage's slices are also cut where the other
 //! stage's water line crosses the surface.
 
-use super::{Polyline, Section};
+pub use super::model::REnvelope;
+use super::model::{Drawdown, Section};
+use super::polyline::Polyline;
 use crate::slope::error::{check_range, SlopeError, SlopeParameter};
 use crate::slope::slices::SliceModel;
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
 use crate::slope::strength::Strength;
-
-/// A soil's total-stress (R) envelope from consolidated-undrained tests: the line tangent to
-/// the circles drawn with σ′_3c and (σ₁ − σ₃)_f.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct REnvelope {
-    /// Its intercept c_R.
-    pub cohesion: f64,
-    /// Its slope φ_R in radians.
-    pub friction_angle_rad: f64,
-}
-
-/// The pool before the drawdown and the soils that do not drain.
-#[derive(Debug, Clone, PartialEq)]
-pub(super) struct Drawdown {
-    /// The section as it stood before: the same, with the water line before the drawdown.
-    pub before: Section,
-    /// Per layer, its R envelope; `None` where the soil drains freely.
-    pub envelopes: Vec<Option<REnvelope>>,
-}
 
 impl Drawdown {
     /// The R envelope of layer `layer`'s soil; `None` where it drains freely.
@@ -120,7 +103,7 @@ impl Section {
                 r.cohesion,
                 0.0,
                 false,
-                super::MAX_MAGNITUDE,
+                super::validate::MAX_MAGNITUDE,
                 "0 ≤ c_R ≤ 1e12",
             )?;
             check_range(

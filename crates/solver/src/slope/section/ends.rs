@@ -3,7 +3,7 @@
 use smallvec::{smallvec, SmallVec};
 
 use super::polyline::Polyline;
-use super::SlipShape;
+use super::shape::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
 
 /// Relative tolerance on heights for "at the ground".

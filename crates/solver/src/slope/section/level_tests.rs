@@ -3,11 +3,12 @@
 
 use std::num::NonZeroUsize;
 
-use super::column::{LevelTable, Levels};
+use super::column::Levels;
+use super::model::LevelTable;
 use super::tests::{line, one_soil};
 use super::*;
-use crate::slope::spencer::Seismic;
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
+use crate::slope::spencer::{Seismic, Soil};
 
 #[test]
 fn ponded_stretches_are_where_the_water_stands_above_the_ground() {

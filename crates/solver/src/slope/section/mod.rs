@@ -9,6 +9,7 @@
 
 mod bends;
 mod blocks;
+mod buffers;
 mod column;
 mod cut;
 pub mod drawdown;
@@ -17,10 +18,12 @@ mod ends;
 mod level_tests;
 #[cfg(test)]
 mod method_tests;
+mod model;
 pub mod noncircular;
 mod plain;
 pub mod polyline;
 pub mod search;
+pub(super) mod shape;
 mod simple;
 mod slicing;
 pub mod supports;
@@ -36,124 +39,15 @@ use std::num::NonZeroUsize;
 use std::sync::Arc;
 
 use super::slices::{SliceModel, Sliced};
-use super::spencer::{ExternalLoad, Seismic, Soil};
+use super::spencer::{ExternalLoad, Seismic};
+use model::LevelTable;
+pub use model::{Layer, LineLoad, Section, SectionParts, Surcharge, TensionCrack};
 pub use polyline::{Polyline, PolylineError};
+pub use shape::SlipShape;
 pub use supports::{Support, SupportForce};
 pub use water::{Hu, PoreGrid, Water, WaterLine};
 
 use super::strength::{Envelope, Strength};
-
-/// Largest magnitude of a pressure, force or unit weight (as for the simple form).
-const MAX_MAGNITUDE: f64 = 1e12;
-
-/// One soil layer: its top line (`None` for the first: the ground) and its soil.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Layer {
-    /// Top of the layer; `None` = the ground (the first layer only).
-    pub top: Option<Polyline>,
-    /// The soil (its own r_u is not used: see `pore_pressure_ratio`).
-    pub soil: Soil,
-    /// r_u of this soil; when given it sets the pore pressure at bases in this soil, in place
-    /// of the piezometric line.
-    pub pore_pressure_ratio: Option<f64>,
-    /// The strength model (Mohr–Coulomb: the soil's c′ and φ′).
-    pub strength: Strength,
-    /// The layer's own piezometric line: the pore pressure at bases in this soil (unless it
-    /// has its own r_u), in place of the grid and the section's line.
-    pub piezometric_line: Option<WaterLine>,
-}
-
-/// A vertical pressure on the ground over [x_start, x_end], varying linearly.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Surcharge {
-    /// Left end.
-    pub x_start: f64,
-    /// Right end (> x_start).
-    pub x_end: f64,
-    /// Pressure at x_start (downward, ≥ 0).
-    pub pressure: f64,
-    /// Pressure at x_end (downward, ≥ 0).
-    pub pressure_end: f64,
-}
-
-/// A force on the ground point above x.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LineLoad {
-    /// Where it acts (on the ground above x).
-    pub x: f64,
-    /// Horizontal component, positive towards +x.
-    pub fx: f64,
-    /// Vertical component, positive upwards.
-    pub fy: f64,
-}
-
-/// A tension crack: the ground moved down by `depth`, with water `water_depth` deep in it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TensionCrack {
-    /// Depth of the crack below the ground (> 0).
-    pub depth: f64,
-    /// Depth of water in the crack, measured up from its bottom (0 ≤ z_w ≤ depth).
-    pub water_depth: f64,
-}
-
-/// A validated cross-section.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Section {
-    pub(crate) ground: Polyline,
-    pub(crate) layers: Vec<Layer>,
-    pub(crate) bedrock: Option<Polyline>,
-    pub(crate) piezometric_line: Option<Polyline>,
-    pub(crate) water_unit_weight: f64,
-    pub(crate) surcharges: Vec<Surcharge>,
-    pub(crate) line_loads: Vec<LineLoad>,
-    pub(crate) tension_crack: Option<TensionCrack>,
-    pub(crate) supports: Vec<Support>,
-    pub(crate) water: Water,
-    /// Per layer, its nonlinear envelope (empty when none has one): what the slice models of
-    /// this section carry.
-    envelopes: Option<Arc<[Option<Envelope>]>>,
-    /// Where the lines above the bases bend or cross, sorted ([`bends::bends`]).
-    bends: Vec<f64>,
-    /// The lines above the bases between the bends.
-    levels: column::LevelTable,
-    /// The stretches of x (between bends, or beyond the last ones) where the piezometric line
-    /// lies above the ground somewhere: ponded water. Sorted, merged.
-    ponded: Vec<(f64, f64)>,
-    /// Whether the ground is level beyond its ends by definition (the simple embankment) rather
-    /// than as stated only so far (a section's ground line).
-    level_beyond_ends: bool,
-    /// Rapid drawdown: the section before it and the soils that do not drain (the piezometric
-    /// line is the one after it).
-    drawdown: Option<Box<drawdown::Drawdown>>,
-    /// The other stage's water line of a drawdown: its crossings cut the slices too, so that
-    /// both stages have the same slices.
-    other_water_line: Option<Polyline>,
-}
-
-/// Everything a [`Section`] is built from.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SectionParts {
-    /// Ground line.
-    pub ground: Polyline,
-    /// Layers from the top down (at least one; the first one's top is the ground).
-    pub layers: Vec<Layer>,
-    /// Bedrock line: no slip surface passes below it.
-    pub bedrock: Option<Polyline>,
-    /// Piezometric line.
-    pub piezometric_line: Option<Polyline>,
-    /// γ_w (> 0).
-    pub water_unit_weight: f64,
-    /// Surcharges.
-    pub surcharges: Vec<Surcharge>,
-    /// Line loads.
-    pub line_loads: Vec<LineLoad>,
-    /// Tension crack.
-    pub tension_crack: Option<TensionCrack>,
-    /// Reinforcement (model §7).
-    pub supports: Vec<Support>,
-    /// h_u of the piezometric line and a pore-pressure grid (model §8).
-    pub water: Water,
-}
 
 impl Section {
     /// Validates the parts that depend on each other (polylines are valid by construction).
@@ -172,7 +66,7 @@ impl Section {
             supports: parts.supports,
             water: parts.water,
             bends: Vec::new(),
-            levels: column::LevelTable::default(),
+            levels: LevelTable::default(),
             ponded: Vec::new(),
             level_beyond_ends: false,
             drawdown: None,
@@ -184,78 +78,9 @@ impl Section {
     /// The section with its bends found.
     fn with_bends(mut self) -> Self {
         self.bends = bends::bends(&self);
-        self.levels = column::LevelTable::new(&self, &self.bends);
+        self.levels = LevelTable::new(&self, &self.bends);
         self.ponded = bends::ponded(&self);
         self
-    }
-
-    /// Whether ponded water stands anywhere over [a, b].
-    pub(crate) fn is_ponded_over(&self, a: f64, b: f64) -> bool {
-        self.ponded.iter().any(|&(lo, hi)| lo < b && a < hi)
-    }
-
-    /// Whether the ground is level beyond its ends by definition (the simple embankment):
-    /// a surface reaching beyond a section's stated ground deserves a warning, the simple
-    /// embankment's does not.
-    pub fn is_level_beyond_ends(&self) -> bool {
-        self.level_beyond_ends
-    }
-
-    /// The ground line.
-    pub fn ground(&self) -> &Polyline {
-        &self.ground
-    }
-
-    /// The layers, top down.
-    pub fn layers(&self) -> &[Layer] {
-        &self.layers
-    }
-
-    /// The bedrock line.
-    pub fn bedrock(&self) -> Option<&Polyline> {
-        self.bedrock.as_ref()
-    }
-
-    /// The piezometric line.
-    pub fn piezometric_line(&self) -> Option<&Polyline> {
-        self.piezometric_line.as_ref()
-    }
-
-    /// The surcharges.
-    pub fn surcharges(&self) -> &[Surcharge] {
-        &self.surcharges
-    }
-
-    /// The line loads.
-    pub fn line_loads(&self) -> &[LineLoad] {
-        &self.line_loads
-    }
-
-    /// The tension crack.
-    pub fn tension_crack(&self) -> Option<TensionCrack> {
-        self.tension_crack
-    }
-
-    /// The supports.
-    pub fn supports(&self) -> &[Support] {
-        &self.supports
-    }
-
-    /// h_u of the piezometric line and the pore-pressure grid.
-    pub fn water(&self) -> &Water {
-        &self.water
-    }
-
-    /// Whether pore pressures come from more than the section's piezometric line at full head
-    /// and the soils' r_u: a layer's own line, h_u or a grid.
-    pub(crate) fn has_water_models(&self) -> bool {
-        !self.water.is_plain() || self.layers.iter().any(|l| l.piezometric_line.is_some())
-    }
-
-    /// Where the ground, layer tops and water line bend or cross, and the surcharge edges,
-    /// sorted: between two of these every line of the section is straight.
-    pub fn bends(&self) -> &[f64] {
-        &self.bends
     }
 }
 
@@ -273,33 +98,6 @@ fn envelopes(layers: &[Layer]) -> Option<Arc<[Option<Envelope>]>> {
                 })
                 .collect()
         })
-}
-
-/// A slip surface in the section's coordinates.
-#[derive(Debug, Clone, PartialEq)]
-pub enum SlipShape {
-    /// A circle; the sliding mass lies above the arc between the two crossings of the ground
-    /// that bound the deepest part of the arc.
-    Circle {
-        /// Centre.
-        centre: (f64, f64),
-        /// Radius (> 0).
-        radius: f64,
-    },
-    /// A polyline whose first and last points lie at or above the ground.
-    Polyline(Polyline),
-}
-
-impl SlipShape {
-    fn mirrored(&self) -> Self {
-        match self {
-            Self::Circle { centre, radius } => Self::Circle {
-                centre: (-centre.0, centre.1),
-                radius: *radius,
-            },
-            Self::Polyline(line) => Self::Polyline(line.mirrored()),
-        }
-    }
 }
 
 /// One slip surface on one section, cut into slices, ready to solve.

@@ -13,8 +13,9 @@ use std::time::Instant;
 
 use super::blocks;
 use super::cut::place;
+use super::model::Section;
 use super::polyline::Polyline;
-use super::{Section, SlipShape};
+use super::shape::SlipShape;
 use crate::budget::Budget;
 use crate::numerics::nelder_mead;
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};

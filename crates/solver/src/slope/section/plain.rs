@@ -4,7 +4,8 @@
 //! every side: the same slices bit for bit (tested against it), at a fraction of the cost of a
 //! search's circles.
 
-use super::{column, Section};
+use super::column;
+use super::model::Section;
 use crate::slope::slices::BaseSlice;
 use crate::slope::strength::Strength;
 
@@ -70,7 +71,7 @@ pub(super) fn slices(
     let mut cursor = 0;
     let mut inner_points = column::InnerPoints::default();
     let count = xs.len().saturating_sub(1);
-    let (mut slices, mut surface) = super::slicing::vectors(xs.len());
+    let (mut slices, mut surface) = super::buffers::vectors(xs.len());
     let mut gl = table.ground_at(xs[0], &mut cursor);
     let mut bl = base_at(0, xs[0], gl);
     surface.push((xs[0], bl));

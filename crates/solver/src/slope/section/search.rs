@@ -11,8 +11,9 @@ use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
 
+use super::model::Section;
+use super::shape::SlipShape;
 use super::trial::{trial, Outcome};
-use super::{Section, SlipShape};
 use crate::budget::Budget;
 use crate::numerics::nelder_mead_to;
 use crate::outcome::SolverFailure;

@@ -1,6 +1,8 @@
 //! Sections built from other sections or from the simple embankment.
 
-use super::{column, Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, Water};
+use super::model::{Drawdown, Layer, LevelTable, LineLoad, Section, SectionParts, Surcharge};
+use super::polyline::Polyline;
+use super::water::Water;
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::spencer::Soil;
 use crate::slope::strength::Strength;
@@ -72,11 +74,11 @@ impl Section {
             water: self.water.mirrored(),
             envelopes: self.envelopes.clone(),
             bends: Vec::new(),
-            levels: column::LevelTable::default(),
+            levels: LevelTable::default(),
             ponded: Vec::new(),
             level_beyond_ends: self.level_beyond_ends,
             drawdown: self.drawdown.as_ref().map(|d| {
-                Box::new(super::drawdown::Drawdown {
+                Box::new(Drawdown {
                     before: d.before.mirrored(),
                     envelopes: d.envelopes.clone(),
                 })

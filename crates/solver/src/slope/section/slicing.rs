@@ -5,14 +5,14 @@
 //!
 //! The lines are read once per side: the column over a side serves the slices on both of it.
 
+use super::buffers::vectors;
 use super::column::{
     column, ground, pore_pressure, side_water, soil_at, water, water_from_line_alone, InnerPoints,
     Levels,
 };
+use super::model::Section;
 use super::plain::PlainSoil;
-use super::Section;
 use crate::slope::slices::BaseSlice;
-use crate::slope::spare;
 use crate::slope::strength::Strength;
 
 /// The slices of one cut.
@@ -141,26 +141,6 @@ pub(super) fn slice_all(
 
 thread_local! {
     static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
-    /// A searched cut's slices and surface, given back once it is solved ([`give_back`]).
-    static SPARE_SLICES: std::cell::Cell<Vec<BaseSlice>> =
-        const { std::cell::Cell::new(Vec::new()) };
-    static SPARE_SURFACE: std::cell::Cell<Vec<(f64, f64)>> =
-        const { std::cell::Cell::new(Vec::new()) };
-}
-
-/// Empty vectors for a cut's slices and surface, with room for `sides` sides (and a crack's
-/// top): the thread's spares ([`spare`]).
-pub(super) fn vectors(sides: usize) -> (Vec<BaseSlice>, Vec<(f64, f64)>) {
-    let (mut slices, mut surface) = (spare::take(&SPARE_SLICES), spare::take(&SPARE_SURFACE));
-    slices.reserve(sides.saturating_sub(1));
-    surface.reserve(sides + 1);
-    (slices, surface)
-}
-
-/// A cut's slices and surface, no longer needed, kept for the next cut on this thread.
-pub(super) fn give_back(slices: Vec<BaseSlice>, surface: Vec<(f64, f64)>) {
-    spare::keep(&SPARE_SLICES, slices);
-    spare::keep(&SPARE_SURFACE, surface);
 }
 
 /// [`slice_all`] with its buffers given.

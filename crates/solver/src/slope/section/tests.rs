@@ -6,8 +6,8 @@ use super::search::{search_circles, CircleRegion, CircleSearch, CircleSearchSett
 use super::*;
 use crate::budget::Budget;
 use crate::slope::search::SearchStatus;
-use crate::slope::spencer::Seismic;
 use crate::slope::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
+use crate::slope::spencer::{Seismic, Soil};
 
 pub(super) fn line(points: &[(f64, f64)]) -> Polyline {
     Polyline::new(points.to_vec()).unwrap()

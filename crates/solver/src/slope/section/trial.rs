@@ -3,7 +3,8 @@
 use std::num::NonZeroUsize;
 
 use super::cut::{place_for_search, Cut};
-use super::{Section, SlipShape};
+use super::model::Section;
+use super::shape::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::spencer::{
     spencer_factor_outcome_near, FactorOutcome, Seismic, SpencerFactor, SpencerSettings,
@@ -58,6 +59,6 @@ pub(super) fn trial(
         FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
         FactorOutcome::Undriven => Err(None),
     };
-    super::slicing::give_back(cut.model.slices, cut.surface);
+    super::buffers::give_back(cut.model.slices, cut.surface);
     outcome
 }

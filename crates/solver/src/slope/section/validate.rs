@@ -2,10 +2,11 @@
 //! construction): layers listed from the top down, ranges of r_u, γ_w, loads and the crack,
 //! loads and lines over the ground, bedrock below it.
 
-use super::SectionParts;
+use super::model::SectionParts;
 use crate::slope::error::{check_range, SlopeError, SlopeParameter};
 
-use super::MAX_MAGNITUDE;
+/// Largest magnitude of a pressure, force or unit weight (as for the simple form).
+pub(super) const MAX_MAGNITUDE: f64 = 1e12;
 
 /// Checks `parts`; the first failure names its input.
 pub(super) fn check(parts: &SectionParts) -> Result<(), SlopeError> {

@@ -38,19 +38,24 @@ mod kernel;
 pub mod methods;
 mod newton;
 mod nonlinear;
+mod physical;
 mod problem;
 mod scan;
 mod solution;
 #[cfg(test)]
 mod tests;
 
+use consistent::{consistent, is_nonlinear, Step};
 use describe::describe;
 use equations::Equations;
 use newton::solve_equations;
+use nonlinear::effective_normals;
+use physical::is_physical;
 
 use crate::slope::slices::SliceModel;
 
 pub use describe::SMALL_DENOMINATOR;
+pub use physical::PHYSICAL_F;
 pub use problem::{ExternalLoad, Seismic, SlopeProblem, Soil};
 pub use solution::{
     NegativeEffectiveStress, SliceForces, SpencerSettings, SpencerSolution, SpencerStatus,
@@ -66,9 +71,6 @@ pub struct SpencerFactor {
     /// ([`SpencerStatus::MomentOnly`]).
     pub theta_rad: Option<f64>,
 }
-
-/// The range of F a physical root lies in (the bracketing range of the solver).
-pub const PHYSICAL_F: (f64, f64) = (1e-6, 1e6);
 
 /// Spencer's (F, θ) alone, without the per-slice forces: what a search over circles needs.
 /// `None` when the equations have no physical solution.
@@ -102,7 +104,7 @@ pub enum FactorOutcome {
 /// Spencer's F for a search, or Bishop's F as an indication where Spencer's has no solution;
 /// on nonlinear envelopes, at their consistent state.
 pub fn spencer_factor_outcome(model: &SliceModel, settings: &SpencerSettings) -> FactorOutcome {
-    nonlinear::factor_outcome(model, settings, None)
+    consistent_factor_outcome(model, settings, None)
 }
 
 /// [`spencer_factor_outcome`] of a search's trial surface next to one whose F `near` is known:
@@ -117,7 +119,7 @@ pub fn spencer_factor_outcome_near(
     settings: &SpencerSettings,
     near: Option<f64>,
 ) -> FactorOutcome {
-    nonlinear::factor_outcome(model, settings, near)
+    consistent_factor_outcome(model, settings, near)
 }
 
 /// [`spencer_factor_outcome_near`] with each base's strength as it stands.
@@ -196,29 +198,13 @@ fn reported_bishop(model: &SliceModel, about_reference: Option<f64>) -> Option<f
     }
 }
 
-/// Whether a root is physical: F within [`PHYSICAL_F`] and Σ N'·tan φ' ≥ 0.
-fn is_physical(equations: &Equations, f: f64, theta: f64) -> bool {
-    let (sin_t, cos_t) = theta.sin_cos();
-    let friction: f64 = equations
-        .terms
-        .iter()
-        .map(|t| {
-            let q = Equations::q(t, f, (sin_t, cos_t)).q;
-            // sin(α − θ) from the stored sin α, cos α.
-            let normal = t.a_n + q * (t.sin_alpha * cos_t - t.cos_alpha * sin_t);
-            (normal - t.pore_force) * t.tan_phi
-        })
-        .sum();
-    (PHYSICAL_F.0..=PHYSICAL_F.1).contains(&f) && friction >= 0.0
-}
-
 /// Solves Spencer's two equations for the slip surface of `model`, with the treatment of
 /// negative effective stress of `settings`; on nonlinear envelopes, to their consistent state.
 pub fn solve_spencer(model: &SliceModel, settings: &SpencerSettings) -> SpencerSolution {
-    if !consistent::is_nonlinear(model) {
+    if !is_nonlinear(model) {
         return solve_tension(model, settings);
     }
-    nonlinear::solve(model, settings).0
+    solve_consistent(model, settings).0
 }
 
 /// Spencer's equations with the treatment of tension of `settings`, each base's strength as
@@ -286,6 +272,63 @@ pub fn with_strength_dropped(
     out.fixed.sort_unstable();
     out.fixed.dedup();
     out
+}
+
+/// `model` with each base's strength fixed where it stands (nothing left to move).
+fn fixed(mut model: SliceModel) -> SliceModel {
+    model.envelopes = None;
+    model.fixed.clear();
+    model
+}
+
+/// Spencer's solution at the consistent state of a model with nonlinear bases, and the model
+/// with each base's tangent there (the callers solve a model without any directly).
+fn solve_consistent(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+) -> (SpencerSolution, SliceModel) {
+    let (mut solution, consistency, current) = consistent(model, |m| {
+        let s = solve_tension(m, settings);
+        if s.factor_of_safety.is_some() {
+            let normals = s
+                .slice_forces
+                .iter()
+                .map(|f| f.effective_normal_force)
+                .collect();
+            Step::Next(s, normals)
+        } else {
+            Step::Done(s)
+        }
+    });
+    solution.strength = consistency;
+    (solution, fixed(current))
+}
+
+/// Spencer's F for a search at the consistent state; a state that does not settle is unsolved.
+/// `near`: a neighbouring surface's F, to start Bishop's F from (linear envelopes only).
+fn consistent_factor_outcome(
+    model: &SliceModel,
+    settings: &SpencerSettings,
+    near: Option<f64>,
+) -> FactorOutcome {
+    if !is_nonlinear(model) {
+        return linear_factor_outcome(model, settings, near);
+    }
+    let (outcome, consistency, _) =
+        consistent(model, |m| match linear_factor_outcome(m, settings, None) {
+            FactorOutcome::Solved(s) => {
+                let theta = s.theta_rad.unwrap_or(0.0);
+                let normals = effective_normals(m, s.factor_of_safety, theta);
+                Step::Next(FactorOutcome::Solved(s), normals)
+            }
+            other => Step::Done(other),
+        });
+    match outcome {
+        FactorOutcome::Solved(_) if !consistency.settled => {
+            FactorOutcome::Unsolved { bishop: None }
+        }
+        other => other,
+    }
 }
 
 /// The classic equations, with the physical check.
@@ -359,8 +402,8 @@ const CURVE_HALF_WIDTH_DEG: i32 = 30;
 /// on nonlinear envelopes, with each base's tangent at its consistent state (where the curves
 /// cross at the answer).
 pub fn factor_curves_around(model: &SliceModel, theta_rad: f64) -> FactorCurves {
-    if consistent::is_nonlinear(model) {
-        let (_, consistent) = nonlinear::solve(model, &SpencerSettings::default());
+    if is_nonlinear(model) {
+        let (_, consistent) = solve_consistent(model, &SpencerSettings::default());
         return factor_curves_around(&consistent, theta_rad);
     }
     let centre = theta_rad.to_degrees().round();

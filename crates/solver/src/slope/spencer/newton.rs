@@ -2,6 +2,7 @@
 //! Spencer's own construction (F_f and F_m crossing, found by Brent's method) when Newton fails.
 
 use super::equations::{Equations, Residuals};
+use super::physical::is_physical;
 use super::solution::SpencerSettings;
 use crate::numerics::brent;
 
@@ -129,11 +130,11 @@ fn normalised(theta: f64) -> f64 {
 }
 
 /// The poles a root lies past (slices whose m_α has the minority sign), when it is sound:
-/// physical ([`super::is_physical`]), and every slice past its pole pressed onto its base
+/// physical ([`is_physical`]), and every slice past its pole pressed onto its base
 /// (N' ≥ 0 to rounding: near a pole N' is unbounded, and a slice held up by tension there is
 /// the pole's artefact, not a mechanism).
 fn sound_root(equations: &Equations, f: f64, theta: f64) -> Option<usize> {
-    if !super::is_physical(equations, f, theta) {
+    if !is_physical(equations, f, theta) {
         return None;
     }
     let trig = theta.sin_cos();

@@ -1,12 +1,9 @@
-//! Spencer's method and the methods beside it on nonlinear strength envelopes: each solved to
-//! the consistent state of [`super::consistent`], reading each base's σ′ₙ from
-//! its own equations.
+//! The methods beside Spencer's on nonlinear strength envelopes: each solved to the consistent
+//! state of [`super::consistent`], reading each base's σ′ₙ from its own equations (Spencer's
+//! own solution there is the parent module's).
 
 use super::consistent::{consistent, is_nonlinear, Step};
 use super::equations::Equations;
-use super::{
-    linear_factor_outcome, solve_tension, FactorOutcome, SpencerSettings, SpencerSolution,
-};
 use crate::slope::slices::SliceModel;
 
 /// Each slice's effective normal force N′ = A_n + Q·sin(α − θ) − u·l at (F, θ) with parallel
@@ -22,63 +19,6 @@ pub(super) fn effective_normals(model: &SliceModel, f: f64, theta: f64) -> Vec<f
             t.a_n + q * (t.sin_alpha * cos_t - t.cos_alpha * sin_t) - t.pore_force
         })
         .collect()
-}
-
-/// `model` with each base's strength fixed where it stands (nothing left to move).
-fn fixed(mut model: SliceModel) -> SliceModel {
-    model.envelopes = None;
-    model.fixed.clear();
-    model
-}
-
-/// Spencer's solution at the consistent state of a model with nonlinear bases, and the model
-/// with each base's tangent there (the callers solve a model without any directly).
-pub(super) fn solve(
-    model: &SliceModel,
-    settings: &SpencerSettings,
-) -> (SpencerSolution, SliceModel) {
-    let (mut solution, consistency, current) = consistent(model, |m| {
-        let s = solve_tension(m, settings);
-        if s.factor_of_safety.is_some() {
-            let normals = s
-                .slice_forces
-                .iter()
-                .map(|f| f.effective_normal_force)
-                .collect();
-            Step::Next(s, normals)
-        } else {
-            Step::Done(s)
-        }
-    });
-    solution.strength = consistency;
-    (solution, fixed(current))
-}
-
-/// Spencer's F for a search at the consistent state; a state that does not settle is unsolved.
-/// `near`: a neighbouring surface's F, to start Bishop's F from (linear envelopes only).
-pub(super) fn factor_outcome(
-    model: &SliceModel,
-    settings: &SpencerSettings,
-    near: Option<f64>,
-) -> FactorOutcome {
-    if !is_nonlinear(model) {
-        return linear_factor_outcome(model, settings, near);
-    }
-    let (outcome, consistency, _) =
-        consistent(model, |m| match linear_factor_outcome(m, settings, None) {
-            FactorOutcome::Solved(s) => {
-                let theta = s.theta_rad.unwrap_or(0.0);
-                let normals = effective_normals(m, s.factor_of_safety, theta);
-                Step::Next(FactorOutcome::Solved(s), normals)
-            }
-            other => Step::Done(other),
-        });
-    match outcome {
-        FactorOutcome::Solved(_) if !consistency.settled => {
-            FactorOutcome::Unsolved { bishop: None }
-        }
-        other => other,
-    }
 }
 
 /// One of the methods beside Spencer's at the consistent state: `solve(model, normals)` gives

@@ -3,7 +3,6 @@
 //! `thickness` is optional (given, the answer adds the geometric factor of safety), plus an
 //! optional `tolerance` relative to the radius (half the span of a profile).
 
-use axum::extract::State;
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
     rupture_angle_deg, solve_minimum_thickness_of, LimitSettings, MinimumThickness,
@@ -14,19 +13,18 @@ use utoipa::ToSchema;
 use super::material::{material, ring_material, Material};
 use super::mechanism::{active_constraints, hinges, ActiveConstraintDto, HingeDto};
 use super::request::{arch_request, unit, InterfaceLimitsDto, MaterialFields};
-use super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use super::thinnest::{thinnest, Thinnest, ThinnestGeometryDto};
-use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJson;
+use crate::error::ApiError;
 use crate::limits::THICKNESS_TOLERANCE;
 use crate::pool::Cost;
 use crate::state::AppState;
 use crate::stop::Work;
-use crate::svg::Svg;
-use crate::table::{csv, Csv, Table};
 use crate::validation::within;
 use thrustline_solver::arch::memory::chain_memory_bound;
 use thrustline_solver::budget::Stop;
+
+pub mod family;
+pub mod routes;
 
 arch_request! {
     /// The minimum-thickness question for a circular arch or a profile.
@@ -114,142 +112,21 @@ pub struct MinimumThicknessResponse {
     pub detail: String,
 }
 
-/// Minimum thickness of a circular arch under its own weight.
-///
-/// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
-/// (Milankovitch 1904; model §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
-/// A given `thickness` D adds the geometric factor of safety D / D_min. A solve stopped at the time limit is 422 naming
-/// `tolerance`.
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness",
-    tag = "arch",
-    request_body(content = MinimumThicknessRequest, examples(
-        ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748",
-            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
-    )),
-    responses(
-        (status = 200, description = "The minimum thickness, or the reason there is none (its tables as CSV: `/arch/minimum-thickness/csv`)", body = MinimumThicknessResponse),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness(
-    State(state): State<AppState>,
-    ApiJson(request): ApiJson<MinimumThicknessRequest>,
-) -> Result<ApiJson<MinimumThicknessResponse>, ApiError> {
-    let planned = plan(&request)?;
-    let given = planned.given;
-    let (shape, result) = solve(&state, planned).await?;
-    Ok(ApiJson(response(&shape, &result, given)))
-}
-
-/// A table of the minimum-thickness answer as CSV.
-///
-/// The same request and search as `/arch/minimum-thickness`; `table` chooses the table (a
-/// header row of the JSON field names, then one row per item).
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness/csv",
-    tag = "arch",
-    request_body = MinimumThicknessRequest,
-    params(MinimumThicknessTableQuery),
-    responses(
-        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness_csv(
-    State(state): State<AppState>,
-    Table(table): Table<MinimumThicknessTableQuery>,
-    ApiJson(request): ApiJson<MinimumThicknessRequest>,
-) -> Result<Csv, ApiError> {
-    let planned = plan(&request)?;
-    let given = planned.given;
-    let (shape, result) = solve(&state, planned).await?;
-    let answer = response(&shape, &result, given);
-    match table {
-        MinimumThicknessTableDto::Hinges => csv(&answer.hinges),
-        MinimumThicknessTableDto::ActiveConstraints => csv(&answer.active_constraints),
-    }
-}
-
-/// Minimum thickness drawn: the arch just too thin to stand, with its collapse mechanism.
-///
-/// The same request and search as `/arch/minimum-thickness`, answered as an SVG picture: the
-/// arch at the thickest thickness that does not stand (the lower end of the final bracket),
-/// its voussoirs, the displaced blocks of its mechanism and the hinges labelled by angle and
-/// side, the minimum thickness in the title. Without a minimum, the arch as given and why.
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness/svg",
-    tag = "arch",
-    request_body = MinimumThicknessRequest,
-    responses(
-        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness_svg(
-    State(state): State<AppState>,
-    ApiJson(request): ApiJson<MinimumThicknessRequest>,
-) -> Result<Svg, ApiError> {
-    let planned = plan(&request)?;
-    let given = planned.given;
-    let curved = request.geometry.is_curved();
-    let (shape, result) = solve(&state, planned).await?;
-    let answer = response(&shape, &result, given);
-    let (shown, mechanism) = match &result.outcome {
-        MinimumThicknessOutcome::Found {
-            thickness_below,
-            mechanism,
-            ..
-        } => (shape.assembly(*thickness_below).ok(), mechanism.as_ref()),
-        _ => (None, None),
-    };
-    let title = match (
-        answer.thickness,
-        answer.thickness_to_radius,
-        answer.thickness_to_span,
-    ) {
-        (Some(d), Some(ratio), _) => format!("Minimum thickness: D = {d:.6}, D/R = {ratio:.6}"),
-        (Some(d), _, Some(ratio)) => format!("Minimum thickness: t = {d:.6}, t/span = {ratio:.6}"),
-        _ => "Minimum thickness: none found".to_owned(),
-    };
-    let d = if shape.span().is_some() { "t" } else { "D" };
-    let caption = match (&shown, answer.thickness_below) {
-        (Some(_), Some(below)) => format!(
-            "the arch at {d} = {below:.6}, just too thin to stand, and its collapse (the arch \
-             stands from {d} = {:.6} on)",
-            answer.thickness.unwrap_or(f64::NAN)
-        ),
-        _ => answer.detail.clone(),
-    };
-    let drawn = match shown {
-        Some(collapsing) => Some(collapsing),
-        None => given
-            .and_then(|d| shape.assembly(d).ok())
-            .or_else(|| shape.assembly(0.1 * shape.scale()).ok()),
-    };
-    let drawn = drawn.ok_or_else(|| ApiError::invalid("geometry", "the arch cannot be drawn"))?;
-    Ok(Svg(super::drawing::minimum_thickness(
-        &drawn,
-        mechanism.filter(|_| answer.thickness_below.is_some()),
-        curved,
-        (&title, &caption),
-    )))
-}
-
 /// A validated minimum-thickness request: the arch whose shape is searched, its material, the
 /// search's settings and the thickness given (for the geometric factor of safety).
-struct Planned {
-    shape: Thinnest,
-    material: Material,
-    settings: MinimumThicknessSettings,
-    given: Option<f64>,
+pub struct Planned {
+    /// The arch whose shape is searched.
+    pub shape: Thinnest,
+    /// Its material.
+    pub material: Material,
+    /// The search's settings.
+    pub settings: MinimumThicknessSettings,
+    /// The thickness given, for the geometric factor of safety.
+    pub given: Option<f64>,
 }
 
 /// Validates the request once: one ring and one span, the material, the tolerance.
-fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
+pub fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
     let (shape, given) = thinnest(&request.geometry)?;
     let material = material(request.material())?;
     // One ring: the ring fields have nothing to act on, but a value out of range is still an
@@ -276,7 +153,7 @@ fn plan(request: &MinimumThicknessRequest) -> Result<Planned, ApiError> {
 
 /// The search on the pool within the request's budget (every dead-load programme asks it); a
 /// search stopped by it is the outcome rule's 422 naming `tolerance` (503 beside other solves).
-async fn solve(
+pub async fn solve(
     state: &AppState,
     planned: Planned,
 ) -> Result<(Thinnest, MinimumThickness), ApiError> {
@@ -331,7 +208,7 @@ async fn solve(
 }
 
 /// The answer, built whole for each outcome.
-fn response(
+pub fn response(
     shape: &Thinnest,
     result: &MinimumThickness,
     given: Option<f64>,

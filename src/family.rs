@@ -1,0 +1,202 @@
+//! The one shape every analysis the service answers takes (SPEC §12): a problem family is a
+//! request type, a validation into what runs (`prepare`: the solver's model and plan, and the
+//! request's studies), the analysis on the pool within the request's budget (`run`: the
+//! solver's one `analyse`), and the answers built whole from what it found — the JSON answer,
+//! the drawing, the CSV tables and the calculation report.
+//!
+//! The handlers here are generic over a [`Family`]: a family's folder writes its documented
+//! route functions as one-line calls of them, and registers its routes and its OpenAPI paths
+//! once ([`Registration`], listed in `crate::routes`). The router, `/batch` (whose lines go
+//! through the same routes) and the OpenAPI document read that list; nothing else names a
+//! family.
+
+use std::future::Future;
+use std::sync::Arc;
+
+use axum::http::HeaderMap;
+use axum::response::{Html, IntoResponse, Response};
+use axum::Router;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use serde_json::Value;
+
+use crate::error::ApiError;
+use crate::extract::ApiJson;
+use crate::report::{without_nulls, Report, ReportTable};
+use crate::state::AppState;
+use crate::study::run::Tally;
+use crate::table::{Csv, TableQuery};
+use crate::warning::Warning;
+
+/// A problem family: what its routes take, run and answer.
+pub trait Family: Send + Sync + 'static {
+    /// The request as clients send it (wire types only).
+    type Request: DeserializeOwned + Serialize + Send + Sync + 'static;
+    /// A validated request: what will run (the solver's model and plan, the studies).
+    type Prepared: Send + 'static;
+    /// What the analysis found: every answer of the family is built from it.
+    type Solved: Send + 'static;
+    /// The JSON answer.
+    type Answer: Serialize + Send + 'static;
+    /// The `?table=` query of the CSV twin.
+    type Tables: TableQuery + 'static;
+
+    /// The JSON route (`/slope/spencer`); the twins are `<route>/svg`, `/csv`, `/report`,
+    /// `/stream`.
+    const ROUTE: &'static str;
+    /// Whether the JSON route streams progress lines when `Accept` names NDJSON (the families
+    /// whose requests carry studies). Defaults to false.
+    const STREAMS: bool = false;
+
+    /// Validates `request` (`body`: the JSON it was read from): every 4xx of the input, and
+    /// nothing computed.
+    fn prepare(
+        state: &AppState,
+        request: &Self::Request,
+        body: &Value,
+    ) -> Result<Self::Prepared, ApiError>;
+
+    /// Runs the analysis (and the studies) on the pool within the request's budget; `tally`
+    /// counts the studies' analyses as they finish.
+    fn run(
+        state: &AppState,
+        prepared: Self::Prepared,
+        tally: Arc<Tally>,
+    ) -> impl Future<Output = Result<Self::Solved, ApiError>> + Send;
+
+    /// The JSON answer, built whole.
+    fn answer(request: &Self::Request, solved: &Self::Solved) -> Self::Answer;
+
+    /// The drawing (SVG) of the answer.
+    fn draw(request: &Self::Request, solved: &Self::Solved) -> Result<String, ApiError>;
+
+    /// One table of the answer as CSV.
+    fn table(
+        answer: &Self::Answer,
+        table: <Self::Tables as TableQuery>::Table,
+    ) -> Result<Csv, ApiError>;
+
+    /// What the calculation report prints beyond the request and the answer; `None` for a
+    /// family without a report route. Defaults to none.
+    fn report<'a>(
+        _request: &Self::Request,
+        _solved: &Self::Solved,
+        _answer: &'a Self::Answer,
+    ) -> Option<ReportParts<'a>> {
+        None
+    }
+}
+
+/// What a family's report prints of its answer: the headline, the drawing, the warnings and
+/// the main tables.
+pub struct ReportParts<'a> {
+    /// The result in one line.
+    pub headline: String,
+    /// The drawing (SVG).
+    pub drawing: String,
+    /// The answer's warnings.
+    pub warnings: &'a [Warning],
+    /// The main tables.
+    pub tables: Vec<ReportTable>,
+    /// What the report is of, in words (`slope stability by Spencer's method`).
+    pub subject: &'static str,
+}
+
+/// A family's routes and OpenAPI paths, registered once (`crate::routes::FAMILIES`).
+#[derive(Clone, Copy)]
+pub struct Registration {
+    /// The JSON route, which a `/batch` line may name.
+    pub route: &'static str,
+    /// The family's routes (the JSON answer and its twins).
+    pub routes: fn() -> Router<AppState>,
+    /// The OpenAPI paths of those routes.
+    pub openapi: fn() -> utoipa::openapi::OpenApi,
+}
+
+/// Validates and analyses a request ([`Family::prepare`], [`Family::run`]).
+pub async fn solve<F: Family>(
+    state: &AppState,
+    request: &F::Request,
+    body: &Value,
+    tally: Arc<Tally>,
+) -> Result<F::Solved, ApiError> {
+    let prepared = F::prepare(state, request, body)?;
+    F::run(state, prepared, tally).await
+}
+
+/// The JSON answer; streamed after progress lines when the family streams and `Accept` asks.
+pub async fn json<F: Family>(
+    state: AppState,
+    headers: &HeaderMap,
+    id: String,
+    (request, body): (F::Request, Value),
+) -> Result<Response, ApiError> {
+    if F::STREAMS && crate::study::stream::wants_stream(headers) {
+        return stream::<F>(state, id, (request, body));
+    }
+    let solved = solve::<F>(&state, &request, &body, Arc::default()).await?;
+    Ok(ApiJson(F::answer(&request, &solved)).into_response())
+}
+
+/// The answer streamed after its progress lines (model §9.4); the input is checked first, so a
+/// request the route refuses is its 4xx, not a line.
+pub fn stream<F: Family>(
+    state: AppState,
+    id: String,
+    (request, body): (F::Request, Value),
+) -> Result<Response, ApiError> {
+    let prepared = F::prepare(&state, &request, &body)?;
+    let tally = Arc::new(Tally::default());
+    let counted = tally.clone();
+    Ok(crate::study::stream::ndjson(tally, id, async move {
+        let solved = F::run(&state, prepared, counted).await?;
+        serde_json::to_vec(&F::answer(&request, &solved))
+            .map_err(|e| ApiError::Internal(e.to_string()))
+    }))
+}
+
+/// The drawing of the answer.
+pub async fn svg<F: Family>(
+    state: &AppState,
+    (request, body): (F::Request, Value),
+) -> Result<crate::svg::Svg, ApiError> {
+    let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
+    F::draw(&request, &solved).map(crate::svg::Svg)
+}
+
+/// One table of the answer as CSV.
+pub async fn csv<F: Family>(
+    state: &AppState,
+    table: <F::Tables as TableQuery>::Table,
+    (request, body): (F::Request, Value),
+) -> Result<Csv, ApiError> {
+    let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
+    F::table(&F::answer(&request, &solved), table)
+}
+
+/// The answer as a printable calculation report (one self-contained HTML page).
+pub async fn report<F: Family>(
+    state: &AppState,
+    request_id: String,
+    (request, body): (F::Request, Value),
+) -> Result<Html<String>, ApiError> {
+    let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
+    let answer = F::answer(&request, &solved);
+    let parts = F::report(&request, &solved, &answer).ok_or_else(|| {
+        ApiError::Internal(format!(
+            "{} has no report, yet its route was asked",
+            F::ROUTE
+        ))
+    })?;
+    let report = Report {
+        route: F::ROUTE,
+        headline: parts.headline,
+        request_id,
+        request: without_nulls(&serde_json::to_value(&request).unwrap_or_default()),
+        answer: serde_json::to_value(&answer).unwrap_or_default(),
+        warnings: parts.warnings,
+        drawing: parts.drawing,
+        tables: parts.tables,
+    };
+    Ok(report.html(parts.subject))
+}
