@@ -72,15 +72,6 @@ impl Settings {
     /// Defaults overridden by the `THRUSTLINE_*` environment variables that are set.
     pub fn from_env() -> Result<Self, String> {
         let mut settings = Self::default();
-        fn read<T: std::str::FromStr>(name: &str) -> Result<Option<T>, String> {
-            match std::env::var(name) {
-                Ok(text) => text
-                    .parse()
-                    .map(Some)
-                    .map_err(|_| format!("{name}={text:?} is not valid")),
-                Err(_) => Ok(None),
-            }
-        }
         if let Some(addr) = read("THRUSTLINE_ADDR")? {
             settings.addr = addr;
         }
@@ -93,9 +84,25 @@ impl Settings {
         if let Some(n) = read("THRUSTLINE_BODY_LIMIT")? {
             settings.body_limit = n;
         }
+        settings.read_timeouts()?;
+        if let Some(n) = read::<usize>("THRUSTLINE_MAX_CONNECTIONS")? {
+            settings.max_connections = n.max(1);
+        }
+        if let Some(mib) = read::<u32>("THRUSTLINE_SOLVE_MEMORY_MIB")? {
+            if !(16..=1 << 20).contains(&mib) {
+                return Err("THRUSTLINE_SOLVE_MEMORY_MIB must be 16 to 1048576".to_owned());
+            }
+            settings.solve_memory_mib = mib;
+        }
+        settings.read_access()?;
+        Ok(settings)
+    }
+
+    /// Overrides the solve, batch, drain, header and body timeouts from the environment.
+    fn read_timeouts(&mut self) -> Result<(), String> {
         for (name, target) in [
-            ("THRUSTLINE_SOLVE_TIMEOUT_SECS", &mut settings.solve_timeout),
-            ("THRUSTLINE_BATCH_TIMEOUT_SECS", &mut settings.batch_timeout),
+            ("THRUSTLINE_SOLVE_TIMEOUT_SECS", &mut self.solve_timeout),
+            ("THRUSTLINE_BATCH_TIMEOUT_SECS", &mut self.batch_timeout),
         ] {
             if let Some(seconds) = read::<f64>(name)? {
                 if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
@@ -110,14 +117,11 @@ impl Settings {
                     "THRUSTLINE_DRAIN_SECS must be a number of seconds, 0 ≤ s ≤ 3600".to_owned(),
                 );
             }
-            settings.drain_timeout = Duration::from_secs_f64(seconds);
+            self.drain_timeout = Duration::from_secs_f64(seconds);
         }
         for (name, target) in [
-            (
-                "THRUSTLINE_HEADER_TIMEOUT_SECS",
-                &mut settings.header_timeout,
-            ),
-            ("THRUSTLINE_BODY_TIMEOUT_SECS", &mut settings.body_timeout),
+            ("THRUSTLINE_HEADER_TIMEOUT_SECS", &mut self.header_timeout),
+            ("THRUSTLINE_BODY_TIMEOUT_SECS", &mut self.body_timeout),
         ] {
             if let Some(seconds) = read::<f64>(name)? {
                 if !(seconds.is_finite() && (0.1..=3600.0).contains(&seconds)) {
@@ -128,15 +132,11 @@ impl Settings {
                 *target = Duration::from_secs_f64(seconds);
             }
         }
-        if let Some(n) = read::<usize>("THRUSTLINE_MAX_CONNECTIONS")? {
-            settings.max_connections = n.max(1);
-        }
-        if let Some(mib) = read::<u32>("THRUSTLINE_SOLVE_MEMORY_MIB")? {
-            if !(16..=1 << 20).contains(&mib) {
-                return Err("THRUSTLINE_SOLVE_MEMORY_MIB must be 16 to 1048576".to_owned());
-            }
-            settings.solve_memory_mib = mib;
-        }
+        Ok(())
+    }
+
+    /// Overrides the bearer token and the CORS origins from the environment.
+    fn read_access(&mut self) -> Result<(), String> {
         if let Ok(token) = std::env::var("THRUSTLINE_TOKEN") {
             // An empty token is a mistake, not "no authentication": refuse to start.
             if token.trim().is_empty() {
@@ -146,15 +146,26 @@ impl Settings {
                         .to_owned(),
                 );
             }
-            settings.token = Some(token);
+            self.token = Some(token);
         }
         if let Ok(origins) = std::env::var("THRUSTLINE_CORS_ORIGINS") {
-            settings.cors_origins = origins
+            self.cors_origins = origins
                 .split(',')
                 .map(|o| o.trim().to_owned())
                 .filter(|o| !o.is_empty())
                 .collect();
         }
-        Ok(settings)
+        Ok(())
+    }
+}
+
+/// The environment variable `name` parsed, if it is set.
+fn read<T: std::str::FromStr>(name: &str) -> Result<Option<T>, String> {
+    match std::env::var(name) {
+        Ok(text) => text
+            .parse()
+            .map(Some)
+            .map_err(|_| format!("{name}={text:?} is not valid")),
+        Err(_) => Ok(None),
     }
 }

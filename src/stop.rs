@@ -30,7 +30,11 @@ impl AppState {
             busy: None,
         };
         match stop {
-            Stop::TimeLimit | Stop::Cancelled => self.pool.judge(over_time(), shared),
+            // An evaluation cap is a search's own, which answers its best so far: it never
+            // reaches here, and is told as the work being too large if it did.
+            Stop::TimeLimit | Stop::Cancelled | Stop::EvaluationCap => {
+                self.pool.judge(over_time(), shared)
+            }
             Stop::NoCandidate => ApiError::invalid(work.field, work.no_candidate),
             Stop::Finished => ApiError::Internal("an analysis finished without an answer".into()),
         }

@@ -205,6 +205,32 @@ pub fn fill_loads(
     // The extrados sampled once for the road loads and the rolling stops.
     let profile =
         (!road_loads.is_empty() || rolling.is_some()).then(|| ExtradosProfile::new(faces));
+    let (live, road) = road_loads_on(road_loads, profile.as_ref(), &carrier)?;
+    let rolling = rolling
+        .zip(profile.as_ref())
+        .map(|(r, profile)| rolling_loads(profile, &carrier, r))
+        .transpose()?;
+    let dead = fill
+        .as_ref()
+        .map_or(Vec::new(), |f| fill_dead_loads(faces, f));
+    let passive = passive_from(assembly, faces, fill.as_ref(), dto_passive)?;
+    Ok(FillLoads {
+        weight: dead.iter().map(|l| -l.fy).sum(),
+        dead,
+        live,
+        rolling,
+        passive,
+        fill,
+        road,
+    })
+}
+
+/// The road loads validated, and the live loads they give through `carrier` onto `profile`.
+fn road_loads_on(
+    road_loads: &[RoadLoadDto],
+    profile: Option<&ExtradosProfile>,
+    carrier: &Fill,
+) -> Result<(Vec<LiveLoad>, Vec<RoadLoad>), ApiError> {
     let mut live = Vec::new();
     let mut road = Vec::with_capacity(road_loads.len());
     for (i, load) in road_loads.iter().enumerate() {
@@ -215,8 +241,8 @@ pub fn fill_loads(
             length: within(&field("length"), load.length, PATCH_LENGTH)?,
         };
         // Road loads made the profile.
-        let Some(profile) = &profile else { break };
-        let dispersed = road_load_on(profile, &carrier, load);
+        let Some(profile) = profile else { break };
+        let dispersed = road_load_on(profile, carrier, load);
         if dispersed.is_empty() {
             let span = profile.x_range();
             return Err(ApiError::invalid(
@@ -231,14 +257,17 @@ pub fn fill_loads(
         live.extend(dispersed);
         road.push(load);
     }
-    let rolling = rolling
-        .zip(profile.as_ref())
-        .map(|(r, profile)| rolling_loads(profile, &carrier, r))
-        .transpose()?;
-    let dead = fill
-        .as_ref()
-        .map_or(Vec::new(), |f| fill_dead_loads(faces, f));
-    let passive = match (&fill, dto_passive) {
+    Ok((live, road))
+}
+
+/// With a fill and `fill.passive`: the horizontal forces the fill can exert, validated.
+fn passive_from(
+    assembly: &Assembly,
+    faces: &ExtradosFaces,
+    fill: Option<&Fill>,
+    dto_passive: Option<&PassiveDto>,
+) -> Result<Option<Vec<PassiveForce>>, ApiError> {
+    Ok(match (fill, dto_passive) {
         (Some(fill), Some(p)) => {
             let passive = Passive {
                 friction_angle_deg: within(
@@ -251,15 +280,6 @@ pub fn fill_loads(
             Some(passive_forces(assembly, faces, fill, &passive))
         }
         _ => None,
-    };
-    Ok(FillLoads {
-        weight: dead.iter().map(|l| -l.fy).sum(),
-        dead,
-        live,
-        rolling,
-        passive,
-        fill,
-        road,
     })
 }
 

@@ -56,31 +56,7 @@ pub fn profile(dto: &ProfileGeometryDto) -> Result<Profile, ApiError> {
         return Err(not_for("haunch_radius", "three_centred"));
     }
     if dto.shape == S::Points {
-        for field in ["span", "rise"] {
-            let given = if field == "span" { dto.span } else { dto.rise };
-            if given.is_some() {
-                return Err(ApiError::invalid(
-                    format!("geometry.{field}"),
-                    "comes from the points with shape points: leave it out",
-                ));
-            }
-        }
-        let points = dto.intrados.as_deref().ok_or_else(|| {
-            ApiError::invalid("geometry.intrados", "is required with shape points")
-        })?;
-        count_within("geometry.intrados", points.len(), INTRADOS_POINTS)?;
-        let points = points
-            .iter()
-            .enumerate()
-            .map(|(i, &[x, y])| {
-                let field = format!("geometry.intrados[{i}]");
-                Ok((
-                    within(&field, x, COORDINATE)?,
-                    within(&field, y, COORDINATE)?,
-                ))
-            })
-            .collect::<Result<Vec<_>, ApiError>>()?;
-        return Ok(Profile::new(&ProfileShape::Points(points), 0.0, 0.0)?);
+        return measured(dto);
     }
     if dto.intrados.is_some() {
         return Err(not_for("intrados", "points"));
@@ -90,7 +66,45 @@ pub fn profile(dto: &ProfileGeometryDto) -> Result<Profile, ApiError> {
         required("span", dto.span, "(the intrados' span)")?,
         LENGTH,
     )?;
-    let shape = match dto.shape {
+    let shape = shape(dto)?;
+    let rise = rise(dto, span)?;
+    Ok(Profile::new(&shape, span, rise)?)
+}
+
+/// The intrados of a measured profile (shape points): its points, checked and named.
+fn measured(dto: &ProfileGeometryDto) -> Result<Profile, ApiError> {
+    for field in ["span", "rise"] {
+        let given = if field == "span" { dto.span } else { dto.rise };
+        if given.is_some() {
+            return Err(ApiError::invalid(
+                format!("geometry.{field}"),
+                "comes from the points with shape points: leave it out",
+            ));
+        }
+    }
+    let points = dto
+        .intrados
+        .as_deref()
+        .ok_or_else(|| ApiError::invalid("geometry.intrados", "is required with shape points"))?;
+    count_within("geometry.intrados", points.len(), INTRADOS_POINTS)?;
+    let points = points
+        .iter()
+        .enumerate()
+        .map(|(i, &[x, y])| {
+            let field = format!("geometry.intrados[{i}]");
+            Ok((
+                within(&field, x, COORDINATE)?,
+                within(&field, y, COORDINATE)?,
+            ))
+        })
+        .collect::<Result<Vec<_>, ApiError>>()?;
+    Ok(Profile::new(&ProfileShape::Points(points), 0.0, 0.0)?)
+}
+
+/// The solver's shape for a formula-given profile (not shape points).
+fn shape(dto: &ProfileGeometryDto) -> Result<ProfileShape, ApiError> {
+    use ProfileShapeDto as S;
+    Ok(match dto.shape {
         S::Segmental => ProfileShape::Segmental,
         S::Semicircular => ProfileShape::Semicircular,
         S::Elliptical => ProfileShape::Elliptical,
@@ -108,8 +122,13 @@ pub fn profile(dto: &ProfileGeometryDto) -> Result<Profile, ApiError> {
             )?,
         },
         S::Points => unreachable!("measured profiles return above"),
-    };
-    let rise = match (dto.shape, dto.rise, dto.radius) {
+    })
+}
+
+/// The intrados' rise above its springings, given or (pointed arch) from its radius.
+fn rise(dto: &ProfileGeometryDto, span: f64) -> Result<f64, ApiError> {
+    use ProfileShapeDto as S;
+    Ok(match (dto.shape, dto.rise, dto.radius) {
         (S::Semicircular, None, _) => 0.5 * span,
         (S::Pointed, Some(_), Some(_)) => {
             return Err(ApiError::invalid(
@@ -135,8 +154,7 @@ pub fn profile(dto: &ProfileGeometryDto) -> Result<Profile, ApiError> {
             required("rise", rise, "(the intrados' crown above its springings)")?,
             span,
         )?,
-    };
-    Ok(Profile::new(&shape, span, rise)?)
+    })
 }
 
 /// The blocks of a profile geometry of `thickness`, and for generated rings or spans the

@@ -2,7 +2,7 @@
 //! blocks and interfaces numbered from 1, angles in degrees.
 
 use serde::Serialize;
-use thrustline_solver::arch::support_reactions;
+use thrustline_solver::arch::{support_reactions, ThrustPoint};
 use utoipa::ToSchema;
 
 use super::fill::{passive_out, PassiveOutDto};
@@ -263,37 +263,14 @@ impl ArchOutcomeDto {
                 (solved.input.non_associative || f.history.len() > 1)
                     .then(|| NonAssociativeOutDto::new(f, included(ArchDetailDto::Mechanism)))
             }),
-            thrust_line: thrust_line
-                .iter()
-                .map(|t| InterfaceThrustPointDto {
-                    interface: t.interface + 1,
-                    x: t.point.map(|p| p.0),
-                    y: t.point.map(|p| p.1),
-                    normal_force: t.normal_force,
-                    shear_force: t.shear_force,
-                    eccentricity: t.eccentricity,
-                    eccentricity_ratio: t.eccentricity_ratio,
-                    in_middle_third: t.is_in_middle_third(),
-                })
-                .collect(),
+            thrust_line: thrust_points(thrust_line),
             thrust_margin: solved
                 .thrust_line
                 .iter()
                 .filter_map(|t| t.eccentricity_ratio)
                 .map(|r| 0.5 - r.abs())
                 .reduce(f64::min),
-            reactions: support_reactions(solved.input.problem.assembly(), &solution.resultants)
-                .filter(|_| included(ArchDetailDto::Reactions))
-                .map(|pair| {
-                    pair.iter()
-                        .map(|r| ReactionDto {
-                            interface: r.interface + 1,
-                            horizontal: r.horizontal,
-                            vertical: r.vertical,
-                        })
-                        .collect()
-                })
-                .unwrap_or_default(),
+            reactions: reactions(solved, included(ArchDetailDto::Reactions)),
             solver: SolverDto {
                 status: solved.status,
                 iterations: solution.iterations,
@@ -305,6 +282,40 @@ impl ArchOutcomeDto {
             omitted,
         }
     }
+}
+
+/// The answer's points of action, interfaces numbered from 1.
+fn thrust_points(thrust_line: &[ThrustPoint]) -> Vec<InterfaceThrustPointDto> {
+    thrust_line
+        .iter()
+        .map(|t| InterfaceThrustPointDto {
+            interface: t.interface + 1,
+            x: t.point.map(|p| p.0),
+            y: t.point.map(|p| p.1),
+            normal_force: t.normal_force,
+            shear_force: t.shear_force,
+            eccentricity: t.eccentricity,
+            eccentricity_ratio: t.eccentricity_ratio,
+            in_middle_third: t.is_in_middle_third(),
+        })
+        .collect()
+}
+
+/// The supports' reactions, when `included` and the assembly has them (else none).
+fn reactions(solved: &SolvedArch, included: bool) -> Vec<ReactionDto> {
+    let solution = &solved.solution;
+    support_reactions(solved.input.problem.assembly(), &solution.resultants)
+        .filter(|_| included)
+        .map(|pair| {
+            pair.iter()
+                .map(|r| ReactionDto {
+                    interface: r.interface + 1,
+                    horizontal: r.horizontal,
+                    vertical: r.vertical,
+                })
+                .collect()
+        })
+        .unwrap_or_default()
 }
 
 /// A line of `/arch/live-load/stream`: progress, then the answer or its problem.

@@ -4,7 +4,8 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::analysis::RollingCurve;
-use thrustline_solver::arch::fill::{road_load_on, ExtradosProfile, Fill, RoadLoad};
+use thrustline_solver::arch::fill::{ExtradosProfile, Fill};
+use thrustline_solver::arch::rolling::{Axle, RollingAxles};
 use thrustline_solver::arch::LiveLoad;
 use utoipa::ToSchema;
 
@@ -149,32 +150,7 @@ pub struct Rolling {
     /// The live loads at each stop.
     pub loads: Vec<Vec<LiveLoad>>,
     /// The axles on the arch, for a position between the stops; with `refine_critical`.
-    pub refine: Option<Axles>,
-}
-
-/// The axles (offset, load, patch length) dispersed through the fill onto the extrados.
-#[derive(Debug, Clone)]
-pub struct Axles {
-    profile: ExtradosProfile,
-    carrier: Fill,
-    axles: Vec<(f64, f64, f64)>,
-}
-
-impl Axles {
-    /// The live loads with the reference point at x.
-    pub fn loads_at(&self, x: f64) -> Vec<LiveLoad> {
-        self.axles
-            .iter()
-            .flat_map(|&(offset, fy, length)| {
-                let load = RoadLoad {
-                    x: x + offset,
-                    fy,
-                    length,
-                };
-                road_load_on(&self.profile, &self.carrier, load)
-            })
-            .collect()
-    }
+    pub refine: Option<RollingAxles>,
 }
 
 /// The most loads a rolling load's stops may put on the voussoirs together (48 MB).
@@ -200,14 +176,14 @@ pub fn rolling_loads(
         .enumerate()
         .map(|(i, a)| {
             let field = |name: &str| format!("{field}[{i}].{name}");
-            Ok((
-                within(&field("offset"), a.offset, COORDINATE)?,
-                within(&field("fy"), a.fy, FORCE)? / width,
-                within(&field("length"), a.length, PATCH_LENGTH)?,
-            ))
+            Ok(Axle {
+                offset: within(&field("offset"), a.offset, COORDINATE)?,
+                fy: within(&field("fy"), a.fy, FORCE)? / width,
+                length: within(&field("length"), a.length, PATCH_LENGTH)?,
+            })
         })
         .collect::<Result<Vec<_>, ApiError>>()?;
-    if axles.iter().all(|a| a.1 == 0.0) {
+    if axles.iter().all(|a| a.fy == 0.0) {
         return Err(ApiError::invalid(field, "every axle load is zero"));
     }
     let positions: Vec<f64> = (0..n)
@@ -221,7 +197,7 @@ pub fn rolling_loads(
         .collect();
     // Every stop's loads are held for the sweep: bounded as they are made (a 400-byte request
     // of 1001 stops of 20 axles spread over 10,000 voussoirs made 9 GB of them).
-    let axles = Axles {
+    let axles = RollingAxles {
         profile: profile.clone(),
         carrier: carrier.clone(),
         axles,

@@ -2,14 +2,12 @@
 //! treatment of friction) → what it will cost → the analysis on the pool within the request's
 //! budget → the solved arch every answer (JSON, CSV, SVG, report) is built from.
 
-use thrustline_solver::arch::analysis::{analyse, ArchOutcome, ArchPlan, Friction, Programme};
+use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme, RefineCritical};
 use thrustline_solver::arch::memory::{memory_bound, on_chain};
-use thrustline_solver::arch::refine::refine_critical;
-use thrustline_solver::arch::{ArchError, ArchProblem};
+use thrustline_solver::arch::ArchError;
 use thrustline_solver::budget::Budget;
 
 use super::input::ArchInput;
-use super::rolling::Axles;
 use super::solved::{ArchStatusDto, SolvedArch};
 use crate::error::ApiError;
 use crate::pool::Cost;
@@ -29,7 +27,9 @@ pub enum Problem {
 
 /// The plan of a validated request: the programme (a rolling load's stops for a live load that
 /// rolls: moved out of the input, which keeps the positions; a thousand stops of a long chain's
-/// loads are tens of MB) and the treatment of friction.
+/// loads are tens of MB), the treatment of friction, the critical position narrowed
+/// (`refine_critical`) and, where the rings lock, the bonded single ring to compare with (moved
+/// out of the input).
 pub fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
     let programme = match (which, input.rolling.as_mut()) {
         (Problem::DeadLoad, _) => Programme::DeadLoad,
@@ -43,15 +43,21 @@ pub fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
     } else {
         Friction::Checked
     };
+    let refine = input.rolling.as_ref().and_then(|r| {
+        let axles = r.refine.clone()?;
+        (r.positions.len() > 1).then(|| RefineCritical {
+            positions: r.positions.clone(),
+            axles,
+        })
+    });
     ArchPlan {
         programme,
         friction,
         settings: input.settings.clone(),
+        refine,
+        bonded: input.bonded.take(),
     }
 }
-
-/// `refine_critical` narrows the critical position to this fraction of the stop spacing.
-const REFINED_TO: f64 = 1e-3;
 
 /// Chains of up to this many blocks, without a rolling load or the friction iteration, are
 /// light (a few milliseconds: docs/performance.md).
@@ -112,26 +118,18 @@ pub async fn solve_studied(
     let mut cost = cost(state, &input, &plan)?;
     cost.light &= job.is_none();
     let problem = input.problem.clone();
-    let extra = Extra {
-        // With refine_critical: the axles and the stops, to search between them.
-        refine: input.rolling.as_ref().and_then(|r| {
-            let axles = r.refine.clone()?;
-            (r.positions.len() > 1).then(|| (axles, r.positions.clone()))
-        }),
-        bonded: input.bonded.take(),
-    };
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
-            let (outcome, bonded) = run(&problem, &plan, extra, budget)?;
+            let outcome = analyse(&problem, &plan, budget)?;
             let studied = match job {
                 Some(job) if outcome.stop.is_finished() => Some(job(budget)),
                 _ => None,
             };
-            Ok::<_, ArchError>((outcome, bonded, studied))
+            Ok::<_, ArchError>((outcome, studied))
         })
         .await?;
-    let (outcome, bonded_load_factor, studied) = ran.value?;
+    let (outcome, studied) = ran.value?;
     let advice = "use fewer samples or points, or fewer blocks or stops";
     let studies = studied
         .transpose()
@@ -158,57 +156,6 @@ pub async fn solve_studied(
         return Err(state.refuse(outcome.stop, work, ran.shared));
     };
     let mut solved = SolvedArch::new(input, outcome, status);
-    solved.bonded_load_factor = bonded_load_factor;
     solved.studies = studies;
     Ok(solved)
-}
-
-/// What a request adds to its plan's analysis.
-struct Extra {
-    /// `refine_critical`: the axles and the stops.
-    refine: Option<(Axles, Vec<f64>)>,
-    /// Locked rings: the bonded single ring.
-    bonded: Option<ArchProblem>,
-}
-
-/// What runs on the pool: the plan's analysis; a rolling load's critical position narrowed
-/// when asked; where the rings lock, the bonded single ring's λ (associative) to compare.
-fn run(
-    problem: &ArchProblem,
-    plan: &ArchPlan,
-    extra: Extra,
-    budget: &Budget,
-) -> Result<(ArchOutcome, Option<f64>), ArchError> {
-    let mut outcome = analyse(problem, plan, budget)?;
-    if let Some((axles, positions)) = extra.refine {
-        let spacing =
-            (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
-        outcome = refine_critical(
-            outcome,
-            (problem, plan),
-            &positions,
-            REFINED_TO * spacing,
-            &|x| axles.loads_at(x),
-            budget,
-        )?;
-    }
-    let compare = outcome.stop.is_finished()
-        && outcome.solution.load_factor.is_some()
-        && plan.programme == Programme::LiveLoad;
-    let bonded = match extra.bonded.filter(|_| compare) {
-        Some(bonded) => {
-            let at = ArchPlan {
-                friction: Friction::Associative,
-                ..plan.clone()
-            };
-            let single = analyse(&bonded, &at, budget)?;
-            single
-                .stop
-                .is_finished()
-                .then_some(single.solution.load_factor)
-                .flatten()
-        }
-        None => None,
-    };
-    Ok((outcome, bonded))
 }

@@ -95,7 +95,7 @@ impl SolvedArch {
             thrust_line: outcome.thrust_line,
             rolling,
             friction: outcome.friction,
-            bonded_load_factor: None,
+            bonded_load_factor: outcome.bonded_load_factor,
             studies: Default::default(),
         }
     }

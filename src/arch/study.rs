@@ -9,7 +9,7 @@
 use std::sync::Arc;
 
 use serde_json::Value;
-use thrustline_solver::arch::analysis::{analyse, ArchStatus};
+use thrustline_solver::arch::analysis::{analyse, ArchPlan, ArchStatus};
 use thrustline_solver::arch::LimitStatus;
 use thrustline_solver::budget::Budget;
 
@@ -104,7 +104,13 @@ pub fn evaluate(request: Value, budget: &Budget, time_limit_secs: f64) -> Sample
         Ok(input) => input,
         Err(e) => return Sampled::Refused(e.to_string()),
     };
-    let plan = route_plan(Problem::LiveLoad, &mut input);
+    // A sample is the plan's programme alone: the refinement of the critical position and the
+    // bonded-ring comparison are the deterministic answer's.
+    let plan = ArchPlan {
+        refine: None,
+        bonded: None,
+        ..route_plan(Problem::LiveLoad, &mut input)
+    };
     match analyse(&input.problem, &plan, budget) {
         Ok(outcome) if outcome.stop.is_finished() => match outcome.status {
             ArchStatus::Limit(LimitStatus::Solved) => outcome

@@ -107,9 +107,31 @@ impl SpencerRequest {
             .as_ref()
             .map(super::design::design)
             .transpose()?;
-        let ground = match (&self.section, &self.slope, &self.soil) {
+        let ground = self.ground(design.as_ref())?;
+        let seismic = match &self.seismic {
+            Some(s) => Seismic::new(
+                within("seismic.kh", s.kh, SEISMIC_KH)?,
+                within("seismic.kv", s.kv, SEISMIC_KV)?,
+            )?,
+            None => Seismic::default(),
+        };
+        let external_loads = self.external_loads(&ground, design, slices)?;
+        let slices = NonZeroUsize::new(slices)
+            .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
+        Ok(Parts {
+            ground,
+            design,
+            slices,
+            seismic,
+            external_loads,
+        })
+    }
+
+    /// The ground and soil: a section, or the simple slope with its soil (in design values).
+    fn ground(&self, design: Option<&Design>) -> Result<Ground, ApiError> {
+        Ok(match (&self.section, &self.slope, &self.soil) {
             (Some(section), None, None) => {
-                Ground::Section(Box::new(section_from(section, design.as_ref())?))
+                Ground::Section(Box::new(section_from(section, design)?))
             }
             (Some(_), _, _) => {
                 return Err(ApiError::invalid(
@@ -126,7 +148,7 @@ impl SpencerRequest {
                 let height = length("slope.height", slope.height)?;
                 let slope_length = length("slope.length", slope.length)?;
                 let soil = soil_from("soil", soil, soil.pore_pressure_ratio.unwrap_or(0.0))?;
-                let soil = match &design {
+                let soil = match design {
                     Some(d) => d.soil(soil)?,
                     None => soil,
                 };
@@ -141,14 +163,16 @@ impl SpencerRequest {
             (None, Some(_), None) => {
                 return Err(ApiError::invalid("soil", "the slope needs its soil"))
             }
-        };
-        let seismic = match &self.seismic {
-            Some(s) => Seismic::new(
-                within("seismic.kh", s.kh, SEISMIC_KH)?,
-                within("seismic.kv", s.kv, SEISMIC_KV)?,
-            )?,
-            None => Seismic::default(),
-        };
+        })
+    }
+
+    /// The simple slope's per-slice loads, numbered within `slices` (in design values).
+    fn external_loads(
+        &self,
+        ground: &Ground,
+        design: Option<Design>,
+        slices: usize,
+    ) -> Result<Vec<ExternalLoad>, ApiError> {
         count_within("external_loads", self.external_loads.len(), LOADS)?;
         if matches!(ground, Ground::Section(_)) && !self.external_loads.is_empty() {
             return Err(ApiError::invalid(
@@ -157,8 +181,7 @@ impl SpencerRequest {
                  section.surcharges",
             ));
         }
-        let external_loads = self
-            .external_loads
+        self.external_loads
             .iter()
             .enumerate()
             .map(|(i, load)| {
@@ -174,16 +197,7 @@ impl SpencerRequest {
                     passive: false,
                 })
             })
-            .collect::<Result<Vec<_>, ApiError>>()?;
-        let slices = NonZeroUsize::new(slices)
-            .ok_or_else(|| ApiError::invalid("slices", "must be at least 1"))?;
-        Ok(Parts {
-            ground,
-            design,
-            slices,
-            seismic,
-            external_loads,
-        })
+            .collect::<Result<Vec<_>, ApiError>>()
     }
 }
 

@@ -226,29 +226,9 @@ impl SpencerResponse {
             Vec::new()
         };
         let (total_shear_strength, total_mobilised_shear) = shear_totals(&slices);
-        let point = |(x, y): (f64, f64)| PointDto { x, y };
-        let circle = problem.circle().map(|c| CircleOutDto {
-            x: c.centre.0 - c.lower_end.0,
-            y: c.centre.1 - c.lower_end.1,
-            radius: c.radius,
-            centre: point(c.centre),
-            lower_end: point(c.lower_end),
-            upper_exit: point(c.upper_exit),
-        });
+        let circle = circle_out(problem);
         let surface = problem.surface();
         let Analysed::Section(section) = problem;
-        let line = |points: &[ThrustPoint]| -> Vec<BoundaryThrustPointDto> {
-            points
-                .iter()
-                .map(|t| BoundaryThrustPointDto {
-                    boundary: t.boundary,
-                    x: to_x(t.x),
-                    y: t.y,
-                    force: t.force,
-                    inside_slice: t.is_inside_slice,
-                })
-                .collect()
-        };
         SpencerResponse {
             converged,
             status,
@@ -262,21 +242,15 @@ impl SpencerResponse {
             slices,
             total_shear_strength,
             total_mobilised_shear,
-            thrust_line: line(&solution.thrust_line),
-            effective_thrust_line: line(&solution.effective_thrust_line),
+            thrust_line: thrust_points(problem, &solution.thrust_line),
+            effective_thrust_line: thrust_points(problem, &solution.effective_thrust_line),
             iterations: solution.iterations,
             strength_iterations: (solution.strength.rounds > 0).then_some(solution.strength.rounds),
             residual: solution.residual,
             warnings,
             solve_time_ms: solved.solve_time_ms,
             search: solved.search.as_ref().map(search_out),
-            grid: solved.search.as_ref().map(|search| GridDto {
-                xs: search.grid.xs.clone(),
-                ys: search.grid.ys.clone(),
-                factor_of_safety: search.grid.factors.clone(),
-                x_absolute: search.grid.xs.iter().map(|x| x + search.origin.0).collect(),
-                y_absolute: search.grid.ys.iter().map(|y| y + search.origin.1).collect(),
-            }),
+            grid: solved.search.as_ref().map(grid_out),
             methods: solved.methods.as_ref().map(MethodsDto::new),
             curves: solved.curves.as_ref().map(|c| CurvesDto {
                 theta_deg: c.theta_deg.clone(),
@@ -310,6 +284,48 @@ impl SpencerResponse {
                 .map(|(p, _)| p.clone()),
             sensitivity: solved.studies.sensitivity.clone(),
         }
+    }
+}
+
+/// A point of the section.
+fn point((x, y): (f64, f64)) -> PointDto {
+    PointDto { x, y }
+}
+
+/// The analysed circle, if the surface is one: its centre relative to the lower end, its ends.
+fn circle_out(problem: &Analysed) -> Option<CircleOutDto> {
+    problem.circle().map(|c| CircleOutDto {
+        x: c.centre.0 - c.lower_end.0,
+        y: c.centre.1 - c.lower_end.1,
+        radius: c.radius,
+        centre: point(c.centre),
+        lower_end: point(c.lower_end),
+        upper_exit: point(c.upper_exit),
+    })
+}
+
+/// A line of thrust as answered, in the request's x.
+fn thrust_points(problem: &Analysed, points: &[ThrustPoint]) -> Vec<BoundaryThrustPointDto> {
+    points
+        .iter()
+        .map(|t| BoundaryThrustPointDto {
+            boundary: t.boundary,
+            x: problem.request_x(t.x),
+            y: t.y,
+            force: t.force,
+            inside_slice: t.is_inside_slice,
+        })
+        .collect()
+}
+
+/// A search's grid of F, relative to the lower end and absolute.
+fn grid_out(search: &SearchReport) -> GridDto {
+    GridDto {
+        xs: search.grid.xs.clone(),
+        ys: search.grid.ys.clone(),
+        factor_of_safety: search.grid.factors.clone(),
+        x_absolute: search.grid.xs.iter().map(|x| x + search.origin.0).collect(),
+        y_absolute: search.grid.ys.iter().map(|y| y + search.origin.1).collect(),
     }
 }
 
@@ -349,7 +365,7 @@ fn search_out(search: &SearchReport) -> SearchOutDto {
         } else {
             super::options::CompositeDto::FollowBedrock
         },
-        budget_exhausted: search.timed_out,
+        budget_exhausted: !search.noncircular_stop.is_finished(),
         path: search.path.clone(),
         path_ms: search.path_ms.clone(),
     }

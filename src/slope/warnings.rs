@@ -1,6 +1,6 @@
 //! The warnings of a Spencer answer: what the engineer should look at before trusting F.
 
-use thrustline_solver::slope::SpencerStatus;
+use thrustline_solver::slope::{SpencerSolution, SpencerStatus};
 
 use super::solved::SolvedSlope;
 use crate::limits::MAX_SLICES;
@@ -11,21 +11,59 @@ use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
     let solution = &solved.solution;
     let mut warnings = Vec::new();
+    warnings.extend(status_warning(solution));
+    slice_warnings(solution, &mut warnings);
+    if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
+        warnings.push(Warning::new(
+            Code::SliceToleranceNotReached,
+            format!(
+                "slice_tolerance {} not reached before {MAX_SLICES} slices",
+                refinement.tolerance
+            ),
+        ));
+    }
+    if let Some(search) = &solved.search {
+        search_warnings(search, solution.factor_of_safety, &mut warnings);
+    }
+    if let Some(beyond) = beyond_the_ground(solved) {
+        warnings.push(beyond);
+    }
+    if !solution.strength.settled {
+        warnings.push(Warning::new(
+            Code::StrengthNotConsistent,
+            format!(
+                "the bases' strengths did not settle on their nonlinear envelopes in {} rounds: \
+                 F is that of the last round, not a consistent state",
+                solution.strength.rounds
+            ),
+        ));
+    }
+    warnings.extend(outside_the_grid(solved));
+    warnings.extend(supports_in_the_crack(solved));
+    warnings.extend(crate::study::warnings(
+        solved.studies.probabilistic.as_ref(),
+        solved.studies.sensitivity.as_ref(),
+    ));
+    warnings
+}
+
+/// The warning of an answer that did not converge plainly, if any.
+fn status_warning(solution: &SpencerSolution) -> Option<Warning> {
     match solution.status {
-        SpencerStatus::Converged => {}
-        SpencerStatus::NoSolution => warnings.push(Warning::new(
+        SpencerStatus::Converged => None,
+        SpencerStatus::NoSolution => Some(Warning::new(
             Code::NoSolution,
             "Spencer's equations have no root for this surface (none with every m_α positive, \
              and none past the poles of m_α with the slices there pressed onto their bases); no \
              factor of safety is reported",
         )),
-        SpencerStatus::MomentOnly => warnings.push(Warning::new(
+        SpencerStatus::MomentOnly => Some(Warning::new(
             Code::MomentOnly,
             "φ' = 0 and no parallel inter-slice forces satisfy force equilibrium: F is from \
              moment equilibrium alone (exact for a circle when φ' = 0); θ is undefined and the \
              slice forces are Bishop's (θ = 0)",
         )),
-        SpencerStatus::Unphysical => warnings.push(Warning::new(
+        SpencerStatus::Unphysical => Some(Warning::new(
             Code::Unphysical,
             format!(
                 "the equilibrium equations have a root F = {:e} that is not physical (F outside \
@@ -36,6 +74,10 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
             ),
         )),
     }
+}
+
+/// Slices with small m_α, dropped or left tension; boundaries the line of thrust leaves the mass.
+fn slice_warnings(solution: &SpencerSolution, warnings: &mut Vec<Warning>) {
     let at = |indices: &[usize], code: Code, words: &dyn Fn(&str) -> String| {
         let slices = one_based(indices);
         (!slices.is_empty()).then(|| Warning::new(code, words(&listed(&slices))).slices(slices))
@@ -74,38 +116,6 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
         );
         warnings.push(Warning::new(Code::ThrustLineOutside, message).boundaries(outside));
     }
-    if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
-        warnings.push(Warning::new(
-            Code::SliceToleranceNotReached,
-            format!(
-                "slice_tolerance {} not reached before {MAX_SLICES} slices",
-                refinement.tolerance
-            ),
-        ));
-    }
-    if let Some(search) = &solved.search {
-        search_warnings(search, solution.factor_of_safety, &mut warnings);
-    }
-    if let Some(beyond) = beyond_the_ground(solved) {
-        warnings.push(beyond);
-    }
-    if !solution.strength.settled {
-        warnings.push(Warning::new(
-            Code::StrengthNotConsistent,
-            format!(
-                "the bases' strengths did not settle on their nonlinear envelopes in {} rounds: \
-                 F is that of the last round, not a consistent state",
-                solution.strength.rounds
-            ),
-        ));
-    }
-    warnings.extend(outside_the_grid(solved));
-    warnings.extend(supports_in_the_crack(solved));
-    warnings.extend(crate::study::warnings(
-        solved.studies.probabilistic.as_ref(),
-        solved.studies.sensitivity.as_ref(),
-    ));
-    warnings
 }
 
 /// Bases whose pore pressure comes from the grid but lie outside it (u = 0 taken there).
@@ -216,7 +226,7 @@ fn search_warnings(
                      the grid: the true minimum may lie outside it",
         ));
     }
-    if search.timed_out {
+    if !search.noncircular_stop.is_finished() {
         warnings.push(Warning::new(
             Code::BudgetExhausted,
             "a budget ended the non-circular search (time_budget_ms, max_evaluations or the \

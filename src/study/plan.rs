@@ -217,64 +217,7 @@ fn variable(at: &str, v: &VariableDto, value: f64) -> Result<Variable, ApiError>
             ));
         }
     }
-    let std = || {
-        let s = v.std.ok_or_else(|| {
-            ApiError::invalid(format!("{at}.std"), "is required for this distribution")
-        })?;
-        within(&format!("{at}.std"), s, Range::greater_than(0.0))
-    };
-    let ends = || match (min, max) {
-        (Some(a), Some(b)) => Ok((a, b)),
-        _ => Err(ApiError::invalid(
-            format!("{at}.{}", if min.is_none() { "min" } else { "max" }),
-            "is required for this distribution (its end)",
-        )),
-    };
-    let no_std = || match v.std {
-        Some(_) => Err(ApiError::invalid(
-            format!("{at}.std"),
-            "is for normal and lognormal: min and max set this distribution",
-        )),
-        None => Ok(()),
-    };
-    let distribution = match v.distribution {
-        DistributionDto::Normal => Distribution::Normal {
-            mean: value,
-            std: std()?,
-        },
-        DistributionDto::Lognormal => {
-            if value <= 0.0 {
-                return Err(ApiError::invalid(
-                    format!("{at}.field"),
-                    format!("is {value}: a lognormal variable's mean must be positive"),
-                ));
-            }
-            Distribution::Lognormal {
-                mean: value,
-                std: std()?,
-            }
-        }
-        DistributionDto::Uniform => {
-            no_std()?;
-            let (min, max) = ends()?;
-            Distribution::Uniform { min, max }
-        }
-        DistributionDto::Triangular => {
-            no_std()?;
-            let (min, max) = ends()?;
-            if !(min..=max).contains(&value) {
-                return Err(ApiError::invalid(
-                    format!("{at}.field"),
-                    format!("is {value}: a triangular variable's mode lies in [min, max]"),
-                ));
-            }
-            Distribution::Triangular {
-                min,
-                mode: value,
-                max,
-            }
-        }
-    };
+    let distribution = distribution(at, v, value, min, max)?;
     let variable = Variable {
         distribution,
         min,
@@ -287,6 +230,84 @@ fn variable(at: &str, v: &VariableDto, value: f64) -> Result<Variable, ApiError>
         ));
     }
     Ok(variable)
+}
+
+/// A variable's distribution with `value` as its mean (or mode) between `min` and `max`.
+fn distribution(
+    at: &str,
+    v: &VariableDto,
+    value: f64,
+    min: Option<f64>,
+    max: Option<f64>,
+) -> Result<Distribution, ApiError> {
+    Ok(match v.distribution {
+        DistributionDto::Normal => Distribution::Normal {
+            mean: value,
+            std: std_dev(at, v)?,
+        },
+        DistributionDto::Lognormal => {
+            if value <= 0.0 {
+                return Err(ApiError::invalid(
+                    format!("{at}.field"),
+                    format!("is {value}: a lognormal variable's mean must be positive"),
+                ));
+            }
+            Distribution::Lognormal {
+                mean: value,
+                std: std_dev(at, v)?,
+            }
+        }
+        DistributionDto::Uniform => {
+            no_std(at, v)?;
+            let (min, max) = ends(at, min, max)?;
+            Distribution::Uniform { min, max }
+        }
+        DistributionDto::Triangular => {
+            no_std(at, v)?;
+            let (min, max) = ends(at, min, max)?;
+            if !(min..=max).contains(&value) {
+                return Err(ApiError::invalid(
+                    format!("{at}.field"),
+                    format!("is {value}: a triangular variable's mode lies in [min, max]"),
+                ));
+            }
+            Distribution::Triangular {
+                min,
+                mode: value,
+                max,
+            }
+        }
+    })
+}
+
+/// A normal or lognormal variable's standard deviation, required and positive.
+fn std_dev(at: &str, v: &VariableDto) -> Result<f64, ApiError> {
+    let s = v.std.ok_or_else(|| {
+        ApiError::invalid(format!("{at}.std"), "is required for this distribution")
+    })?;
+    within(&format!("{at}.std"), s, Range::greater_than(0.0))
+}
+
+/// A uniform or triangular variable's ends, both required.
+fn ends(at: &str, min: Option<f64>, max: Option<f64>) -> Result<(f64, f64), ApiError> {
+    match (min, max) {
+        (Some(a), Some(b)) => Ok((a, b)),
+        _ => Err(ApiError::invalid(
+            format!("{at}.{}", if min.is_none() { "min" } else { "max" }),
+            "is required for this distribution (its end)",
+        )),
+    }
+}
+
+/// A uniform or triangular variable takes no standard deviation.
+fn no_std(at: &str, v: &VariableDto) -> Result<(), ApiError> {
+    match v.std {
+        Some(_) => Err(ApiError::invalid(
+            format!("{at}.std"),
+            "is for normal and lognormal: min and max set this distribution",
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The correlation matrix of `dto`'s pairs (empty without any), positive definite.

@@ -98,6 +98,20 @@ where
         progress,
     );
     stop.map_err(StudyStop::Stopped)?;
+    let first_refusal = answers.iter().find_map(|a| match a {
+        Sampled::Refused(why) => Some(why.clone()),
+        _ => None,
+    });
+    let out = probabilistic_out(plan, &answers, start);
+    Ok((out, first_refusal))
+}
+
+/// The answer of a probabilistic study from its samples' `answers` (started at `start`).
+fn probabilistic_out(
+    plan: &ProbabilisticPlan,
+    answers: &[Sampled],
+    start: Instant,
+) -> ProbabilisticOutDto {
     let solved: Vec<Option<f64>> = answers
         .iter()
         .filter(|a| !matches!(a, Sampled::Refused(_)))
@@ -106,13 +120,9 @@ where
             _ => None,
         })
         .collect();
-    let first_refusal = answers.iter().find_map(|a| match a {
-        Sampled::Refused(why) => Some(why.clone()),
-        _ => None,
-    });
     let s = summarise(&solved, 1.0, plan.bins);
     let answered = s.samples - s.unsolved;
-    let out = ProbabilisticOutDto {
+    ProbabilisticOutDto {
         samples: answers.len(),
         sampling: match plan.sampling {
             study::Sampling::MonteCarlo => SamplingDto::MonteCarlo,
@@ -144,8 +154,7 @@ where
         unsolved: s.unsolved,
         refused: answers.len() - s.samples,
         time_ms: start.elapsed().as_secs_f64() * 1e3,
-    };
-    Ok((out, first_refusal))
+    }
 }
 
 /// Runs `plan` on `base` (the request as JSON, as stated).

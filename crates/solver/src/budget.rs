@@ -88,10 +88,11 @@ impl Budget {
         }
     }
 
-    /// Why a stage that ran out of time stopped: [`Stop::Cancelled`] when the flag was raised,
-    /// else [`Stop::TimeLimit`] (the budget's deadline, or a limit of the stage's own).
-    pub fn out_of_time(&self) -> Stop {
-        self.check().err().unwrap_or(Stop::TimeLimit)
+    /// How the budget stands: [`Stop::Finished`] while it lasts, else why it is spent
+    /// ([`Stop::Cancelled`] first, then [`Stop::TimeLimit`]). A loop that ended early reports
+    /// this as its stop.
+    pub fn stop(&self) -> Stop {
+        self.check().err().unwrap_or(Stop::Finished)
     }
 
     /// Whether the budget is spent.
@@ -124,6 +125,9 @@ pub enum Stop {
     Cancelled,
     /// A search found no candidate with a solution in the region it was given.
     NoCandidate,
+    /// A search's own cap on the trial surfaces it may evaluate was reached (a count that
+    /// gives the same answer on every machine); it answers the best found so far.
+    EvaluationCap,
 }
 
 impl Stop {
@@ -145,6 +149,7 @@ impl fmt::Display for Stop {
             Self::TimeLimit => "stopped at the time limit",
             Self::Cancelled => "cancelled",
             Self::NoCandidate => "no candidate with a solution",
+            Self::EvaluationCap => "stopped at its evaluation cap",
         })
     }
 }

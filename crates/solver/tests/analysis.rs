@@ -165,11 +165,7 @@ fn milankovitch_problem(thickness: f64, voussoirs: usize) -> ArchProblem {
 }
 
 fn plan(programme: Programme, friction: Friction) -> ArchPlan {
-    ArchPlan {
-        programme,
-        friction,
-        settings: LimitSettings::default(),
-    }
+    ArchPlan::new(programme, friction, LimitSettings::default())
 }
 
 #[test]
@@ -240,6 +236,45 @@ fn a_rolling_load_answers_its_least_stop_as_that_stop_alone_answers() {
     // The problem answered is the critical stop's: its live loads are that stop's.
     assert_eq!(outcome.problem.live_loads(), stops[least_at].as_slice());
     assert_eq!(outcome.status, ArchStatus::Limit(LimitStatus::Solved));
+}
+
+#[test]
+fn the_bonded_comparison_is_the_bonded_problem_analysed_alone() {
+    // A plan that names a bonded problem answers its own λ as without it, and beside it the λ
+    // the bonded problem's live-load programme gives alone (the same programme on the same
+    // data: equal to rounding, 1e-12 relative); a dead-load plan compares nothing.
+    let base = milankovitch_problem(1.5, 30);
+    let problem = base.clone().with_live_loads(unit_load(&base, 8)).unwrap();
+    let thick = milankovitch_problem(2.0, 30);
+    let bonded = thick.clone().with_live_loads(unit_load(&thick, 8)).unwrap();
+    let alone = solve_live_load(&bonded, &LimitSettings::default())
+        .unwrap()
+        .load_factor
+        .unwrap();
+    let without = analyse_arch(
+        &problem,
+        &plan(Programme::LiveLoad, Friction::Checked),
+        &Budget::unlimited(),
+    )
+    .unwrap();
+    let with = ArchPlan {
+        bonded: Some(bonded.clone()),
+        ..plan(Programme::LiveLoad, Friction::Checked)
+    };
+    let outcome = analyse_arch(&problem, &with, &Budget::unlimited()).unwrap();
+    assert_eq!(outcome.solution.load_factor, without.solution.load_factor);
+    assert_eq!(without.bonded_load_factor, None);
+    let compared = outcome.bonded_load_factor.unwrap();
+    assert!(
+        (compared - alone).abs() <= 1e-12 * alone,
+        "{compared} vs {alone}"
+    );
+    let dead = ArchPlan {
+        bonded: Some(bonded),
+        ..plan(Programme::DeadLoad, Friction::Checked)
+    };
+    let outcome = analyse_arch(&problem, &dead, &Budget::unlimited()).unwrap();
+    assert_eq!(outcome.bonded_load_factor, None);
 }
 
 /// Two leaves 0.5 × 2 under a 1 × 0.5 cap on a base, μ = 0.5, pushed sideways at the cap.

@@ -149,18 +149,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             parts::mechanism(&mut canvas, assembly, mechanism, solved.input.is_curved);
         }
     }
-    // A chain is drawn with its line of thrust; other assemblies block by block, with the
-    // points of action at their contacts.
-    let thrust: Vec<(f64, f64)> = solved
-        .thrust_line
-        .iter()
-        .map(|t| t.point.unwrap_or((f64::NAN, f64::NAN)))
-        .collect();
-    if assembly.is_chain() {
-        canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
-    } else {
-        canvas.dots(&thrust, 5.0, "#c62828");
-    }
+    thrust_line(&mut canvas, solved);
     let hinge_count = parts::hinges_and_loads(&mut canvas, assembly, mechanism, loads);
     joints::passive(
         &mut canvas,
@@ -173,6 +162,37 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
     if !dense {
         joints::sliding(&mut canvas, assembly, mechanism, &mut legend);
     }
+    complete_legend(&mut legend, solved, hinge_count, dense);
+    for (colour, text) in &legend {
+        canvas.key(text, colour, 11.0, false);
+    }
+    joints_key(&mut canvas, assembly);
+    if let Some(curve) = &solved.rolling {
+        rolling::rolling_curve(&mut canvas, curve);
+    }
+    crate::svg::study::panels(&mut canvas, &solved.studies, "λ");
+    canvas.finish(title)
+}
+
+/// Draws the line of thrust: a chain's as a line, other assemblies' as points of action.
+fn thrust_line(canvas: &mut Canvas, solved: &SolvedArch) {
+    // A chain is drawn with its line of thrust; other assemblies block by block, with the
+    // points of action at their contacts.
+    let thrust: Vec<(f64, f64)> = solved
+        .thrust_line
+        .iter()
+        .map(|t| t.point.unwrap_or((f64::NAN, f64::NAN)))
+        .collect();
+    if solved.input.problem.assembly().is_chain() {
+        canvas.polyline(&thrust, "stroke=\"#c62828\" stroke-width=\"1.8\"");
+    } else {
+        canvas.dots(&thrust, 5.0, "#c62828");
+    }
+}
+
+/// Adds the thrust line (first), hinges, mechanism (not drawn when `dense`) and loads to the key.
+fn complete_legend(legend: &mut Legend, solved: &SolvedArch, hinge_count: usize, dense: bool) {
+    let mechanism = solved.solution.mechanism.as_ref();
     if !solved.thrust_line.is_empty() {
         legend.insert(0, ("#c62828", "— line of thrust".into()));
     }
@@ -196,16 +216,7 @@ pub fn draw(solved: &SolvedArch, title: &str) -> String {
             false => ("#546e7a", "- - collapse mechanism".into()),
         });
     }
-    if !loads.is_empty() {
+    if !solved.input.problem.live_loads().is_empty() {
         legend.push(("#1565c0", "→ live loads".into()));
     }
-    for (colour, text) in &legend {
-        canvas.key(text, colour, 11.0, false);
-    }
-    joints_key(&mut canvas, assembly);
-    if let Some(curve) = &solved.rolling {
-        rolling::rolling_curve(&mut canvas, curve);
-    }
-    crate::svg::study::panels(&mut canvas, &solved.studies, "λ");
-    canvas.finish(title)
 }

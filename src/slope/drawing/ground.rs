@@ -26,10 +26,38 @@ pub fn ground(
     ground.push((left.min(first.0), bottom));
     canvas.polygon(&ground, "fill=\"#d7ccc8\" stroke=\"none\"");
     let mut legend: Vec<(&'static str, String)> = Vec::new();
+    layers(
+        canvas,
+        problem,
+        left.min(first.0),
+        right.max(last.0),
+        bottom,
+        &mut legend,
+    );
+    canvas.polyline(&outline, "stroke=\"#5d4037\" stroke-width=\"1.2\"");
+    section_lines(canvas, scene, left, right, &mut legend);
+    grid(canvas, scene, &mut legend);
+    if !scene.loads.is_empty() {
+        // Surcharges are drawn as boxes on the ground, line loads as their thin edge.
+        legend.push(("#e65100", "surcharges and line loads".to_owned()));
+    }
+    loads(canvas, scene, size);
+    legend
+}
+
+/// Draws each layer in its colour between `x_lo` and `x_hi` down to `bottom`, when named.
+fn layers(
+    canvas: &mut Canvas,
+    problem: &Analysed,
+    x_lo: f64,
+    x_hi: f64,
+    bottom: f64,
+    legend: &mut Vec<(&'static str, String)>,
+) {
     let Analysed::Section(p) = problem;
     {
         // Each layer in its colour, over the plain ground colour.
-        let fills = layer_fills(p.section(), left.min(first.0), right.max(last.0), bottom);
+        let fills = layer_fills(p.section(), x_lo, x_hi, bottom);
         // One Mohr–Coulomb soil needs no key; other models, and a soil that does not drain in
         // a drawdown, are named.
         let named = p.section().layers().len() > 1
@@ -51,7 +79,16 @@ pub fn ground(
             legend.push((fill.colour, fill.label.clone()));
         }
     }
-    canvas.polyline(&outline, "stroke=\"#5d4037\" stroke-width=\"1.2\"");
+}
+
+/// Draws the layer tops, bedrock and the water line, continued level to `left` and `right`.
+fn section_lines(
+    canvas: &mut Canvas,
+    scene: &Scene,
+    left: f64,
+    right: f64,
+    legend: &mut Vec<(&'static str, String)>,
+) {
     for (points, colour, label) in &scene.lines {
         let mut line = vec![(left.min(points[0].0), points[0].1)];
         line.extend(points.iter().copied());
@@ -70,11 +107,10 @@ pub fn ground(
             legend.push((*colour, label.clone()));
         }
     }
-    grid(canvas, scene, &mut legend);
-    if !scene.loads.is_empty() {
-        // Surcharges are drawn as boxes on the ground, line loads as their thin edge.
-        legend.push(("#e65100", "surcharges and line loads".to_owned()));
-    }
+}
+
+/// Draws the surcharges as boxes `0.04·size` high on the ground, line loads as their edge.
+fn loads(canvas: &mut Canvas, scene: &Scene, size: f64) {
     for (a, b) in &scene.loads {
         let y = |x: f64| {
             let i = scene.ground.partition_point(|p| p.0 < x);
@@ -100,7 +136,6 @@ pub fn ground(
             "stroke=\"#e65100\" stroke-width=\"1.2\"",
         );
     }
-    legend
 }
 
 /// A pore-pressure grid: its points and their hull, cut at the axes (a grid wider than the

@@ -23,6 +23,22 @@ pub fn factor_map(
             (a.min(*v), b.max(*v))
         });
     let cap = lo + (hi - lo).min(2.0 * lo.max(1e-9));
+    cells(canvas, grid, lower_end, lo, cap);
+    let labelled = contours(canvas, grid, lower_end, visible, lo, reserved);
+    canvas.clip_end();
+    canvas.key(
+        &format!(
+            "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {labelled} labelled \
+             contours{critical}"
+        ),
+        "#b71c1c",
+        11.0,
+        true,
+    );
+}
+
+/// Draws one cell per grid point (relative to `lower_end`), coloured from `lo` (red) to `cap`.
+fn cells(canvas: &mut Canvas, grid: &FactorGrid, lower_end: (f64, f64), lo: f64, cap: f64) {
     let (dx, dy) = (cell(&grid.xs), cell(&grid.ys));
     for (j, row) in grid.factors.iter().enumerate() {
         for (i, f) in row.iter().enumerate() {
@@ -41,6 +57,17 @@ pub fn factor_map(
             );
         }
     }
+}
+
+/// Draws the contours of F above the least `lo`, labelled clear of `reserved`; counts the labels.
+fn contours(
+    canvas: &mut Canvas,
+    grid: &FactorGrid,
+    lower_end: (f64, f64),
+    visible: [f64; 4],
+    lo: f64,
+    reserved: &[[f64; 4]],
+) -> usize {
     // Contours F = F_min·(1.02, 1.05, 1.1, 1.2, 1.4, 1.7) on the grid refined 4 times per
     // cell (cubic), each labelled with its F at its rightmost point inside the grid (nested
     // contours spread their labels along x; the grid's edges crowd them).
@@ -92,16 +119,7 @@ pub fn factor_map(
             labelled += 1;
         }
     }
-    canvas.clip_end();
-    canvas.key(
-        &format!(
-            "F over centres: red {lo:.3} (grid least) … blue ≥ {cap:.3}; {labelled} labelled \
-             contours{critical}"
-        ),
-        "#b71c1c",
-        11.0,
-        true,
-    );
+    labelled
 }
 
 fn cell(values: &[f64]) -> f64 {

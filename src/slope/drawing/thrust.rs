@@ -23,7 +23,40 @@ pub fn surface(
         canvas.polyline(side, "stroke=\"#8d6e63\" stroke-width=\"0.4\"");
     }
     canvas.polyline(&scene.surface, "stroke=\"#212121\" stroke-width=\"1.8\"");
-    // The circle's centre and two radii to the ends of the slip surface.
+    circle(canvas, scene);
+    // The line of thrust on the slice boundaries, broken where a point leaves its slice (an
+    // inter-slice force near zero puts it anywhere): those points are marked with a ring.
+    canvas.polyline(
+        &drawn(solved, &solution.thrust_line),
+        "stroke=\"#c62828\" stroke-width=\"1.6\"",
+    );
+    outside_marks(canvas, solved, legend);
+    // Pore water moves the effective line off the total one by more than rounding.
+    let has_water = solution
+        .thrust_line
+        .iter()
+        .zip(&solution.effective_thrust_line)
+        .any(|(t, e)| match (t.y, e.y) {
+            (Some(a), Some(b)) => (a - b).abs() > 1e-9 * size,
+            (a, b) => a.is_some() != b.is_some(),
+        });
+    if has_water {
+        // Broken where it leaves its slice, like the total one.
+        canvas.polyline(
+            &drawn(solved, &solution.effective_thrust_line),
+            "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
+        );
+        legend.push((
+            "#c62828",
+            "line of thrust of the effective forces (dashed; not drawn where it leaves its \
+             slice)"
+                .to_owned(),
+        ));
+    }
+}
+
+/// Draws a circle's centre, labelled with its radius, and two radii to the surface's ends.
+fn circle(canvas: &mut Canvas, scene: &Scene) {
     if let Some(PlacedCircle {
         centre,
         radius,
@@ -43,20 +76,25 @@ pub fn surface(
             "font-size=\"11\" font-family=\"sans-serif\" fill=\"#212121\"",
         );
     }
-    // The line of thrust on the slice boundaries, broken where a point leaves its slice (an
-    // inter-slice force near zero puts it anywhere): those points are marked with a ring.
-    let drawn = |line: &[ThrustPoint]| -> Vec<(f64, f64)> {
-        line.iter()
-            .map(|t| match t.y {
-                Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
-                _ => (f64::NAN, f64::NAN),
-            })
-            .collect()
-    };
-    canvas.polyline(
-        &drawn(&solution.thrust_line),
-        "stroke=\"#c62828\" stroke-width=\"1.6\"",
-    );
+}
+
+/// A line of thrust in the request's coordinates, broken (NaN) where a point leaves its slice.
+fn drawn(solved: &SolvedSlope, line: &[ThrustPoint]) -> Vec<(f64, f64)> {
+    line.iter()
+        .map(|t| match t.y {
+            Some(y) if t.is_inside_slice => (solved.problem.request_x(t.x), y),
+            _ => (f64::NAN, f64::NAN),
+        })
+        .collect()
+}
+
+/// Rings the boundaries where the line of thrust leaves its slice, at the ground, and keys them.
+fn outside_marks(
+    canvas: &mut Canvas,
+    solved: &SolvedSlope,
+    legend: &mut Vec<(&'static str, String)>,
+) {
+    let solution = &solved.solution;
     let outside = solution
         .thrust_line
         .iter()
@@ -75,28 +113,6 @@ pub fn surface(
         legend.push((
             "#c62828",
             format!("○ {outside} boundaries where the line of thrust leaves its slice (not drawn)"),
-        ));
-    }
-    // Pore water moves the effective line off the total one by more than rounding.
-    let has_water = solution
-        .thrust_line
-        .iter()
-        .zip(&solution.effective_thrust_line)
-        .any(|(t, e)| match (t.y, e.y) {
-            (Some(a), Some(b)) => (a - b).abs() > 1e-9 * size,
-            (a, b) => a.is_some() != b.is_some(),
-        });
-    if has_water {
-        // Broken where it leaves its slice, like the total one.
-        canvas.polyline(
-            &drawn(&solution.effective_thrust_line),
-            "stroke=\"#c62828\" stroke-width=\"1.2\" stroke-dasharray=\"5 3\"",
-        );
-        legend.push((
-            "#c62828",
-            "line of thrust of the effective forces (dashed; not drawn where it leaves its \
-             slice)"
-                .to_owned(),
         ));
     }
 }

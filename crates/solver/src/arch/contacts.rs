@@ -127,29 +127,7 @@ fn check_polygon(piece: Piece, given: &[Point], tolerance: f64) -> Result<Polygo
             ));
         }
     }
-    for i in 0..n {
-        for j in i + 2..n {
-            if i == 0 && j == n - 1 {
-                continue;
-            }
-            let (a, b) = (given[i], given[(i + 1) % n]);
-            let (c, d) = (given[j], given[(j + 1) % n]);
-            let touching = distance_to_segment(a, c, d).min(distance_to_segment(b, c, d))
-                <= tolerance
-                || distance_to_segment(c, a, b).min(distance_to_segment(d, a, b)) <= tolerance;
-            if touching || properly_cross(a, b, c, d, 0.0) {
-                return Err(ArchError::geometry(
-                    parameter,
-                    format!(
-                        "{} is self-intersecting: edges {} and {} meet",
-                        piece.name(),
-                        i + 1,
-                        j + 1
-                    ),
-                ));
-            }
-        }
-    }
+    check_not_self_intersecting(piece, given, tolerance)?;
     let (area, _) = polygon_area_centroid(given);
     let extent = given
         .iter()
@@ -180,6 +158,39 @@ fn check_polygon(piece: Piece, given: &[Point], tolerance: f64) -> Result<Polygo
         lo,
         hi,
     })
+}
+
+/// Rejects a polygon two of whose non-adjacent edges touch or cross.
+fn check_not_self_intersecting(
+    piece: Piece,
+    given: &[Point],
+    tolerance: f64,
+) -> Result<(), ArchError> {
+    let n = given.len();
+    for i in 0..n {
+        for j in i + 2..n {
+            if i == 0 && j == n - 1 {
+                continue;
+            }
+            let (a, b) = (given[i], given[(i + 1) % n]);
+            let (c, d) = (given[j], given[(j + 1) % n]);
+            let touching = distance_to_segment(a, c, d).min(distance_to_segment(b, c, d))
+                <= tolerance
+                || distance_to_segment(c, a, b).min(distance_to_segment(d, a, b)) <= tolerance;
+            if touching || properly_cross(a, b, c, d, 0.0) {
+                return Err(ArchError::geometry(
+                    piece.parameter(),
+                    format!(
+                        "{} is self-intersecting: edges {} and {} meet",
+                        piece.name(),
+                        i + 1,
+                        j + 1
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The contact of edge (a, b) of a counter-clockwise polygon with edge (c, d) of another, when

@@ -283,7 +283,7 @@ fn layered_dead_loads(faces: &ExtradosFaces, fill: &Fill) -> Vec<LiveLoad> {
 }
 
 /// The extrados of every voussoir, sampled once: what dispersing road loads needs.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ExtradosProfile {
     /// (block, points) of each face.
     blocks: Vec<(usize, Vec<(f64, f64)>)>,

@@ -357,22 +357,7 @@ fn build(
             generated.push(Some((span, v)));
         }
     }
-    let mut supports = Vec::new();
-    // The abutments at the two ends: the last span's right springing, the first's left,
-    // extending back along the arch's direction there.
-    let (right, left) = (shape.normal(0), shape.normal(last));
-    supports.push(abutment(
-        at(piers.spans - 1, 0, 0.0),
-        at(piers.spans - 1, 0, depth),
-        (right.1, -right.0),
-        depth,
-    ));
-    supports.push(abutment(
-        at(0, last, 0.0),
-        at(0, last, depth),
-        (-left.1, left.0),
-        depth,
-    ));
+    let mut supports = end_abutments(shape, &at, piers.spans);
     // Piers between spans i (right springing) and i + 1 (left springing), on the ground.
     for span in 0..piers.spans.saturating_sub(1) {
         let (i_l, e_l) = (at(span, 0, 0.0), at(span, 0, depth));
@@ -390,7 +375,50 @@ fn build(
         ]);
     }
     let mut assembly = Assembly::from_polygons(&polygons, &supports)?;
-    for interface in &mut assembly.interfaces {
+    classify_interfaces(&mut assembly.interfaces, &generated, shape, &at);
+    Ok(Bridge {
+        assembly,
+        ring: generated.iter().map(|g| g.map(|(_, v)| v.ring)).collect(),
+        extrados,
+    })
+}
+
+/// The abutments at the two ends: the last span's right springing, the first's left, extending
+/// back along the arch's direction there (`at` places a corner of a span in the bridge's frame).
+fn end_abutments(
+    shape: &impl SpanShape,
+    at: &impl Fn(usize, usize, f64) -> Point,
+    spans: usize,
+) -> Vec<Vec<Point>> {
+    let (n, depth) = (shape.voussoirs(), shape.thickness());
+    let last = 2 * n;
+    let mut supports = Vec::new();
+    let (right, left) = (shape.normal(0), shape.normal(last));
+    supports.push(abutment(
+        at(spans - 1, 0, 0.0),
+        at(spans - 1, 0, depth),
+        (right.1, -right.0),
+        depth,
+    ));
+    supports.push(abutment(
+        at(0, last, 0.0),
+        at(0, last, depth),
+        (-left.1, left.0),
+        depth,
+    ));
+    supports
+}
+
+/// Marks the contacts between rings as ring interfaces and orients every joint of the
+/// generator along its direction (`at` places a corner of a span in the bridge's frame).
+fn classify_interfaces(
+    interfaces: &mut [Interface],
+    generated: &[Option<(usize, &Voussoir)>],
+    shape: &impl SpanShape,
+    at: &impl Fn(usize, usize, f64) -> Point,
+) {
+    let last = 2 * shape.voussoirs();
+    for interface in interfaces {
         if let (Some(Some((_, a))), Some(Some((_, b)))) = (
             interface.lower.map(|x| generated[x]),
             interface.upper.map(|y| generated[y]),
@@ -399,15 +427,10 @@ fn build(
                 interface.kind = InterfaceKind::Ring;
             }
         }
-        if let Some((_, j)) = joint_step(interface, &generated, |s, j| at(s, j, 0.0), last) {
+        if let Some((_, j)) = joint_step(interface, generated, |s, j| at(s, j, 0.0), last) {
             orient(interface, shape.normal(j));
         }
     }
-    Ok(Bridge {
-        assembly,
-        ring: generated.iter().map(|g| g.map(|(_, v)| v.ring)).collect(),
-        extrados,
-    })
 }
 
 /// The distance between neighbouring spans' frames: the span between the intrados springings

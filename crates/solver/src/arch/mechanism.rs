@@ -100,17 +100,7 @@ pub(crate) fn read_mechanism(
         .chunks_exact(3)
         .map(|c| [c[0], c[1], c[2] / length_scale])
         .collect();
-    let speed = assembly
-        .blocks
-        .iter()
-        .zip(&raw)
-        .flat_map(|(block, v)| {
-            block.corners.iter().map(move |c| {
-                let (dx, dy) = (c.0 - block.centroid.0, c.1 - block.centroid.1);
-                (v[0] - v[2] * dy).hypot(v[1] + v[2] * dx)
-            })
-        })
-        .fold(0.0, f64::max);
+    let speed = fastest_corner(assembly, &raw);
     if !(speed > 0.0 && speed.is_finite()) {
         return None;
     }
@@ -135,27 +125,9 @@ pub(crate) fn read_mechanism(
         }
         let k = tag.interface;
         let angle_deg = assembly.interfaces[k].angle_deg;
-        let hinge = match (tag.resultant, tag.bound) {
-            (Resultant::Q, Bound::Lower) => Some(HingeSide::Intrados),
-            (Resultant::S, Bound::Lower) => Some(HingeSide::Extrados),
-            (Resultant::M, Bound::Upper) => Some(HingeSide::Extrados),
-            (Resultant::M, Bound::Lower) => Some(HingeSide::Intrados),
-            _ => None,
-        };
+        let hinge = hinge_of(tag);
         if let Some(side) = hinge {
-            let rotation = |b: Option<usize>| b.map_or(0.0, |b| velocities[b][2]);
-            let (higher, lower) = (assembly.interfaces[k].upper, assembly.interfaces[k].lower);
-            if !hinges
-                .iter()
-                .any(|h: &Hinge| h.interface == k && h.side == side)
-            {
-                hinges.push(Hinge {
-                    interface: k,
-                    angle_deg,
-                    side,
-                    rotation: rotation(higher) - rotation(lower),
-                });
-            }
+            push_hinge(&mut hinges, assembly, &velocities, k, side);
         }
         match (tag.resultant, tag.bound) {
             (Resultant::T | Resultant::U | Resultant::V, _) => sliding.push(k),
@@ -180,4 +152,55 @@ pub(crate) fn read_mechanism(
         sliding,
         crushing,
     })
+}
+
+/// The speed of the fastest corner of any block under the velocities `raw`.
+fn fastest_corner(assembly: &Assembly, raw: &[[f64; 3]]) -> f64 {
+    assembly
+        .blocks
+        .iter()
+        .zip(raw)
+        .flat_map(|(block, v)| {
+            block.corners.iter().map(move |c| {
+                let (dx, dy) = (c.0 - block.centroid.0, c.1 - block.centroid.1);
+                (v[0] - v[2] * dy).hypot(v[1] + v[2] * dx)
+            })
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The hinge an active limit makes: the lower limits of q and s, either limit of m.
+fn hinge_of(tag: &LimitTag) -> Option<HingeSide> {
+    match (tag.resultant, tag.bound) {
+        (Resultant::Q, Bound::Lower) => Some(HingeSide::Intrados),
+        (Resultant::S, Bound::Lower) => Some(HingeSide::Extrados),
+        (Resultant::M, Bound::Upper) => Some(HingeSide::Extrados),
+        (Resultant::M, Bound::Lower) => Some(HingeSide::Intrados),
+        _ => None,
+    }
+}
+
+/// Adds the hinge at `side` of interface `k`, unless it is already there, with the relative
+/// rotation of its two blocks.
+fn push_hinge(
+    hinges: &mut Vec<Hinge>,
+    assembly: &Assembly,
+    velocities: &[[f64; 3]],
+    k: usize,
+    side: HingeSide,
+) {
+    let angle_deg = assembly.interfaces[k].angle_deg;
+    let rotation = |b: Option<usize>| b.map_or(0.0, |b| velocities[b][2]);
+    let (higher, lower) = (assembly.interfaces[k].upper, assembly.interfaces[k].lower);
+    if !hinges
+        .iter()
+        .any(|h: &Hinge| h.interface == k && h.side == side)
+    {
+        hinges.push(Hinge {
+            interface: k,
+            angle_deg,
+            side,
+            rotation: rotation(higher) - rotation(lower),
+        });
+    }
 }

@@ -11,7 +11,8 @@
 //! - Equilibrium of block b is written for forces in x, y and the moment about its centroid,
 //!   counter-clockwise positive: H r + λ_dead·w + λ·p = 0 with w, p the applied loads.
 //!
-//! - [`analysis`]: one analysis of a plan within a budget — what runs after what.
+//! - [`analysis`]: one analysis of a plan within a budget — what runs after what; [`plan`] its
+//!   plan and outcome, `stage` the plan's programme.
 //! - [`geometry`]: blocks, interfaces, the circular arch generator and block chains.
 //! - [`equilibrium`]: the sparse equilibrium matrix H and the load vectors.
 //! - [`limit`]: the linear programmes (dead load, live load) solved with Clarabel.
@@ -35,10 +36,12 @@ pub mod limit;
 pub mod mechanism;
 pub mod memory;
 pub mod minimum_thickness;
+pub mod plan;
 pub mod profile;
 pub mod refine;
 pub mod resultant;
 pub mod rolling;
+mod stage;
 pub mod thrust_line;
 
 pub use crate::outcome::SolverFailure;

@@ -2,31 +2,38 @@
 //! between the critical stop's neighbours; a golden-section search over that bracket, one
 //! live-load analysis per position, narrows it to a given fraction of the stop spacing.
 
-use super::analysis::{analyse, ArchOutcome, ArchPlan, Friction, Programme, RefinedCritical};
-use super::equilibrium::LiveLoad;
 use super::error::ArchError;
 use super::limit::ArchProblem;
+use super::plan::{ArchOutcome, ArchPlan, Friction, Programme, RefineCritical, RefinedCritical};
+use super::stage::analyse_programme;
 use crate::budget::Budget;
 
 /// 1/φ, the golden section.
 const GOLDEN: f64 = 0.618_033_988_749_894_8;
 
-/// `outcome` (a finished rolling sweep over the stops at `positions`) with its critical stop
-/// narrowed to `tolerance` (a length): a golden-section search for the least λ between the
-/// critical stop's neighbours, the live loads at a position from `loads_at`. Where a position
-/// gives a lower λ than the stop, the answer is that position's (its problem, state and
-/// mechanism, friction treated as `plan` says); the curve keeps the stops' λ. Unchanged when
-/// there is no critical stop, the sweep did not finish, or the budget ends the search (then
-/// the stop's answer stands, with the stops' half spacing as its error).
+/// `outcome` (a finished rolling sweep over the stops at `refine.positions`) with its critical
+/// stop narrowed to [`RefineCritical::TOLERANCE`] of the stops' spacing: a golden-section search
+/// for the least λ between the critical stop's neighbours, the live loads at a position from
+/// the axles. Where a position gives a lower λ than the stop, the answer is that position's
+/// (its problem, state and mechanism, friction treated as `plan` says); the curve keeps the
+/// stops' λ. Unchanged when there is no critical stop, the sweep did not finish, or the budget
+/// ends the search (then the stop's answer stands, with the stops' half spacing as its error).
 pub fn refine_critical(
     mut outcome: ArchOutcome,
-    (problem, plan): (&ArchProblem, &ArchPlan),
-    positions: &[f64],
-    tolerance: f64,
-    loads_at: &dyn Fn(f64) -> Vec<LiveLoad>,
+    problem: &ArchProblem,
+    plan: &ArchPlan,
+    refine: &RefineCritical,
     budget: &Budget,
 ) -> Result<ArchOutcome, ArchError> {
     let start = std::time::Instant::now();
+    let positions = &refine.positions;
+    if positions.len() < 2 {
+        return Ok(outcome);
+    }
+    let spacing =
+        (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
+    let tolerance = RefineCritical::TOLERANCE * spacing;
+    let loads_at = |x: f64| refine.axles.loads_at(x);
     let Some(curve) = outcome.rolling.as_mut() else {
         return Ok(outcome);
     };
@@ -37,11 +44,11 @@ pub fn refine_critical(
         positions[i.saturating_sub(1)],
         positions[(i + 1).min(positions.len() - 1)],
     );
-    let associative = ArchPlan {
-        programme: Programme::LiveLoad,
-        friction: Friction::Associative,
-        settings: plan.settings.clone(),
-    };
+    let associative = ArchPlan::new(
+        Programme::LiveLoad,
+        Friction::Associative,
+        plan.settings.clone(),
+    );
     let mut evaluations = 0;
     let mut lambda = |x: f64| -> Result<Option<f64>, ArchError> {
         let loads = loads_at(x);
@@ -49,7 +56,7 @@ pub fn refine_critical(
             return Ok(Some(f64::INFINITY));
         }
         evaluations += 1;
-        let at = analyse(
+        let at = analyse_programme(
             &problem.clone().with_live_loads(loads)?,
             &associative,
             budget,
@@ -71,11 +78,8 @@ pub fn refine_critical(
     };
     if best.0 != positions[i] {
         // The answer at the refined position, friction treated as the plan says.
-        let at = ArchPlan {
-            programme: Programme::LiveLoad,
-            ..plan.clone()
-        };
-        let answer = analyse(
+        let at = ArchPlan::new(Programme::LiveLoad, plan.friction, plan.settings.clone());
+        let answer = analyse_programme(
             &problem.clone().with_live_loads(loads_at(best.0))?,
             &at,
             budget,

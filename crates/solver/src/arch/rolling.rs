@@ -25,10 +25,52 @@ use rayon::prelude::*;
 
 use super::equilibrium::LiveLoad;
 use super::error::ArchError;
+use super::fill::{road_load_on, ExtradosProfile, Fill, RoadLoad};
 use super::limit::{
     solve_live_load, solve_live_load_after, ArchProblem, LimitSettings, LimitSolution, LimitStatus,
     WarmLiveLoad,
 };
+
+/// One axle of a rolling load, relative to the set's reference point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Axle {
+    /// Position relative to the reference point.
+    pub offset: f64,
+    /// Vertical force (up positive), per unit width of the strip analysed.
+    pub fy: f64,
+    /// Length of its patch on the road (≥ 0).
+    pub length: f64,
+}
+
+/// A set of axles on the road, dispersed through the fill onto the extrados: the live loads
+/// with the set's reference point at any x (a rolling load's stops, and the positions between
+/// them that [`super::refine`] tries).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RollingAxles {
+    /// The extrados the loads land on.
+    pub profile: ExtradosProfile,
+    /// The fill that disperses them.
+    pub carrier: Fill,
+    /// The axles.
+    pub axles: Vec<Axle>,
+}
+
+impl RollingAxles {
+    /// The live loads with the reference point at x.
+    pub fn loads_at(&self, x: f64) -> Vec<LiveLoad> {
+        self.axles
+            .iter()
+            .flat_map(|axle| {
+                let load = RoadLoad {
+                    x: x + axle.offset,
+                    fy: axle.fy,
+                    length: axle.length,
+                };
+                road_load_on(&self.profile, &self.carrier, load)
+            })
+            .collect()
+    }
+}
 
 /// The solutions of a sweep, stop by stop.
 #[derive(Debug, Clone)]

@@ -27,17 +27,8 @@ pub fn brent(
     if !(fa.is_finite() && fb.is_finite()) || fa * fb > 0.0 {
         return None;
     }
-    if fa == 0.0 {
-        return Some(Root {
-            x: a,
-            evaluations: 0,
-        });
-    }
-    if fb == 0.0 {
-        return Some(Root {
-            x: b,
-            evaluations: 0,
-        });
+    if let Some(root) = root_at_an_end(a, b, fa, fb) {
+        return Some(root);
     }
     let (mut c, mut fc) = (a, fa);
     let mut d = b - a;
@@ -66,23 +57,7 @@ pub fn brent(
             });
         }
         if e.abs() >= tol && fa.abs() > fb.abs() {
-            // Inverse quadratic interpolation, or the secant step when only two points differ.
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qa = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            } else {
-                p = -p;
-            }
+            let (p, q) = interpolation_step(a, b, c, fa, fb, fc, m);
             if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
                 e = d;
                 d = p / q;
@@ -103,6 +78,46 @@ pub fn brent(
         }
     }
     None
+}
+
+/// The root when one end of the bracket is one already (`a` first), with no evaluation spent.
+fn root_at_an_end(a: f64, b: f64, fa: f64, fb: f64) -> Option<Root> {
+    if fa == 0.0 {
+        return Some(Root {
+            x: a,
+            evaluations: 0,
+        });
+    }
+    if fb == 0.0 {
+        return Some(Root {
+            x: b,
+            evaluations: 0,
+        });
+    }
+    None
+}
+
+/// The bracket's next step as p / q (p ≥ 0): inverse quadratic interpolation through a, b and
+/// c, or the secant step when only two points differ (`m` half the bracket, from b to c).
+#[inline]
+fn interpolation_step(a: f64, b: f64, c: f64, fa: f64, fb: f64, fc: f64, m: f64) -> (f64, f64) {
+    let s = fb / fa;
+    let (mut p, mut q);
+    if a == c {
+        p = 2.0 * m * s;
+        q = 1.0 - s;
+    } else {
+        let qa = fa / fc;
+        let r = fb / fc;
+        p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+    }
+    if p > 0.0 {
+        q = -q;
+    } else {
+        p = -p;
+    }
+    (p, q)
 }
 
 #[cfg(test)]

@@ -47,35 +47,17 @@ pub fn nelder_mead_to(
     max_evaluations: usize,
 ) -> Minimum {
     let n = start.len();
-    let mut simplex: Vec<Vec<f64>> = vec![start.to_vec()];
-    for i in 0..n {
-        let mut p = start.to_vec();
-        p[i] += step[i];
-        simplex.push(p);
-    }
+    let mut simplex = initial_simplex(start, step);
     let mut values: Vec<f64> = simplex.iter().map(|p| f(p)).collect();
     let mut evaluations = n + 1;
     while evaluations < max_evaluations {
-        let mut order: Vec<usize> = (0..=n).collect();
-        order.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
-        simplex = order.iter().map(|&i| simplex[i].clone()).collect();
-        values = order.iter().map(|&i| values[i]).collect();
-        let size = simplex[1..]
-            .iter()
-            .map(|p| {
-                p.iter()
-                    .zip(&simplex[0])
-                    .map(|(a, b)| (a - b).abs())
-                    .fold(0.0, f64::max)
-            })
-            .fold(0.0, f64::max);
+        sort_by_value(&mut simplex, &mut values);
+        let size = size_about_best(&simplex);
         let spread = values[n] - values[0];
         if size <= x_tolerance || spread < f_tolerance * values[0].abs() {
             break;
         }
-        let centroid: Vec<f64> = (0..n)
-            .map(|d| simplex[..n].iter().map(|p| p[d]).sum::<f64>() / n as f64)
-            .collect();
+        let centroid = centroid_of_best(&simplex);
         let along = |t: f64| -> Vec<f64> {
             (0..n)
                 .map(|d| centroid[d] + t * (simplex[n][d] - centroid[d]))
@@ -113,14 +95,7 @@ pub fn nelder_mead_to(
                 simplex[n] = contracted;
                 values[n] = fc;
             } else {
-                // Shrink towards the best point.
-                let best = simplex[0].clone();
-                for (point, value) in simplex.iter_mut().zip(values.iter_mut()).skip(1) {
-                    for (x, b) in point.iter_mut().zip(&best) {
-                        *x = b + SHRINK * (*x - b);
-                    }
-                    *value = f(point);
-                }
+                shrink(&mut simplex, &mut values, &f);
                 evaluations += n;
             }
         }
@@ -132,6 +107,63 @@ pub fn nelder_mead_to(
         value: values[best],
         point: simplex[best].clone(),
         evaluations,
+    }
+}
+
+/// The simplex of `start` and `start + step_i·e_i`.
+fn initial_simplex(start: &[f64], step: &[f64]) -> Vec<Vec<f64>> {
+    let n = start.len();
+    let mut simplex: Vec<Vec<f64>> = vec![start.to_vec()];
+    for i in 0..n {
+        let mut p = start.to_vec();
+        p[i] += step[i];
+        simplex.push(p);
+    }
+    simplex
+}
+
+/// Orders the vertices and their values from the best (smallest value) to the worst.
+#[inline]
+fn sort_by_value(simplex: &mut Vec<Vec<f64>>, values: &mut Vec<f64>) {
+    let n = simplex.len() - 1;
+    let mut order: Vec<usize> = (0..=n).collect();
+    order.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
+    *simplex = order.iter().map(|&i| simplex[i].clone()).collect();
+    *values = order.iter().map(|&i| values[i]).collect();
+}
+
+/// The simplex's size: the largest coordinate distance of a vertex from the best (the first).
+#[inline]
+fn size_about_best(simplex: &[Vec<f64>]) -> f64 {
+    simplex[1..]
+        .iter()
+        .map(|p| {
+            p.iter()
+                .zip(&simplex[0])
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The centroid of every vertex but the worst (the last).
+#[inline]
+fn centroid_of_best(simplex: &[Vec<f64>]) -> Vec<f64> {
+    let n = simplex.len() - 1;
+    (0..n)
+        .map(|d| simplex[..n].iter().map(|p| p[d]).sum::<f64>() / n as f64)
+        .collect()
+}
+
+/// Shrinks every vertex towards the best point (the first) and evaluates `f` at each moved one.
+#[inline]
+fn shrink(simplex: &mut [Vec<f64>], values: &mut [f64], f: &impl Fn(&[f64]) -> f64) {
+    let best = simplex[0].clone();
+    for (point, value) in simplex.iter_mut().zip(values.iter_mut()).skip(1) {
+        for (x, b) in point.iter_mut().zip(&best) {
+            *x = b + SHRINK * (*x - b);
+        }
+        *value = f(point);
     }
 }
 

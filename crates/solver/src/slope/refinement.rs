@@ -8,8 +8,7 @@ use std::num::NonZeroUsize;
 use super::error::SlopeError;
 use super::slices::Sliced;
 use super::spencer::{solve_spencer, SpencerSettings, SpencerSolution};
-use crate::budget::Budget;
-use crate::outcome::SolverFailure;
+use crate::budget::{Budget, Stop};
 
 /// Settings of a slice refinement.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,8 +48,6 @@ pub enum RefinementStatus {
     Settled,
     /// The slice limit was reached first.
     SliceLimit,
-    /// The budget was spent first.
-    SolverFailed(SolverFailure),
 }
 
 /// The finest problem solved, its solution and the steps that led there.
@@ -67,12 +64,12 @@ pub struct RefinedSolution<P> {
 }
 
 /// Solves `problem`, then doubles its slices until F settles within the tolerance; no doubling
-/// starts once `budget` is spent.
+/// starts once `budget` is spent, and the refinement then answers the budget's stop instead.
 pub fn refine_slices<P: Sliced>(
     problem: P,
     settings: &RefinementSettings,
     budget: &Budget,
-) -> Result<RefinedSolution<P>, SlopeError> {
+) -> Result<Result<RefinedSolution<P>, Stop>, SlopeError> {
     let mut solution = solve_spencer(&problem.model(), &settings.spencer);
     let mut problem = problem;
     let mut steps = vec![RefinementStep {
@@ -85,8 +82,8 @@ pub fn refine_slices<P: Sliced>(
         let Some(doubled) = doubled else {
             break RefinementStatus::SliceLimit;
         };
-        if budget.is_spent() {
-            break RefinementStatus::SolverFailed(SolverFailure::MaxTime);
+        if let Err(stop) = budget.check() {
+            return Ok(Err(stop));
         }
         let finer = problem.with_slices(doubled)?;
         let finer_solution = solve_spencer(&finer.model(), &settings.spencer);
@@ -104,12 +101,12 @@ pub fn refine_slices<P: Sliced>(
             break RefinementStatus::Settled;
         }
     };
-    Ok(RefinedSolution {
+    Ok(Ok(RefinedSolution {
         status,
         problem,
         solution,
         steps,
-    })
+    }))
 }
 
 #[cfg(test)]
@@ -123,8 +120,9 @@ mod tests {
         // in the thesis' table) the doublings settle to 1e-5; the answer is within 5e-5 of the
         // published four digits (their rounding).
         let settings = RefinementSettings::new(1e-5);
-        let refined =
-            refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited()).unwrap();
+        let refined = refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited())
+            .unwrap()
+            .unwrap();
         assert_eq!(refined.status, RefinementStatus::Settled);
         let f = refined.solution.factor_of_safety.unwrap();
         assert!((f - spencer_1967::FACTOR_OF_SAFETY).abs() < 5e-5, "F = {f}");
@@ -149,8 +147,9 @@ mod tests {
             max_slices: 80,
             ..RefinementSettings::new(1e-15)
         };
-        let refined =
-            refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited()).unwrap();
+        let refined = refine_slices(spencer_1967::problem(10), &settings, &Budget::unlimited())
+            .unwrap()
+            .unwrap();
         assert_eq!(refined.status, RefinementStatus::SliceLimit);
         assert_eq!(refined.steps.len(), 4); // 10, 20, 40, 80
 
@@ -158,11 +157,7 @@ mod tests {
         let spent = Budget::with_time_limit(std::time::Duration::ZERO);
         let settings = RefinementSettings::new(1e-15);
         let refined = refine_slices(spencer_1967::problem(10), &settings, &spent).unwrap();
-        assert_eq!(
-            refined.status,
-            RefinementStatus::SolverFailed(SolverFailure::MaxTime)
-        );
-        assert_eq!(refined.steps.len(), 1);
+        assert!(matches!(refined, Err(Stop::TimeLimit)));
     }
 
     #[test]

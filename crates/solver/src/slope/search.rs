@@ -15,9 +15,8 @@ use rayon::prelude::*;
 
 use super::error::SlopeError;
 use super::geometry::{Embankment, SlipCircle};
-use crate::budget::Budget;
+use crate::budget::{Budget, Stop};
 use crate::numerics::{nelder_mead_to, Minimum};
-use crate::outcome::SolverFailure;
 
 use super::section::trial::circle_outcome;
 use super::section::{check_circle, Section, SectionProblem, SlipShape};
@@ -174,22 +173,23 @@ pub struct FactorGrid {
     pub factors: Vec<Vec<Option<f64>>>,
 }
 
-/// How a search ended.
+/// What a search found (how it ended is its [`Stop`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SearchStatus {
     /// The critical circle was found.
     Found,
     /// No centre of the region gives a circle with a solution.
     NoValidCircle,
-    /// The search stopped early (its time limit): its answer is not to be trusted.
-    SolverFailed(SolverFailure),
 }
 
 /// The critical circle found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchSolution {
-    /// How the search ended.
+    /// What the search found.
     pub status: SearchStatus,
+    /// How it ended: [`Stop::Finished`], or the budget's reason when the budget cut it short
+    /// (its answer is then not to be trusted).
+    pub stop: Stop,
     /// The critical circle; `None` when no grid point gives a valid circle.
     pub circle: Option<SlipCircle>,
     /// Its factor of safety.
@@ -262,15 +262,6 @@ pub(crate) const F_RESOLUTION: f64 = 1e-13;
 fn within_reach(circle: SlipCircle, max_radius: Option<f64>) -> bool {
     // (x² + y²) against m² rather than hypot: this is asked of every circle of a grid.
     max_radius.is_none_or(|m| circle.x * circle.x + circle.y * circle.y <= m * m)
-}
-
-/// `otherwise`, unless the budget cut the search short.
-fn status(budget: &Budget, otherwise: SearchStatus) -> SearchStatus {
-    if budget.is_spent() {
-        SearchStatus::SolverFailed(SolverFailure::MaxTime)
-    } else {
-        otherwise
-    }
 }
 
 /// F over the grid, and the outcome of each point: `Err(Some(bishop))` where unsolved.
@@ -460,6 +451,7 @@ fn refine_from(
 fn without_circles(grid: &SearchGrid) -> SearchSolution {
     SearchSolution {
         status: SearchStatus::NoValidCircle,
+        stop: Stop::Finished,
         circle: None,
         factor_of_safety: None,
         grid: FactorGrid {
@@ -477,7 +469,7 @@ fn without_circles(grid: &SearchGrid) -> SearchSolution {
 }
 
 /// Searches the critical circle over `grid` (moving it when the minimum is on its edge), within
-/// `budget`: circles not evaluated by its end count as invalid and the status says so.
+/// `budget`: circles not evaluated by its end count as invalid and the stop says so.
 pub fn search_critical_circle(
     problem: &SearchProblem,
     grid: SearchGrid,
@@ -501,7 +493,8 @@ pub fn search_critical_circle(
         let Some(&(_, bi, bj)) = points.first() else {
             let (unsolved, unsolved_bishop_minimum, _) = unsolved_summary(&outcomes, (0, 0));
             return SearchSolution {
-                status: status(budget, SearchStatus::NoValidCircle),
+                status: SearchStatus::NoValidCircle,
+                stop: budget.stop(),
                 circle: None,
                 factor_of_safety: None,
                 grid: factors,
@@ -562,7 +555,8 @@ pub fn search_critical_circle(
         let (unsolved, unsolved_bishop_minimum, unsolved_near_minimum) =
             unsolved_summary(&outcomes, (bi, bj));
         return SearchSolution {
-            status: status(budget, SearchStatus::Found),
+            status: SearchStatus::Found,
+            stop: budget.stop(),
             circle: Some(circle),
             factor_of_safety: Some(f),
             grid: factors,

@@ -67,10 +67,11 @@ where
             Some(answer)
         })
         .collect();
+    // An item left out was left by the budget: the study stops with its reason.
     let stop = if answers.iter().all(Option::is_some) {
         Ok(())
     } else {
-        budget.check().and(Err(budget.out_of_time()))
+        Err(budget.check().err().unwrap_or(Stop::TimeLimit))
     };
     (answers.into_iter().flatten().collect(), stop)
 }

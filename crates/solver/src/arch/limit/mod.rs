@@ -45,6 +45,7 @@ use super::error::{ArchError, ArchParameter};
 use super::mechanism::Mechanism;
 use crate::outcome::SolverFailure;
 use context::{Context, Found, MarginEvaluation, LIVE_LOAD_CAP};
+use programme::Programme;
 
 mod crushing;
 pub mod non_associative;
@@ -134,36 +135,11 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
             start,
         );
     }
-    // Newton from the right on the convex margin(λ), safeguarded by bisection on [lo, hi].
     let full_margin = full.value;
-    let (mut lo, mut hi) = (0.0, full);
-    let mut carried: Option<MarginEvaluation> = None;
-    for _ in 0..60 {
-        let slope = cx.slope(&hi);
-        let newton = hi.lambda - hi.value / slope;
-        let lambda = if slope > 0.0 && newton.is_finite() && newton > lo && newton < hi.lambda {
-            newton
-        } else {
-            0.5 * (lo + hi.lambda)
-        };
-        let e = match cx.margin(lambda) {
-            Ok(e) => e,
-            Err(f) => return cx.failed(f, start),
-        };
-        if e.value <= tol {
-            lo = lambda;
-            let done = e.value >= -tol || hi.lambda - lo <= 1e-12;
-            carried = Some(e);
-            if done {
-                break;
-            }
-        } else {
-            hi = e;
-        }
-        if hi.lambda - lo <= 1e-12 {
-            break;
-        }
-    }
+    let DeadLoadRoot { lo, hi, carried } = match dead_load_root(&mut cx, full, tol) {
+        Ok(root) => root,
+        Err(f) => return cx.failed(f, start),
+    };
     let (resultants, passive) = carried
         .map(|e| {
             let x = &e.programme.x;
@@ -183,6 +159,51 @@ fn solve_dead_load_once(problem: &ArchProblem, settings: &LimitSettings) -> Limi
         },
         start,
     )
+}
+
+/// Where the search for the root of margin(λ) ended.
+struct DeadLoadRoot {
+    /// The largest λ found carried.
+    lo: f64,
+    /// The evaluation at the least λ found not carried.
+    hi: MarginEvaluation,
+    /// The evaluation at `lo`, when one was made.
+    carried: Option<MarginEvaluation>,
+}
+
+/// Newton from the right on the convex margin(λ), safeguarded by bisection on [lo, hi], from
+/// the margin at full dead load (not carried).
+fn dead_load_root(
+    cx: &mut Context<'_>,
+    full: MarginEvaluation,
+    tol: f64,
+) -> Result<DeadLoadRoot, SolverFailure> {
+    let (mut lo, mut hi) = (0.0, full);
+    let mut carried: Option<MarginEvaluation> = None;
+    for _ in 0..60 {
+        let slope = cx.slope(&hi);
+        let newton = hi.lambda - hi.value / slope;
+        let lambda = if slope > 0.0 && newton.is_finite() && newton > lo && newton < hi.lambda {
+            newton
+        } else {
+            0.5 * (lo + hi.lambda)
+        };
+        let e = cx.margin(lambda)?;
+        if e.value <= tol {
+            lo = lambda;
+            let done = e.value >= -tol || hi.lambda - lo <= 1e-12;
+            carried = Some(e);
+            if done {
+                break;
+            }
+        } else {
+            hi = e;
+        }
+        if hi.lambda - lo <= 1e-12 {
+            break;
+        }
+    }
+    Ok(DeadLoadRoot { lo, hi, carried })
 }
 
 /// Whether the same blocks without crushing, a cone, cannot carry their full dead load.
@@ -253,12 +274,24 @@ fn solve_live_load_once(
         Ok(p) => p,
         Err(f) => return Ok(cx.failed(f, start)),
     };
+    Ok(live_load_found(&cx, &programme, scale, margin, start))
+}
+
+/// The live-load solution read from the live programme's solution (`scale` the live loads'
+/// scale), with the dead-load `margin`.
+fn live_load_found(
+    cx: &Context<'_>,
+    programme: &Programme,
+    scale: f64,
+    margin: f64,
+    start: Instant,
+) -> LimitSolution {
     let lambda_scaled = programme.x[cx.extra()];
     if lambda_scaled >= LIVE_LOAD_CAP * (1.0 - 1e-6) {
         // No collapse up to the cap; the state there is kept for the non-associative
         // iteration, which starts from it (the service shows none).
         let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
-        return Ok(cx.finish(
+        return cx.finish(
             Found {
                 status: LimitStatus::Unbounded,
                 load_factor: None,
@@ -269,12 +302,12 @@ fn solve_live_load_once(
                 mechanism: None,
             },
             start,
-        ));
+        );
     }
     let resultants = cx.resultants(&programme.x, 1.0, lambda_scaled / scale);
     let passive = cx.passive(&programme.x);
-    let mechanism = cx.mechanism(&programme);
-    Ok(cx.finish(
+    let mechanism = cx.mechanism(programme);
+    cx.finish(
         Found {
             status: LimitStatus::Solved,
             load_factor: Some(lambda_scaled / scale),
@@ -285,7 +318,7 @@ fn solve_live_load_once(
             mechanism,
         },
         start,
-    ))
+    )
 }
 
 /// The dead-load factor λ₀ ≤ 1 (Livesley's dead-load problem) and, when the dead load is not

@@ -108,17 +108,7 @@ pub fn maximise(
     for &i in &basis.rows {
         in_basis[i] = true;
     }
-    // Phase 1's costs: z' = max(z, 0) at the starting basis (c' = Bᵀz').
-    let z0 = basis.multipliers(n, &lp.c);
-    let shifted: Vec<f64> = if z0.iter().all(|&z| z >= -dual_tol) {
-        lp.c.clone()
-    } else {
-        let mut c = vec![0.0; n];
-        for (j, &i) in basis.rows.iter().enumerate() {
-            lp.row(i).add_to(z0[j].max(0.0), &mut c);
-        }
-        c
-    };
+    let shifted = shifted_costs(lp, basis, dual_tol);
     let mut phase = Phase::Dual;
     let (mut best, mut stalled, mut bland) = (f64::INFINITY, 0usize, false);
     let mut pivots = 0;
@@ -147,14 +137,7 @@ pub fn maximise(
             return Err(SimplexFailure::MaxPivots);
         }
         if phase == Phase::Dual {
-            // The entering row: the most violated (Bland: the first violated).
-            let violated = (0..m).filter(|&i| !in_basis[i] && slack[i] < -primal_tol);
-            let entering = if bland {
-                violated.into_iter().next()
-            } else {
-                violated.min_by(|&p, &q| slack[p].total_cmp(&slack[q]))
-            };
-            let Some(entering) = entering else {
+            let Some(entering) = violated_row(&in_basis, &slack, primal_tol, bland) else {
                 phase = Phase::Primal;
                 (best, stalled, bland) = (f64::INFINITY, 0, false);
                 continue;
@@ -163,18 +146,10 @@ pub fn maximise(
             let w = basis.weights(n, lp.row(entering));
             let j =
                 dual_ratio(&z, &w, settings, dual_tol, bland).ok_or(SimplexFailure::Infeasible)?;
-            in_basis[basis.rows[j]] = false;
-            in_basis[entering] = true;
-            basis.pivot(lp, j, entering, &w);
+            exchange(lp, basis, &mut in_basis, j, entering, &w);
         } else {
             let z = basis.multipliers(n, &lp.c);
-            let negative = (0..n).filter(|&j| z[j] < -dual_tol);
-            let leaving = if bland {
-                negative.min_by_key(|&j| basis.rows[j])
-            } else {
-                negative.min_by(|&p, &q| z[p].total_cmp(&z[q]))
-            };
-            let Some(j) = leaving else {
+            let Some(j) = negative_multiplier(&z, basis, dual_tol, bland) else {
                 return certify(lp, basis, settings, pivots);
             };
             // Along d = −B⁻¹e_j row W_j goes slack; a row with a·d > 0 tightens.
@@ -185,12 +160,65 @@ pub fn maximise(
             if w[j].abs() < settings.pivot_tolerance {
                 return Err(SimplexFailure::Singular);
             }
-            in_basis[basis.rows[j]] = false;
-            in_basis[entering] = true;
-            basis.pivot(lp, j, entering, &w);
+            exchange(lp, basis, &mut in_basis, j, entering, &w);
         }
         pivots += 1;
     }
+}
+
+/// Phase 1's costs: z' = max(z, 0) at the starting basis (c' = Bᵀz'), the true costs when
+/// every multiplier is ≥ 0 there already.
+fn shifted_costs(lp: &Lp, basis: &Basis, dual_tol: f64) -> Vec<f64> {
+    let n = lp.n;
+    let z0 = basis.multipliers(n, &lp.c);
+    if z0.iter().all(|&z| z >= -dual_tol) {
+        lp.c.clone()
+    } else {
+        let mut c = vec![0.0; n];
+        for (j, &i) in basis.rows.iter().enumerate() {
+            lp.row(i).add_to(z0[j].max(0.0), &mut c);
+        }
+        c
+    }
+}
+
+/// The dual simplex's entering row: the most violated row out of the basis (Bland: the first
+/// violated), `None` when every row holds.
+#[inline]
+fn violated_row(in_basis: &[bool], slack: &[f64], primal_tol: f64, bland: bool) -> Option<usize> {
+    let violated = (0..slack.len()).filter(|&i| !in_basis[i] && slack[i] < -primal_tol);
+    if bland {
+        violated.into_iter().next()
+    } else {
+        violated.min_by(|&p, &q| slack[p].total_cmp(&slack[q]))
+    }
+}
+
+/// The primal simplex's leaving position: the most negative multiplier (Bland: the one of the
+/// smallest row), `None` when every multiplier is ≥ 0.
+#[inline]
+fn negative_multiplier(z: &[f64], basis: &Basis, dual_tol: f64, bland: bool) -> Option<usize> {
+    let negative = (0..z.len()).filter(|&j| z[j] < -dual_tol);
+    if bland {
+        negative.min_by_key(|&j| basis.rows[j])
+    } else {
+        negative.min_by(|&p, &q| z[p].total_cmp(&z[q]))
+    }
+}
+
+/// Row `entering` replaces the basis row at position `j` (`w` its weights B⁻ᵀa).
+#[inline]
+fn exchange(
+    lp: &Lp,
+    basis: &mut Basis,
+    in_basis: &mut [bool],
+    j: usize,
+    entering: usize,
+    w: &[f64],
+) {
+    in_basis[basis.rows[j]] = false;
+    in_basis[entering] = true;
+    basis.pivot(lp, j, entering, w);
 }
 
 /// The dual ratio test: the basis row j to leave when a row with w = B⁻ᵀa enters, keeping the

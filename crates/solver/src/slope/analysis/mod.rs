@@ -218,8 +218,8 @@ fn at_slices(
                 recut: None,
             }));
         }
-        if budget.is_spent() {
-            return Ok(Err(budget.out_of_time()));
+        if let Err(stop) = budget.check() {
+            return Ok(Err(stop));
         }
     }
     let (problem, solution, refinement) = match plan.slice_tolerance {
@@ -233,11 +233,13 @@ fn at_slices(
                 spencer: *spencer,
                 ..RefinementSettings::new(tolerance)
             };
-            let refined = refine_slices(problem, &settings, budget)?;
+            let refined = match refine_slices(problem, &settings, budget)? {
+                Ok(refined) => refined,
+                Err(stop) => return Ok(Err(stop)),
+            };
             let is_settled = match refined.status {
                 RefinementStatus::Settled => true,
                 RefinementStatus::SliceLimit => false,
-                RefinementStatus::SolverFailed(_) => return Ok(Err(budget.out_of_time())),
             };
             let refinement = Refinement {
                 tolerance,

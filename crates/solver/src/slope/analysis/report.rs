@@ -36,8 +36,10 @@ pub struct SearchReport {
     pub path: Option<Vec<f64>>,
     /// When each of `path` was reached, in milliseconds from the start of the polyline search.
     pub path_ms: Option<Vec<f64>>,
-    /// Whether the budget ended a non-circular search (its answer is the best so far).
-    pub timed_out: bool,
+    /// How the non-circular stage ended: [`Stop::Finished`] (or no such stage), or what ended
+    /// it first — its time budget, the solve's, its evaluation cap — when its answer is the best
+    /// found so far.
+    pub noncircular_stop: Stop,
     /// What the search could answer.
     pub candidates: super::search_plan::Candidates,
 }
@@ -58,7 +60,7 @@ impl SearchReport {
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
             path_ms: None,
-            timed_out: false,
+            noncircular_stop: Stop::Finished,
             candidates: super::search_plan::Candidates::default(),
         }
     }
@@ -77,7 +79,7 @@ impl SearchReport {
             unsolved_near_minimum: s.unsolved_near_minimum,
             path: None,
             path_ms: None,
-            timed_out: false,
+            noncircular_stop: Stop::Finished,
             candidates: super::search_plan::Candidates::default(),
         }
     }

@@ -22,15 +22,10 @@ const MAX_RADIUS_OVER_SIZE: f64 = 50.0;
 /// What a search stage gives: the surface found with its report, or why there is none.
 pub(super) type Found = Result<(Analysed, SearchReport), Stop>;
 
-/// The stop of a search that found nothing: the budget's reason when it is spent, else no
-/// candidate.
-fn no_circle(status: SearchStatus, budget: &Budget) -> Stop {
-    let out_of_time = status == SearchStatus::SolverFailed(crate::outcome::SolverFailure::MaxTime);
-    if out_of_time || budget.is_spent() {
-        budget.out_of_time()
-    } else {
-        Stop::NoCandidate
-    }
+/// The stop of a search that found nothing (or that the budget cut short): the budget's reason
+/// when it is spent, else no candidate.
+fn no_circle(budget: &Budget) -> Stop {
+    budget.check().err().unwrap_or(Stop::NoCandidate)
 }
 
 /// The simple slope's critical circle over `grid`.
@@ -51,9 +46,9 @@ pub(super) fn simple(
         ..SearchSettings::default()
     };
     let found = search_critical_circle(problem, grid, &settings, budget);
-    let circle = match (found.status, found.circle) {
-        (SearchStatus::Found, Some(circle)) => circle,
-        (status, _) => return Ok(Err(no_circle(status, budget))),
+    let circle = match (found.status, found.stop, found.circle) {
+        (SearchStatus::Found, Stop::Finished, Some(circle)) => circle,
+        _ => return Ok(Err(no_circle(budget))),
     };
     // The grid's circles start at the lower end of F_e as given (the refinement may move F_e
     // within lower_end_factor_max; the grid does not).
@@ -91,9 +86,9 @@ pub(super) fn section(
         &settings,
         budget,
     );
-    let (centre, radius) = match (found.status, found.circle) {
-        (SearchStatus::Found, Some(circle)) => circle,
-        (status, _) => return Ok(Err(no_circle(status, budget))),
+    let (centre, radius) = match (found.status, found.stop, found.circle) {
+        (SearchStatus::Found, Stop::Finished, Some(circle)) => circle,
+        _ => return Ok(Err(no_circle(budget))),
     };
     let shape = SlipShape::Circle { centre, radius };
     let mut problem =
@@ -142,7 +137,7 @@ pub(super) fn section(
             report.evaluations += better.evaluations;
             report.path = Some(better.path);
             report.path_ms = Some(better.path_ms);
-            report.timed_out = better.timed_out;
+            report.noncircular_stop = better.stop;
         }
     }
     Ok(Ok((Analysed::Section(Box::new(problem)), report)))

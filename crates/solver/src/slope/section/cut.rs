@@ -245,16 +245,7 @@ impl Cut {
         let cuts = base_cuts(section, shape, xa, xb, tolerance);
         let points = top_points(section, xa, xb, tolerance);
         let boundaries = allocate(&cuts, slices.get());
-        let last = boundaries.len() - 1;
-        let base_at = |i: usize, x: f64, ground_y: f64| {
-            if i == 0 {
-                ground_y
-            } else if i == last {
-                crack.map_or(ground_y, |c| c.1)
-            } else {
-                base(x).min(ground_y)
-            }
-        };
+        let base_at = side_base(&base, crack, boundaries.len() - 1);
         let Slicing {
             slices,
             mut surface,
@@ -267,13 +258,7 @@ impl Cut {
             (tolerance, still_water_level(section, xa, xb)),
         );
         spare::keep(&SPARE_SIDES, boundaries);
-        let mut loads = loads(section, &slices, ponded, crack);
-        // Supports cross the bases only: the crack carries no force but its water.
-        let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
-        let (supports, support_loads) =
-            super::supports::forces(&section.supports, (&surface, face), &slices);
-        surface.extend(crack.map(|c| (c.0, c.2)));
-        loads.extend(support_loads);
+        let (loads, supports) = forces_on(section, &slices, ponded, crack, &mut surface);
         let (reference, moment_centre, circular) =
             reference(shape, ground, (xa, xb), moment_centre);
         let length_scale = farthest(&surface, reference);
@@ -301,6 +286,44 @@ impl Cut {
             drawdown: None,
         })
     }
+}
+
+/// The base's height at side `i` of the sides 0..=`last` (at x, under the ground at `ground_y`):
+/// the ground at the first, the crack's bottom (or the ground) at the last, between them the
+/// base (`base`, the slip surface on bedrock) but never above the ground.
+fn side_base<'a>(
+    base: &'a impl Fn(f64) -> f64,
+    crack: Option<(f64, f64, f64)>,
+    last: usize,
+) -> impl Fn(usize, f64, f64) -> f64 + 'a {
+    move |i: usize, x: f64, ground_y: f64| {
+        if i == 0 {
+            ground_y
+        } else if i == last {
+            crack.map_or(ground_y, |c| c.1)
+        } else {
+            base(x).min(ground_y)
+        }
+    }
+}
+
+/// The known forces on the slices ([`loads`]) with the supports' crossing the bases, and the
+/// supports' forces; the crack's top is then added to `surface` (the base's end points).
+fn forces_on(
+    section: &Section,
+    slices: &[BaseSlice],
+    ponded: Vec<(f64, f64, f64)>,
+    crack: Option<(f64, f64, f64)>,
+    surface: &mut Vec<(f64, f64)>,
+) -> (Vec<ExternalLoad>, Vec<super::supports::SupportForce>) {
+    let mut loads = loads(section, slices, ponded, crack);
+    // Supports cross the bases only: the crack carries no force but its water.
+    let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
+    let (supports, support_loads) =
+        super::supports::forces(&section.supports, (surface, face), slices);
+    surface.extend(crack.map(|c| (c.0, c.2)));
+    loads.extend(support_loads);
+    (loads, supports)
 }
 
 /// The point the moment equation is written about, the moment centre reported and whether

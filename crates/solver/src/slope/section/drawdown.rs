@@ -17,7 +17,7 @@
 //! stage's water line crosses the surface.
 
 pub use super::model::REnvelope;
-use super::model::{Drawdown, Section};
+use super::model::{Drawdown, Layer, Section};
 use super::polyline::Polyline;
 use crate::slope::error::{check_range, SlopeError, SlopeParameter};
 use crate::slope::slices::SliceModel;
@@ -56,12 +56,6 @@ impl Section {
         before: Polyline,
         envelopes: Vec<Option<REnvelope>>,
     ) -> Result<Self, SlopeError> {
-        let conflict = |parameter, reason: &str| {
-            Err(SlopeError::Conflict {
-                parameter,
-                reason: reason.to_owned(),
-            })
-        };
         let Some(after) = self.piezometric_line.clone() else {
             return conflict(
                 SlopeParameter::Drawdown,
@@ -82,45 +76,7 @@ impl Section {
                  from its two lines",
             );
         }
-        for (index, (layer, envelope)) in self.layers.iter().zip(&envelopes).enumerate() {
-            if layer.pore_pressure_ratio.is_some() || layer.piezometric_line.is_some() {
-                return conflict(
-                    SlopeParameter::Layer { index },
-                    "a drawdown's pore pressures come from its two lines: give no r_u or own \
-                     piezometric line",
-                );
-            }
-            let Some(r) = envelope else { continue };
-            if !matches!(layer.strength, Strength::MohrCoulomb) {
-                return conflict(
-                    SlopeParameter::REnvelope { index },
-                    "a soil that does not drain needs its effective c′ and φ′ (cohesion and \
-                     friction_angle_deg), not a strength model",
-                );
-            }
-            check_range(
-                SlopeParameter::REnvelope { index },
-                r.cohesion,
-                0.0,
-                false,
-                super::validate::MAX_MAGNITUDE,
-                "0 ≤ c_R ≤ 1e12",
-            )?;
-            check_range(
-                SlopeParameter::REnvelope { index },
-                r.friction_angle_rad,
-                0.0,
-                false,
-                89.9f64.to_radians(),
-                "0 ≤ φ_R ≤ 89.9°",
-            )?;
-            if r.cohesion == 0.0 && r.friction_angle_rad == 0.0 {
-                return conflict(
-                    SlopeParameter::REnvelope { index },
-                    "c_R = 0 with φ_R = 0 is a soil without undrained strength",
-                );
-            }
-        }
+        check_drawdown_layers(&self.layers, &envelopes)?;
         if self.envelopes.is_some() {
             return conflict(
                 SlopeParameter::Drawdown,
@@ -149,6 +105,62 @@ impl Section {
             .as_ref()
             .and_then(|d| d.before.piezometric_line.as_ref())
     }
+}
+
+/// The error of a drawdown that conflicts with the rest of the section.
+fn conflict<T>(parameter: SlopeParameter, reason: &str) -> Result<T, SlopeError> {
+    Err(SlopeError::Conflict {
+        parameter,
+        reason: reason.to_owned(),
+    })
+}
+
+/// Checks the layers beside a drawdown: pore pressures from its two lines alone, and a soil that
+/// does not drain (its R envelope in `envelopes`) with c′ and φ′ and a valid R envelope.
+fn check_drawdown_layers(
+    layers: &[Layer],
+    envelopes: &[Option<REnvelope>],
+) -> Result<(), SlopeError> {
+    for (index, (layer, envelope)) in layers.iter().zip(envelopes).enumerate() {
+        if layer.pore_pressure_ratio.is_some() || layer.piezometric_line.is_some() {
+            return conflict(
+                SlopeParameter::Layer { index },
+                "a drawdown's pore pressures come from its two lines: give no r_u or own \
+                 piezometric line",
+            );
+        }
+        let Some(r) = envelope else { continue };
+        if !matches!(layer.strength, Strength::MohrCoulomb) {
+            return conflict(
+                SlopeParameter::REnvelope { index },
+                "a soil that does not drain needs its effective c′ and φ′ (cohesion and \
+                 friction_angle_deg), not a strength model",
+            );
+        }
+        check_range(
+            SlopeParameter::REnvelope { index },
+            r.cohesion,
+            0.0,
+            false,
+            super::validate::MAX_MAGNITUDE,
+            "0 ≤ c_R ≤ 1e12",
+        )?;
+        check_range(
+            SlopeParameter::REnvelope { index },
+            r.friction_angle_rad,
+            0.0,
+            false,
+            89.9f64.to_radians(),
+            "0 ≤ φ_R ≤ 89.9°",
+        )?;
+        if r.cohesion == 0.0 && r.friction_angle_rad == 0.0 {
+            return conflict(
+                SlopeParameter::REnvelope { index },
+                "c_R = 0 with φ_R = 0 is a soil without undrained strength",
+            );
+        }
+    }
+    Ok(())
 }
 
 /// The K_c = 1 envelope of τ_ff against σ′_fc from the R envelope: a circle of isotropic

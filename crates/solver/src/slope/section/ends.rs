@@ -31,18 +31,7 @@ fn circle_ends(ground: &Polyline, centre: (f64, f64), radius: f64) -> Result<Pie
     let (xc, yc) = centre;
     let (left, right) = (xc - radius, xc + radius);
     let arc = |x: f64| yc - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
-    let mut cuts: SmallVec<[f64; 10]> = std::iter::once(left)
-        .chain(
-            ground
-                .circle_crossings(centre, radius, left, right)
-                .into_iter()
-                .filter(|c| c.1)
-                .map(|c| c.0),
-        )
-        .chain(std::iter::once(right))
-        .collect();
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
+    let cuts = arc_cuts(ground, centre, radius);
     // Of the pieces of the lower half that lie below the ground, the one where the arc lies
     // deepest below the ground (a sliver where the arc grazes the ground is not it). Ground
     // minus arc is concave on each straight stretch of the ground (slope m), largest where the
@@ -107,6 +96,26 @@ fn circle_ends(ground: &Polyline, centre: (f64, f64), radius: f64) -> Result<Pie
         .filter(|p| p.0 != left && p.1 != right)
         .map(|(a, b, _)| (snap(a), snap(b)))
         .collect())
+}
+
+/// The ends of the circle's lower half and its crossings of the ground between them, sorted,
+/// each once.
+fn arc_cuts(ground: &Polyline, centre: (f64, f64), radius: f64) -> SmallVec<[f64; 10]> {
+    let (xc, _) = centre;
+    let (left, right) = (xc - radius, xc + radius);
+    let mut cuts: SmallVec<[f64; 10]> = std::iter::once(left)
+        .chain(
+            ground
+                .circle_crossings(centre, radius, left, right)
+                .into_iter()
+                .filter(|c| c.1)
+                .map(|c| c.0),
+        )
+        .chain(std::iter::once(right))
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts
 }
 
 /// A crossing within rounding (1e-12 of the radius) of a ground vertex that the arc passes

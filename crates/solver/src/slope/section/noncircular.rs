@@ -16,7 +16,7 @@ use super::cut::place;
 use super::model::Section;
 use super::polyline::Polyline;
 use super::shape::SlipShape;
-use crate::budget::Budget;
+use crate::budget::{Budget, Stop};
 use crate::numerics::nelder_mead;
 use crate::slope::spencer::{spencer_factor_outcome, FactorOutcome, Seismic, SpencerSettings};
 
@@ -40,8 +40,9 @@ pub struct NoncircularSearch {
     pub path_ms: Vec<f64>,
     /// Surfaces evaluated.
     pub evaluations: usize,
-    /// Whether the time budget ended the search.
-    pub timed_out: bool,
+    /// How the search ended: [`Stop::Finished`], or what ended it first (its time budget, the
+    /// solve's, its evaluation cap), when the surface is the best found so far.
+    pub stop: Stop,
 }
 
 /// Whether a surface (left to right) may slide: its interior points below the ground, above
@@ -126,25 +127,25 @@ fn refined(mut points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
 }
 
 /// Rounds of Nelder–Mead on [`surface_of`]'s parameters from `v`, restarted while F still falls
-/// by 0.1 %, telling `round` F after each: the best parameters, their F, and whether time ran
-/// out.
+/// by 0.1 %, telling `round` F after each: the best parameters, their F, and what ended the
+/// rounds early (`stop`: [`Stop::Finished`] while the search may go on).
 fn polish(
     factor: &dyn Fn(&[f64]) -> f64,
     mut v: Vec<f64>,
     mut best: f64,
-    late: &dyn Fn() -> bool,
+    stop: &dyn Fn() -> Stop,
     round: &mut dyn FnMut(f64),
-) -> (Vec<f64>, f64, bool) {
+) -> (Vec<f64>, f64, Stop) {
     let n = v.len();
     let span = v[1] - v[0];
-    let mut timed_out = false;
+    let mut stopped = Stop::Finished;
     for _ in 0..8 {
         let depth = v[2..].iter().fold(0.0f64, |m, d| m.max(*d));
         let mut step = vec![0.05 * span, 0.05 * span];
         step.extend(std::iter::repeat_n(0.15 * depth.max(1e-3 * span), n - 2));
         let found = nelder_mead(factor, &v, &step, 1e-7 * span, 400 * n);
-        if late() {
-            timed_out = true;
+        if stopped.is_finished() {
+            stopped = stop();
         }
         if found.value >= best || found.value.is_nan() {
             break;
@@ -153,11 +154,11 @@ fn polish(
         best = found.value;
         v = found.point;
         round(best);
-        if settled || timed_out {
+        if settled || !stopped.is_finished() {
             break;
         }
     }
-    (v, best, timed_out)
+    (v, best, stopped)
 }
 
 /// The best admissible block surface ([`blocks`]): on every base, x₁ and x₂ over a grid of its
@@ -288,7 +289,7 @@ fn polyline_factor(
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
 /// the best block surface along the section's layer boundaries when that is lower. Once `budget`
 /// is spent, or `max_evaluations` trial surfaces were evaluated, every trial fails, so that the
-/// optimisers stop with the best found so far (`timed_out` then says so).
+/// optimisers stop with the best found so far (`stop` then says which).
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
@@ -308,9 +309,15 @@ pub fn search_noncircular(
         ..*settings
     };
     let evaluations = std::cell::Cell::new(0usize);
-    // The budget: the time's, and a count of trial surfaces that gives the same answer
+    // What ends the search: the budget, or a count of trial surfaces that gives the same answer
     // whatever the machine.
-    let late = || budget.is_spent() || max_evaluations.is_some_and(|m| evaluations.get() >= m);
+    let stop = || match budget.stop() {
+        Stop::Finished if max_evaluations.is_some_and(|m| evaluations.get() >= m) => {
+            Stop::EvaluationCap
+        }
+        stop => stop,
+    };
+    let late = || !stop().is_finished();
     let evaluate = |points: &[(f64, f64)]| -> f64 {
         evaluations.set(evaluations.get() + 1);
         polyline_factor(
@@ -365,14 +372,16 @@ pub fn search_noncircular(
         }
     };
     note(best.2);
-    let mut timed_out = false;
+    let mut stopped = Stop::Finished;
     for (fractions, v, f) in starts {
         if late() {
-            timed_out = true;
+            stopped = stop();
             break;
         }
-        let (v, g, late_here) = polish(&|v| factor(&fractions, v), v, f, &late, &mut note);
-        timed_out |= late_here;
+        let (v, g, stopped_here) = polish(&|v| factor(&fractions, v), v, f, &stop, &mut note);
+        if stopped.is_finished() {
+            stopped = stopped_here;
+        }
         if g < best.2 {
             best = (fractions, v, g);
         }
@@ -384,7 +393,7 @@ pub fn search_noncircular(
         path,
         path_ms,
         evaluations: evaluations.get(),
-        timed_out,
+        stop: stopped,
     })
 }
 

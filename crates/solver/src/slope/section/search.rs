@@ -14,9 +14,8 @@ use rayon::prelude::*;
 use super::model::Section;
 use super::shape::SlipShape;
 use super::trial::{trial, Outcome};
-use crate::budget::Budget;
+use crate::budget::{Budget, Stop};
 use crate::numerics::nelder_mead_to;
-use crate::outcome::SolverFailure;
 use crate::slope::search::{spaced, FactorGrid, SearchStatus, F_RESOLUTION};
 use crate::slope::spencer::{Seismic, SpencerSettings};
 
@@ -156,8 +155,11 @@ impl Default for CircleSearchSettings {
 /// What the search found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CircleSearch {
-    /// How it ended.
+    /// What it found.
     pub status: SearchStatus,
+    /// How it ended: [`Stop::Finished`], or the budget's reason when the budget ended it (its
+    /// answer is then not to be trusted).
+    pub stop: Stop,
     /// The critical circle: centre and radius.
     pub circle: Option<((f64, f64), f64)>,
     /// Its factor of safety.
@@ -487,7 +489,7 @@ type CentreResult = (Option<(f64, f64)>, usize, Option<f64>);
 
 /// Searches the critical circle of `section` over `region`; `hard` bounds stay put, automatic
 /// ones move when the minimum lies on their edge. No circle is evaluated once `budget` is spent;
-/// the search then says it ran out of time.
+/// the search's stop then says why.
 pub fn search_circles(
     section: &Section,
     region: CircleRegion,
@@ -515,17 +517,10 @@ pub fn search_circles(
             unsolved_bishop_minimum,
             points,
         } = summarise(&results, &xs, &ys);
-        let late = evaluator.is_late();
-        let status_of = |found: SearchStatus| {
-            if late || evaluator.is_late() {
-                SearchStatus::SolverFailed(SolverFailure::MaxTime)
-            } else {
-                found
-            }
-        };
         let Some(&(f0, r0, bi, bj)) = points.first() else {
             return CircleSearch {
-                status: status_of(SearchStatus::NoValidCircle),
+                status: SearchStatus::NoValidCircle,
+                stop: budget.stop(),
                 circle: None,
                 factor_of_safety: None,
                 grid,
@@ -567,7 +562,8 @@ pub fn search_circles(
             continue;
         }
         return CircleSearch {
-            status: status_of(SearchStatus::Found),
+            status: SearchStatus::Found,
+            stop: budget.stop(),
             circle: Some(((v[0], v[1]), v[2])),
             factor_of_safety: Some(f),
             grid,

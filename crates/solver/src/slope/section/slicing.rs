@@ -259,6 +259,51 @@ fn piece(
     }
 }
 
+/// What the pieces of a slice add up to.
+struct Totals {
+    /// The base middle, about which the water's moment is taken.
+    middle: (f64, f64),
+    /// The weight.
+    weight: f64,
+    /// The weight's first moment ∫γ·y.
+    moment: f64,
+    /// The ponded water on the top (with the buoyancy relative to still water): (f_x, f_y,
+    /// moment about the base middle).
+    water_force: (f64, f64, f64),
+}
+
+impl Totals {
+    /// Nothing yet, moments about `middle`.
+    #[inline]
+    fn about(middle: (f64, f64)) -> Self {
+        Self {
+            middle,
+            weight: 0.0,
+            moment: 0.0,
+            water_force: (0.0, 0.0, 0.0),
+        }
+    }
+
+    /// Adds `piece`; returns the column at its right end.
+    #[inline]
+    fn add(&mut self, piece: Piece) -> (f64, f64) {
+        let (xm, bm) = self.middle;
+        self.weight += piece.integral.0;
+        self.moment += piece.integral.1;
+        let water_force = &mut self.water_force;
+        if let Some((fx, fy, x, y)) = piece.wet {
+            water_force.0 += fx;
+            water_force.1 += fy;
+            water_force.2 += (x - xm) * fy - (y - bm) * fx;
+        }
+        if let Some((up, x)) = piece.buoyancy {
+            water_force.1 += up;
+            water_force.2 += (x - xm) * up;
+        }
+        piece.column_b
+    }
+}
+
 /// The slice from ((x_l, b_l), (x_r, b_r)) on its base, the levels at its sides read into
 /// `s.left` and `s.right` and the column over its left side given: the slice, the column over
 /// its right side, and the ponded water on it.
@@ -274,25 +319,10 @@ fn slice(
     let (xm, bm) = (0.5 * (xl + xr), 0.5 * (bl + br));
     let ponded = section.piezometric_line.is_some() && section.is_ponded_over(xl, xr);
     let inner = s.inner.within(points, (xl, xr));
-    let (mut weight, mut moment) = (0.0, 0.0);
-    let mut water_force = (0.0, 0.0, 0.0);
-    let mut add = |piece: Piece| {
-        weight += piece.integral.0;
-        moment += piece.integral.1;
-        if let Some((fx, fy, x, y)) = piece.wet {
-            water_force.0 += fx;
-            water_force.1 += fy;
-            water_force.2 += (x - xm) * fy - (y - bm) * fx;
-        }
-        if let Some((up, x)) = piece.buoyancy {
-            water_force.1 += up;
-            water_force.2 += (x - xm) * up;
-        }
-        piece.column_b
-    };
+    let mut totals = Totals::about((xm, bm));
     let column_right = if inner.is_empty() {
         // One piece; the levels half-way are those over the base middle.
-        add(piece(
+        totals.add(piece(
             section,
             ((xl, bl), (xr, br)),
             (s.left.values(), s.right.values()),
@@ -312,7 +342,7 @@ fn slice(
                 s.b.read_from(section, xb, &mut s.cursor);
                 chord(xb)
             };
-            let column_b = add(piece(
+            let column_b = totals.add(piece(
                 section,
                 ((xa, ya), (xb, yb)),
                 (s.a.values(), s.b.values()),
@@ -326,19 +356,43 @@ fn slice(
         s.middle.read_from(section, xm, &mut s.cursor);
         column_a
     };
+    let layer = soil_at(section, s.middle.values(), bm + tolerance);
+    let slice = base_slice(
+        section,
+        s,
+        ((xl, bl), (xr, br)),
+        &totals,
+        layer,
+        tan_phi[layer],
+        still,
+    );
+    (slice, column_right, totals.water_force)
+}
+
+/// The slice from ((x_l, b_l), (x_r, b_r)) on its base in `layer` (its soil's tan φ′ given),
+/// its pieces' `totals` added up and the levels over its base middle and sides in `s`.
+#[inline]
+fn base_slice(
+    section: &Section,
+    s: &Scratch,
+    ((xl, bl), (xr, br)): ((f64, f64), (f64, f64)),
+    totals: &Totals,
+    layer: usize,
+    tan_phi: f64,
+    still: Option<f64>,
+) -> BaseSlice {
+    let width = xr - xl;
+    let (xm, bm) = totals.middle;
+    let (weight, moment) = (totals.weight, totals.moment);
     let levels = s.middle.values();
-    let layer = soil_at(section, levels, bm + tolerance);
     let rise = br - bl;
     let base_length = (width * width + rise * rise).sqrt();
     let (pore_pressure, side_water) =
         base_water(section, still, (levels, layer, (xm, bm)), s, (xr, br));
-    let (cohesion, tan_phi) = strength(
-        section,
-        (layer, tan_phi[layer]),
-        (bm, ground(levels)),
-        || (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0),
-    );
-    let slice = BaseSlice {
+    let (cohesion, tan_phi) = strength(section, (layer, tan_phi), (bm, ground(levels)), || {
+        (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0)
+    });
+    BaseSlice {
         x_left: xl,
         x_right: xr,
         base_left_y: bl,
@@ -355,8 +409,7 @@ fn slice(
         pore_pressure,
         layer,
         side_water,
-    };
-    (slice, column_right, water_force)
+    }
 }
 
 /// The base's (c, tan φ) in `layer` (its soil's tan φ′ given) at height y under the

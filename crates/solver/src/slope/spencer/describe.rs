@@ -1,10 +1,10 @@
 //! Everything behind a converged (F, θ): the forces on every slice, the line of thrust (moments
 //! about each base middle, Spencer 1973) and the flags an engineer should look at.
 
-use super::equations::{Equations, SliceResultant};
+use super::equations::{Equations, SliceResultant, SliceTerms};
 use super::newton::EquationsSolution;
 use super::solution::{SliceForces, SpencerSolution, SpencerStatus, ThrustPoint};
-use crate::slope::slices::SliceModel;
+use crate::slope::slices::{BaseSlice, SliceModel};
 
 /// Denominators m_α below this are reported: the base normal force becomes unreliable there
 /// (a common guard in slope programs; Duncan & Wright recommend 0.2).
@@ -33,40 +33,20 @@ pub(super) fn describe(
     // Past the poles ([`super::newton`]) m_α may be negative on some slices, or on most (the
     // same root with θ + 180°): the slices flagged are those whose m_α, taken with the sign
     // of the majority, is small or negative.
-    let sign = if equations.m_alpha_mostly_negative(f, theta) {
-        -1.0
-    } else {
-        1.0
-    };
+    let sign = majority_sign(equations, f, theta);
     for (i, (slice, t)) in slices.iter().zip(&equations.terms).enumerate() {
         let SliceResultant { q, m_alpha, .. } = Equations::q(t, f, (sin_t, cos_t));
-        let weight = slice.weight;
-        let pore_pressure = slice.pore_pressure;
-        // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
-        let normal_force = t.a_n + q * (slice.base_inclination_rad() - theta).sin();
-        let effective_normal_force = normal_force - t.pore_force;
-        let shear_force =
-            (slice.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
         // Z_{i+1} = Z_i − Q_i: Q is the net push of the two neighbours along (cos θ, sin θ).
         let z_right = z_left - q;
+        let right = if i + 1 == n { 0.0 } else { z_right };
+        let forces = forces_on_slice(slice, t, q, m_alpha, f, theta, right);
         if sign * m_alpha < SMALL_DENOMINATOR {
             small_m_alpha_slices.push(i);
         }
-        if effective_normal_force < 0.0 {
+        if forces.effective_normal_force < 0.0 {
             negative_effective_normal_slices.push(i);
         }
-        slice_forces.push(SliceForces {
-            weight,
-            pore_pressure,
-            normal_force,
-            effective_normal_force,
-            shear_force,
-            interslice_resultant: q,
-            interslice_force_right: if i + 1 == n { 0.0 } else { z_right },
-            m_alpha,
-            available_shear_strength: slice.cohesion
-                + effective_normal_force / slice.base_length * t.tan_phi,
-        });
+        slice_forces.push(forces);
         if i + 1 < n {
             let (total, effective) = boundary_thrust(
                 slice,
@@ -100,11 +80,53 @@ pub(super) fn describe(
     }
 }
 
+/// The sign of m_α on most slices: past the poles ([`super::newton`]) m_α may be negative on
+/// some slices, or on most (the same root with θ + 180°).
+fn majority_sign(equations: &Equations, f: f64, theta: f64) -> f64 {
+    if equations.m_alpha_mostly_negative(f, theta) {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
+/// The forces on one slice at (F, θ), its inter-slice resultant Q and m_α given, with the
+/// inter-slice force `interslice_force_right` on its right side as reported.
+#[inline]
+fn forces_on_slice(
+    slice: &BaseSlice,
+    t: &SliceTerms,
+    q: f64,
+    m_alpha: f64,
+    f: f64,
+    theta: f64,
+    interslice_force_right: f64,
+) -> SliceForces {
+    let weight = slice.weight;
+    let pore_pressure = slice.pore_pressure;
+    // N = A_n + Q·sin(α−θ); S from the Mohr–Coulomb criterion with the factor F.
+    let normal_force = t.a_n + q * (slice.base_inclination_rad() - theta).sin();
+    let effective_normal_force = normal_force - t.pore_force;
+    let shear_force = (slice.cohesion * slice.base_length + effective_normal_force * t.tan_phi) / f;
+    SliceForces {
+        weight,
+        pore_pressure,
+        normal_force,
+        effective_normal_force,
+        shear_force,
+        interslice_resultant: q,
+        interslice_force_right,
+        m_alpha,
+        available_shear_strength: slice.cohesion
+            + effective_normal_force / slice.base_length * t.tan_phi,
+    }
+}
+
 /// The line of thrust on the right boundary of slice `i` (total and effective), from moments
 /// about its base middle (1973): the left force +Z_i·(cos θ, sin θ) at (x_left, y_left), the
 /// right force −Z_{i+1}·(cos θ, sin θ) at (x_right, y_right) and the known moment sum to zero.
 fn boundary_thrust(
-    slice: &crate::slope::slices::BaseSlice,
+    slice: &BaseSlice,
     known_moment: f64,
     (z_left, y_left): (f64, f64),
     z_right: f64,

@@ -165,43 +165,22 @@ fn newton(
     branch: Branch,
     iterations: &mut usize,
 ) -> Option<(f64, f64)> {
-    const MAX_THETA_STEP: f64 = 0.2; // rad
-    const MAX_THETA: f64 = 89.0 * std::f64::consts::PI / 180.0;
     // The squared norm of the residuals: ordered as the norm (no hypot per evaluation; scaled
     // residuals whose squares overflow are as unusable as their norm would be).
     let merit = |r: &Residuals| r.force * r.force + r.moment * r.moment;
     let admissible = |r: &Residuals| branch == Branch::Any || r.min_m_alpha > 0.0;
-    let max_theta = match branch {
-        Branch::Admissible => MAX_THETA,
-        Branch::Any => f64::INFINITY,
-    };
-    // Past the poles Newton's method either settles quickly or wanders between them: a start
-    // that does not settle is given up early, the next one tried.
-    let (max_iterations, max_halvings) = match branch {
-        Branch::Admissible => (settings.max_iterations, 40),
-        Branch::Any => (
-            settings.max_iterations.min(BEYOND_ITERATIONS),
-            BEYOND_HALVINGS,
-        ),
-    };
+    let BranchLimits {
+        max_theta,
+        max_iterations,
+        max_halvings,
+    } = BranchLimits::of(branch, settings);
     let mut r = equations.evaluate(f, theta);
     if !admissible(&r) || !merit(&r).is_finite() {
         return None;
     }
     for _ in 0..max_iterations {
         *iterations += 1;
-        let det = r.d_force.0 * r.d_moment.1 - r.d_force.1 * r.d_moment.0;
-        if det == 0.0 || !det.is_finite() {
-            return None;
-        }
-        let mut df = -(r.force * r.d_moment.1 - r.moment * r.d_force.1) / det;
-        let mut dtheta = -(r.d_force.0 * r.moment - r.d_moment.0 * r.force) / det;
-        // Step limits: F stays positive, θ moves by at most ~11° a step.
-        let scale = (1.0f64)
-            .min(0.5 * f / df.abs().max(f64::MIN_POSITIVE))
-            .min(MAX_THETA_STEP / dtheta.abs().max(f64::MIN_POSITIVE));
-        df *= scale;
-        dtheta *= scale;
+        let (mut df, mut dtheta) = limited_step(&r, f)?;
         let current = merit(&r);
         // A step within the tolerance from a point whose residual is already that of a
         // solution: the step's end is the root (to the tolerance, and quadratically closer),
@@ -248,6 +227,61 @@ fn newton(
     }
     // Newton stalled short of the tolerance: accept only if the residual is at rounding level.
     (merit(&r) <= ROUNDING_RESIDUAL * ROUNDING_RESIDUAL).then_some((f, theta))
+}
+
+/// How far Newton's method may go on a branch.
+struct BranchLimits {
+    /// The largest |θ| a step may reach.
+    max_theta: f64,
+    /// Newton iterations at most.
+    max_iterations: usize,
+    /// Step halvings per iteration at most.
+    max_halvings: usize,
+}
+
+impl BranchLimits {
+    /// The limits on `branch`: past the poles Newton's method either settles quickly or
+    /// wanders between them, so a start that does not settle is given up early, the next one
+    /// tried.
+    fn of(branch: Branch, settings: &SpencerSettings) -> Self {
+        const MAX_THETA: f64 = 89.0 * std::f64::consts::PI / 180.0;
+        let max_theta = match branch {
+            Branch::Admissible => MAX_THETA,
+            Branch::Any => f64::INFINITY,
+        };
+        let (max_iterations, max_halvings) = match branch {
+            Branch::Admissible => (settings.max_iterations, 40),
+            Branch::Any => (
+                settings.max_iterations.min(BEYOND_ITERATIONS),
+                BEYOND_HALVINGS,
+            ),
+        };
+        Self {
+            max_theta,
+            max_iterations,
+            max_halvings,
+        }
+    }
+}
+
+/// The Newton step (dF, dθ) from the residuals `r` at F = `f`, limited so that F stays positive
+/// and θ moves by at most ~11°; `None` where the Jacobian is singular.
+#[inline]
+fn limited_step(r: &Residuals, f: f64) -> Option<(f64, f64)> {
+    const MAX_THETA_STEP: f64 = 0.2; // rad
+    let det = r.d_force.0 * r.d_moment.1 - r.d_force.1 * r.d_moment.0;
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let mut df = -(r.force * r.d_moment.1 - r.moment * r.d_force.1) / det;
+    let mut dtheta = -(r.d_force.0 * r.moment - r.d_moment.0 * r.force) / det;
+    // Step limits: F stays positive, θ moves by at most ~11° a step.
+    let scale = (1.0f64)
+        .min(0.5 * f / df.abs().max(f64::MIN_POSITIVE))
+        .min(MAX_THETA_STEP / dtheta.abs().max(f64::MIN_POSITIVE));
+    df *= scale;
+    dtheta *= scale;
+    Some((df, dtheta))
 }
 
 /// Spencer's own construction: F_f(θ) and F_m(θ) from the two equations separately, and
