@@ -46,11 +46,11 @@ impl Family for DeadLoad {
     const ROUTE: &'static str = "/arch/dead-load";
 
     fn prepare(
-        state: &AppState,
+        _state: &AppState,
         request: &DeadLoadRequest,
         _body: &Value,
     ) -> Result<ArchInput, ApiError> {
-        request.validate(state.solve_time_limit_secs())
+        request.validate()
     }
 
     async fn run(
@@ -100,11 +100,11 @@ impl Family for LiveLoad {
     const STREAMS: bool = true;
 
     fn prepare(
-        state: &AppState,
+        _state: &AppState,
         request: &LiveLoadRequest,
         body: &Value,
     ) -> Result<PreparedLive, ApiError> {
-        prepare_live(state, (request, body))
+        prepare_live(request, body)
     }
 
     async fn run(

@@ -81,23 +81,22 @@ impl Extras<'_> {
 
 impl DeadLoadRequest {
     /// Validates the request into the solver's input.
-    pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
+    pub fn validate(&self) -> Result<ArchInput, ApiError> {
         let extras = Extras {
             fill: self.fill.as_ref(),
             ..Extras::default()
         };
-        input(self.limit_fields(), &[], extras, time_limit_secs)
+        input(self.limit_fields(), &[], extras)
     }
 }
 
 impl LiveLoadRequest {
     /// Validates the request into the solver's input.
-    pub fn validate(&self, time_limit_secs: f64) -> Result<ArchInput, ApiError> {
+    pub fn validate(&self) -> Result<ArchInput, ApiError> {
         if let Some(design) = &self.design {
             // The design values, once; the input remembers the check for the answer.
             let factors = super::design::factors(design)?;
-            let mut input =
-                super::design::in_design_values(self, &factors).validate(time_limit_secs)?;
+            let mut input = super::design::in_design_values(self, &factors).validate()?;
             input.design = Some(factors);
             return Ok(input);
         }
@@ -126,16 +125,11 @@ impl LiveLoadRequest {
             road_loads: &self.road_loads,
             rolling: self.rolling.as_ref(),
         };
-        input(self.limit_fields(), &self.loads, extras, time_limit_secs)
+        input(self.limit_fields(), &self.loads, extras)
     }
 }
 
-fn input(
-    fields: LimitFields,
-    loads: &[LoadDto],
-    extras: Extras,
-    time_limit_secs: f64,
-) -> Result<ArchInput, ApiError> {
+fn input(fields: LimitFields, loads: &[LoadDto], extras: Extras) -> Result<ArchInput, ApiError> {
     let material = material(fields.material)?;
     let (assembly, bridge_faces) = assembly(fields.geometry)?;
     let is_curved = matches!(fields.geometry, GeometryDto::Circular(c) if c.is_curved_single());
@@ -155,7 +149,45 @@ fn input(
         )?,
         None => FillLoads::default(),
     };
-    let mut live_loads = live_loads(&assembly, loads)?;
+    let live_loads = all_live_loads(&assembly, loads, &filled)?;
+    let problem = ArchProblem::new(
+        assembly,
+        material.unit_weight,
+        material.limits,
+        material.friction,
+        live_loads,
+    )?
+    .with_dead_loads(filled.dead.clone())?
+    .with_passive(filled.passive.clone().unwrap_or_default())?;
+    let problem = with_rings_and_crushing(problem, &fields)?;
+    let settings = settings(&fields, &problem, filled.passive.is_some())?;
+    let bonded = bonded(&fields, &problem, loads, extras);
+    Ok(ArchInput {
+        bonded,
+        design: None,
+        problem,
+        settings,
+        is_curved,
+        fill_weight: extras.fill.map(|_| filled.weight),
+        rolling: filled.rolling,
+        has_passive: filled.passive.is_some(),
+        non_associative: fields.friction == FrictionDto::NonAssociative,
+        fill: filled
+            .fill
+            .zip(faces)
+            .map(|(f, faces)| (f, faces, filled.road)),
+        include: include(fields.include),
+    })
+}
+
+/// The live loads the problem starts with: those on blocks and the road loads dispersed onto
+/// the extrados; with a rolling load, its first loaded stop's (the sweep replaces them).
+fn all_live_loads(
+    assembly: &Assembly,
+    loads: &[LoadDto],
+    filled: &FillLoads,
+) -> Result<Vec<LiveLoad>, ApiError> {
+    let mut live_loads = live_loads(assembly, loads)?;
     let zero = |l: &LiveLoad| l.fx == 0.0 && l.fy == 0.0 && l.moment == 0.0;
     if live_loads.iter().all(zero) && !filled.live.is_empty() && filled.live.iter().all(zero) {
         return Err(ApiError::invalid(
@@ -178,25 +210,24 @@ fn input(
             .cloned()
             .unwrap_or_default();
     }
-    let problem = ArchProblem::new(
-        assembly,
-        material.unit_weight,
-        material.limits,
-        material.friction,
-        live_loads,
-    )?
-    .with_dead_loads(filled.dead.clone())?
-    .with_passive(filled.passive.clone().unwrap_or_default())?;
-    let problem = with_rings_and_crushing(problem, &fields)?;
+    Ok(live_loads)
+}
+
+/// The programmes' settings: the formulation (the general assembly where passive forces or an
+/// assembly that is not a chain need it), the tolerance, the friction relaxation.
+fn settings(
+    fields: &LimitFields,
+    problem: &ArchProblem,
+    has_passive: bool,
+) -> Result<LimitSettings, ApiError> {
     // Passive forces are variables of their own: the general assembly carries them.
     // So do assemblies that are not chains: the answer names what was used.
-    let formulation = if filled.passive.is_some() || !problem.assembly().is_chain() {
+    let formulation = if has_passive || !problem.assembly().is_chain() {
         Formulation::Assembly
     } else {
         fields.formulation.solver()
     };
-    let settings = LimitSettings {
-        time_limit_secs,
+    Ok(LimitSettings {
         formulation,
         tolerance: within(
             "solver_tolerance",
@@ -205,23 +236,6 @@ fn input(
         )?,
         relaxation: fields.friction_relaxation.solver(),
         ..LimitSettings::default()
-    };
-    let bonded = bonded(&fields, &problem, loads, extras, time_limit_secs);
-    Ok(ArchInput {
-        bonded,
-        design: None,
-        problem,
-        settings,
-        is_curved,
-        fill_weight: extras.fill.map(|_| filled.weight),
-        rolling: filled.rolling,
-        has_passive: filled.passive.is_some(),
-        non_associative: fields.friction == FrictionDto::NonAssociative,
-        fill: filled
-            .fill
-            .zip(faces)
-            .map(|(f, faces)| (f, faces, filled.road)),
-        include: include(fields.include),
     })
 }
 
@@ -233,7 +247,6 @@ fn bonded(
     problem: &ArchProblem,
     loads: &[LoadDto],
     extras: Extras,
-    time_limit_secs: f64,
 ) -> Option<ArchProblem> {
     let (rings, spans) = match fields.geometry {
         GeometryDto::Circular(c) => (c.rings, c.spans),
@@ -259,9 +272,7 @@ fn bonded(
         geometry: &single,
         ..*fields
     };
-    input(fields, loads, extras, time_limit_secs)
-        .ok()
-        .map(|i| i.problem)
+    input(fields, loads, extras).ok().map(|i| i.problem)
 }
 
 /// The ring interfaces' limits and friction (arches of more than one ring) and crushing.

@@ -144,9 +144,7 @@ pub async fn solve_studied(
         load_factor = outcome.solution.load_factor,
         "arch solved"
     );
-    let status = ArchStatusDto::try_from(outcome.status)
-        .ok()
-        .filter(|_| outcome.stop.is_finished());
+    let status = Some(ArchStatusDto::from(outcome.status)).filter(|_| outcome.stop.is_finished());
     let Some(status) = status else {
         let work = Work {
             field: "geometry",

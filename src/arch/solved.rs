@@ -34,16 +34,15 @@ pub enum ArchStatusDto {
     NotSettled,
 }
 
-impl TryFrom<ArchStatus> for ArchStatusDto {
-    type Error = SolverFailure;
-
-    /// The status of an answer; the time limit is not one (the service answers it 422).
-    fn try_from(status: ArchStatus) -> Result<Self, SolverFailure> {
+impl From<ArchStatus> for ArchStatusDto {
+    /// The status of a finished analysis (one the budget stopped is not answered: the service
+    /// refuses it, 422 or 503).
+    fn from(status: ArchStatus) -> Self {
         let status = match status {
-            ArchStatus::NotSettled => return Ok(Self::NotSettled),
+            ArchStatus::NotSettled => return Self::NotSettled,
             ArchStatus::Limit(status) => status,
         };
-        Ok(match status {
+        match status {
             LimitStatus::Solved => Self::Solved,
             LimitStatus::DeadLoadNotCarried => Self::DeadLoadNotCarried,
             LimitStatus::Unbounded => Self::Unbounded,
@@ -52,9 +51,8 @@ impl TryFrom<ArchStatus> for ArchStatusDto {
                 SolverFailure::MaxIterations => Self::MaxIterations,
                 SolverFailure::Numerical => Self::NumericalError,
                 SolverFailure::Infeasible => Self::Infeasible,
-                SolverFailure::MaxTime => return Err(failure),
             },
-        })
+        }
     }
 }
 

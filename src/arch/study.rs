@@ -27,30 +27,14 @@ use crate::study::Study;
 pub struct PreparedLive {
     input: ArchInput,
     study: Option<Study>,
-    secs: f64,
 }
 
 /// Validates a live-load request and its studies (its `body` as sent): every 4xx of the input.
-pub fn prepare_live(
-    state: &AppState,
-    (request, body): (&LiveLoadRequest, &Value),
-) -> Result<PreparedLive, ApiError> {
-    let secs = state.solve_time_limit_secs();
+pub fn prepare_live(request: &LiveLoadRequest, body: &Value) -> Result<PreparedLive, ApiError> {
     Ok(PreparedLive {
-        input: request.validate(secs)?,
+        input: request.validate()?,
         study: plan(request, body)?,
-        secs,
     })
-}
-
-/// Validates a live-load request and its studies, and solves both on the pool within one
-/// budget ([`prepare_live`], [`run_live`]).
-pub async fn solve_live(
-    state: &AppState,
-    request: (&LiveLoadRequest, &Value),
-    tally: Arc<Tally>,
-) -> Result<SolvedArch, ApiError> {
-    run_live(state, prepare_live(state, request)?, tally).await
 }
 
 /// Solves a prepared request and its studies on the pool within one budget; `tally` counts the
@@ -60,10 +44,10 @@ pub async fn run_live(
     prepared: PreparedLive,
     tally: Arc<Tally>,
 ) -> Result<SolvedArch, ApiError> {
-    let PreparedLive { input, study, secs } = prepared;
+    let PreparedLive { input, study } = prepared;
     let job = study.map(|study| {
         tally.expect(crate::study::analyses(&study));
-        job(study, secs, tally)
+        job(study, tally)
     });
     solve_studied(state, Problem::LiveLoad, input, job).await
 }
@@ -87,20 +71,20 @@ pub fn plan(request: &LiveLoadRequest, body: &Value) -> Result<Option<Study>, Ap
 }
 
 /// The studies as the job the route's solve runs after its analysis.
-fn job(study: Study, time_limit_secs: f64, tally: Arc<Tally>) -> StudyJob {
+fn job(study: Study, tally: Arc<Tally>) -> StudyJob {
     Box::new(move |budget: &Budget| {
-        let evaluate = |request: Value, budget: &Budget| evaluate(request, budget, time_limit_secs);
+        let evaluate = |request: Value, budget: &Budget| evaluate(request, budget);
         crate::study::run(&study, &study.base, evaluate, budget, &tally)
     })
 }
 
 /// One sample: `request` read, validated and analysed; its λ.
-pub fn evaluate(request: Value, budget: &Budget, time_limit_secs: f64) -> Sampled {
+pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
     let typed: LiveLoadRequest = match serde_json::from_value(request) {
         Ok(typed) => typed,
         Err(e) => return Sampled::Refused(e.to_string()),
     };
-    let mut input = match typed.validate(time_limit_secs) {
+    let mut input = match typed.validate() {
         Ok(input) => input,
         Err(e) => return Sampled::Refused(e.to_string()),
     };

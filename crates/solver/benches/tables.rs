@@ -51,7 +51,7 @@ fn minimum_thickness_ratio(n: usize) -> f64 {
     )
     .unwrap();
     match r.outcome {
-        MinimumThicknessOutcome::Found { thickness, .. } => thickness / 10.0,
+        Ok(MinimumThicknessOutcome::Found { thickness, .. }) => thickness / 10.0,
         _ => f64::NAN,
     }
 }

@@ -390,8 +390,8 @@ fn the_answer_states_the_time_of_the_whole_analysis() {
 #[test]
 fn a_budget_spent_between_friction_steps_ends_the_iteration_unsettled() {
     // The two leaves under a cap take 28 steps to settle; the budget's flag raised during the
-    // second step ends the iteration at the next one: not settled, no factor, and the status
-    // says the time limit (never the associative state answered as a fixed point).
+    // second step ends the iteration at the next one: not settled, no factor, and the stop
+    // says the budget's reason (never the associative state answered as a fixed point).
     let problem = two_leaves_under_a_cap();
     let flag = Arc::new(AtomicBool::new(false));
     let settings = LimitSettings {
@@ -417,8 +417,5 @@ fn a_budget_spent_between_friction_steps_ends_the_iteration_unsettled() {
     assert!(!outcome.settled);
     assert_eq!(steps.get(), 2, "no step after the budget was spent");
     assert_eq!(outcome.solution.load_factor, None);
-    assert_eq!(
-        outcome.solution.status,
-        LimitStatus::SolverFailed(thrustline_solver::arch::SolverFailure::MaxTime)
-    );
+    assert_eq!(outcome.solution.stop, Stop::Cancelled);
 }

@@ -48,11 +48,11 @@ fn thickness_within_a_millionth_of_the_limit_on_both_sides() {
     };
     let m =
         solve_minimum_thickness(&arch, 1.0, InterfaceLimits::heyman(), None, &settings).unwrap();
-    let MinimumThicknessOutcome::Found {
+    let Ok(MinimumThicknessOutcome::Found {
         thickness,
         thickness_below,
         ..
-    } = m.outcome
+    }) = m.outcome
     else {
         panic!("{:?}", m.outcome)
     };

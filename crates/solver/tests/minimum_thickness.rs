@@ -21,11 +21,11 @@ fn minimum(arch: &CircularArch, friction: Option<f64>) -> MinimumThickness {
 
 fn found(m: &MinimumThickness) -> (f64, f64, Mechanism) {
     match &m.outcome {
-        MinimumThicknessOutcome::Found {
+        Ok(MinimumThicknessOutcome::Found {
             thickness,
             thickness_below,
             mechanism,
-        } => (*thickness, *thickness_below, mechanism.clone().unwrap()),
+        }) => (*thickness, *thickness_below, mechanism.clone().unwrap()),
         other => panic!("expected a minimum, got {other:?}"),
     }
 }
@@ -105,7 +105,7 @@ fn three_or_fewer_voussoirs_have_no_finite_minimum() {
                 None
             )
             .outcome,
-            MinimumThicknessOutcome::StandsHoweverThin,
+            Ok(MinimumThicknessOutcome::StandsHoweverThin),
             "N = {n}"
         );
     }
@@ -121,7 +121,7 @@ fn friction_too_low_for_any_thickness() {
             Some(0.2)
         )
         .outcome,
-        MinimumThicknessOutcome::NeverStands
+        Ok(MinimumThicknessOutcome::NeverStands)
     );
     // A rough joint (μ = 0.5) does not change the hinging limit of 50 voussoirs.
     let (rough, _, _) = found(&minimum(
@@ -165,8 +165,12 @@ fn horseshoe_arch_needs_more_than_the_semicircle() {
 
 #[test]
 fn a_search_past_its_time_limit_stops_and_says_so() {
+    // The budget is the search's one limit: spent, no programme runs and the outcome is its stop.
     let settings = MinimumThicknessSettings {
-        time_limit: Some(std::time::Duration::ZERO),
+        limit: thrustline_solver::arch::LimitSettings {
+            budget: thrustline_solver::budget::Budget::with_time_limit(std::time::Duration::ZERO),
+            ..Default::default()
+        },
         ..MinimumThicknessSettings::default()
     };
     let m = solve_minimum_thickness(
@@ -177,9 +181,6 @@ fn a_search_past_its_time_limit_stops_and_says_so() {
         &settings,
     )
     .unwrap();
-    assert_eq!(
-        m.outcome,
-        MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime)
-    );
+    assert_eq!(m.outcome, Err(thrustline_solver::budget::Stop::TimeLimit));
     assert_eq!(m.evaluations, 0);
 }

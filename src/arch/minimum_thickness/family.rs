@@ -80,11 +80,11 @@ impl Family for Thickness {
         let (given, curved) = (*given, request.geometry.is_curved());
         let answer = response(shape, result, given);
         let (shown, mechanism) = match &result.outcome {
-            MinimumThicknessOutcome::Found {
+            Ok(MinimumThicknessOutcome::Found {
                 thickness_below,
                 mechanism,
                 ..
-            } => (shape.assembly(*thickness_below).ok(), mechanism.as_ref()),
+            }) => (shape.assembly(*thickness_below).ok(), mechanism.as_ref()),
             _ => (None, None),
         };
         let title = match (

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 use thrustline_solver::arch::{
-    rupture_angle_deg, solve_minimum_thickness_of, LimitSettings, MinimumThickness,
+    rupture_angle_deg, solve_minimum_thickness_of, LimitSettings, Mechanism, MinimumThickness,
     MinimumThicknessOutcome, MinimumThicknessSettings, SolverFailure,
 };
 use utoipa::ToSchema;
@@ -21,7 +21,6 @@ use crate::state::AppState;
 use crate::stop::Work;
 use crate::validation::within;
 use thrustline_solver::arch::memory::chain_memory_bound;
-use thrustline_solver::budget::Stop;
 
 pub mod family;
 pub mod routes;
@@ -196,13 +195,13 @@ pub async fn solve(
         solve_ms = ran.elapsed.as_secs_f64() * 1e3,
         "minimum thickness solved"
     );
-    if result.outcome == MinimumThicknessOutcome::SolverFailed(SolverFailure::MaxTime) {
+    if let Err(stop) = result.outcome {
         let work = Work {
             field: "tolerance",
             advice: "use a larger tolerance or fewer voussoirs",
             no_candidate: "",
         };
-        return Err(state.refuse(Stop::TimeLimit, work, ran.shared));
+        return Err(state.refuse(stop, work, ran.shared));
     }
     Ok((shape, result))
 }
@@ -233,36 +232,26 @@ pub fn response(
         solve_time_ms: result.solve_time_secs * 1e3,
         detail: String::new(),
     };
-    match &result.outcome {
+    // A search the budget ended is refused before it is answered ([`solve`]).
+    let Ok(outcome) = &result.outcome else {
+        return MinimumThicknessResponse {
+            detail: "the search was stopped before it ended; no thickness is reported".to_owned(),
+            ..none
+        };
+    };
+    match outcome {
         MinimumThicknessOutcome::Found {
             thickness,
             thickness_below,
             mechanism,
-        } => MinimumThicknessResponse {
-            outcome: MinimumThicknessOutcomeDto::Found,
-            thickness: Some(*thickness),
-            thickness_to_radius: shape.circle(*thickness).map(|a| thickness / a.radius()),
-            thickness_to_span: shape.span().map(|span| thickness / span),
-            thickness_below: Some(*thickness_below),
-            geometric_factor_of_safety: given.map(|d| d / thickness),
-            rupture_angle_deg: match (mechanism, shape.circle(*thickness_below)) {
-                (Some(m), Some(arch)) => rupture_angle_deg(&arch, m),
-                _ => None,
-            },
-            // The mechanism is the collapse of the arch just too thin.
-            hinges: match (mechanism, shape.assembly(*thickness_below)) {
-                (Some(m), Ok(collapsing)) => hinges(&collapsing, m),
-                _ => Vec::new(),
-            },
-            active_constraints: mechanism
-                .as_ref()
-                .map(active_constraints)
-                .unwrap_or_default(),
-            detail: format!(
-                "the arch carries its own weight from thickness {thickness} on; at {thickness_below} it collapses"
-            ),
-            ..none
-        },
+        } => found(
+            shape,
+            *thickness,
+            *thickness_below,
+            mechanism.as_ref(),
+            given,
+            none,
+        ),
         MinimumThicknessOutcome::StandsHoweverThin => MinimumThicknessResponse {
             outcome: MinimumThicknessOutcomeDto::StandsHoweverThin,
             detail: format!(
@@ -291,7 +280,6 @@ pub fn response(
                 match failure {
                     SolverFailure::ReducedAccuracy => "reduced accuracy",
                     SolverFailure::MaxIterations => "iteration limit",
-                    SolverFailure::MaxTime => "the solve time limit was reached",
                     SolverFailure::Numerical => "numerical error",
                     SolverFailure::Infeasible => "reported infeasible",
                 }
@@ -299,4 +287,38 @@ pub fn response(
             ..none
         },
     }
+}
+
+/// The answer when the minimum was found: `thickness` stands, `thickness_below` (the other end of
+/// the final bracket) collapses with `mechanism`; `given`, the thickness of the request.
+fn found(
+    shape: &Thinnest,
+    thickness: f64,
+    thickness_below: f64,
+    mechanism: Option<&Mechanism>,
+    given: Option<f64>,
+    none: MinimumThicknessResponse,
+) -> MinimumThicknessResponse {
+    MinimumThicknessResponse {
+    outcome: MinimumThicknessOutcomeDto::Found,
+    thickness: Some(thickness),
+    thickness_to_radius: shape.circle(thickness).map(|a| thickness / a.radius()),
+    thickness_to_span: shape.span().map(|span| thickness / span),
+    thickness_below: Some(thickness_below),
+    geometric_factor_of_safety: given.map(|d| d / thickness),
+    rupture_angle_deg: match (mechanism, shape.circle(thickness_below)) {
+        (Some(m), Some(arch)) => rupture_angle_deg(&arch, m),
+        _ => None,
+    },
+    // The mechanism is the collapse of the arch just too thin.
+    hinges: match (mechanism, shape.assembly(thickness_below)) {
+        (Some(m), Ok(collapsing)) => hinges(&collapsing, m),
+        _ => Vec::new(),
+    },
+    active_constraints: mechanism.map(active_constraints).unwrap_or_default(),
+    detail: format!(
+        "the arch carries its own weight from thickness {thickness} on; at {thickness_below} it collapses"
+    ),
+    ..none
+}
 }

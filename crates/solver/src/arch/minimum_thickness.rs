@@ -17,6 +17,7 @@ use super::geometry::{Assembly, CircularArch};
 use super::limit::full_dead_load_margin;
 use super::limit::problem::{ArchProblem, InterfaceLimits, LimitSettings};
 use super::mechanism::{HingeSide, Mechanism};
+use crate::budget::Stop;
 use crate::numerics::brent;
 use crate::outcome::SolverFailure;
 
@@ -29,9 +30,6 @@ pub struct MinimumThicknessSettings {
     pub limit: LimitSettings,
     /// Largest number of dead-load evaluations. Defaults to 100.
     pub max_evaluations: usize,
-    /// Wall-time limit of the whole search; past it the search stops with
-    /// [`MinimumThicknessOutcome::SolverFailed`] (`MaxTime`). Defaults to none.
-    pub time_limit: Option<std::time::Duration>,
 }
 
 impl Default for MinimumThicknessSettings {
@@ -40,7 +38,6 @@ impl Default for MinimumThicknessSettings {
             tolerance: 1e-6,
             limit: LimitSettings::default(),
             max_evaluations: 100,
-            time_limit: None,
         }
     }
 }
@@ -69,8 +66,9 @@ pub enum MinimumThicknessOutcome {
 /// The answer with its cost.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MinimumThickness {
-    /// What was found.
-    pub outcome: MinimumThicknessOutcome,
+    /// What was found, or the budget's stop (`settings.limit.budget`) when it ended the search
+    /// first.
+    pub outcome: Result<MinimumThicknessOutcome, Stop>,
     /// Dead-load programmes solved.
     pub evaluations: usize,
     /// Iterations over all of them (interior-point iterations; simplex pivots on a chain).
@@ -79,10 +77,14 @@ pub struct MinimumThickness {
     pub solve_time_secs: f64,
 }
 
-/// Why one evaluation of δ(D) stopped the search.
-enum Stop {
+/// Why one evaluation of δ(D) ended the search.
+enum Halt {
+    /// The arch at that thickness cannot be built.
     Input(ArchError),
-    Solver(SolverFailure),
+    /// Its dead-load programme failed.
+    Failed(SolverFailure),
+    /// The budget is spent.
+    Stopped(Stop),
 }
 
 /// One evaluation: the thickness, its margin and the mechanism when it collapses.
@@ -104,15 +106,13 @@ struct MarginOfThickness<'a> {
     settings: &'a LimitSettings,
     evaluations: usize,
     iterations: u32,
-    deadline: Option<Instant>,
 }
 
 impl MarginOfThickness<'_> {
-    fn at(&mut self, thickness: f64) -> Result<Evaluation, Stop> {
-        if self.deadline.is_some_and(|d| Instant::now() >= d) || self.settings.budget.is_spent() {
-            return Err(Stop::Solver(SolverFailure::MaxTime));
-        }
-        let assembly = (self.arch)(thickness).map_err(Stop::Input)?;
+    fn at(&mut self, thickness: f64) -> Result<Evaluation, Halt> {
+        let budget = &self.settings.budget;
+        budget.check().map_err(Halt::Stopped)?;
+        let assembly = (self.arch)(thickness).map_err(Halt::Input)?;
         let problem = ArchProblem::new(
             assembly,
             self.unit_weight,
@@ -120,9 +120,16 @@ impl MarginOfThickness<'_> {
             self.friction,
             Vec::new(),
         )
-        .map_err(Stop::Input)?;
+        .map_err(Halt::Input)?;
         self.evaluations += 1;
-        let full = full_dead_load_margin(&problem, self.settings).map_err(Stop::Solver)?;
+        // A programme the budget interrupted fails: the budget's stop, not the failure.
+        let full =
+            full_dead_load_margin(&problem, self.settings).map_err(|failure| {
+                match budget.check() {
+                    Err(stop) => Halt::Stopped(stop),
+                    Ok(()) => Halt::Failed(failure),
+                }
+            })?;
         self.iterations += full.iterations;
         Ok(Evaluation {
             thickness,
@@ -171,12 +178,12 @@ pub fn solve_minimum_thickness_of(
         settings: &settings.limit,
         evaluations: 0,
         iterations: 0,
-        deadline: settings.time_limit.map(|limit| start + limit),
     };
     let outcome = match search(&mut delta, scale, settings) {
-        Ok(outcome) => outcome,
-        Err(Stop::Solver(failure)) => MinimumThicknessOutcome::SolverFailed(failure),
-        Err(Stop::Input(error)) => return Err(error),
+        Ok(outcome) => Ok(outcome),
+        Err(Halt::Failed(failure)) => Ok(MinimumThicknessOutcome::SolverFailed(failure)),
+        Err(Halt::Stopped(stop)) => Err(stop),
+        Err(Halt::Input(error)) => return Err(error),
     };
     Ok(MinimumThickness {
         outcome,
@@ -186,22 +193,47 @@ pub fn solve_minimum_thickness_of(
     })
 }
 
+/// The bracket, then the root: the outcome of the search.
 fn search(
     delta: &mut MarginOfThickness,
     radius: f64,
     settings: &MinimumThicknessSettings,
-) -> Result<MinimumThicknessOutcome, Stop> {
+) -> Result<MinimumThicknessOutcome, Halt> {
+    match bracket(delta, radius, settings)? {
+        Bracket::Found(below, above) => narrow(delta, radius, settings, below, above),
+        Bracket::StandsHoweverThin => Ok(MinimumThicknessOutcome::StandsHoweverThin),
+        Bracket::NeverStands => Ok(MinimumThicknessOutcome::NeverStands),
+    }
+}
+
+/// Where the geometric steps from D = R/10 end.
+enum Bracket {
+    /// An arch that falls (δ > tol) and a thicker one that stands (δ ≤ tol).
+    Found(Evaluation, Evaluation),
+    /// Even the thinnest arch stands.
+    StandsHoweverThin,
+    /// Even the thickest arch falls.
+    NeverStands,
+}
+
+/// Brackets the minimum by geometric steps from D = R/10: halving while it stands, × 1.6 while
+/// it falls.
+fn bracket(
+    delta: &mut MarginOfThickness,
+    radius: f64,
+    settings: &MinimumThicknessSettings,
+) -> Result<Bracket, Halt> {
     let tol = settings.limit.margin_tolerance;
     let stands = |e: &Evaluation| e.margin <= tol;
     let thinnest = 1e-6 * radius;
     let thickest = 2.0 * radius * (1.0 - 1e-9);
     // Bracket: `below` falls (δ > tol), `above` stands (δ ≤ tol).
     let first = delta.at(0.1 * radius)?;
-    let (mut below, mut above) = if stands(&first) {
+    let (below, above) = if stands(&first) {
         let mut above = first;
         loop {
             if above.thickness <= thinnest {
-                return Ok(MinimumThicknessOutcome::StandsHoweverThin);
+                return Ok(Bracket::StandsHoweverThin);
             }
             let e = delta.at((0.5 * above.thickness).max(thinnest))?;
             if !stands(&e) {
@@ -213,7 +245,7 @@ fn search(
         let mut below = first;
         loop {
             if below.thickness >= thickest {
-                return Ok(MinimumThicknessOutcome::NeverStands);
+                return Ok(Bracket::NeverStands);
             }
             let e = delta.at((1.6 * below.thickness).min(thickest))?;
             if stands(&e) {
@@ -222,7 +254,20 @@ fn search(
             below = e;
         }
     };
-    // Brent's method on δ(D) − tol, a continuous function, keeping the bracket ends.
+    Ok(Bracket::Found(below, above))
+}
+
+/// Brent's method on δ(D) − tol from the bracket (`below` falls, `above` stands), keeping the
+/// bracket's ends, closed by bisection to `settings.tolerance`·R.
+fn narrow(
+    delta: &mut MarginOfThickness,
+    radius: f64,
+    settings: &MinimumThicknessSettings,
+    mut below: Evaluation,
+    mut above: Evaluation,
+) -> Result<MinimumThicknessOutcome, Halt> {
+    let tol = settings.limit.margin_tolerance;
+    let stands = |e: &Evaluation| e.margin <= tol;
     let x_tolerance = settings.tolerance * radius;
     let mut stop = None;
     let (a, b, fa, fb) = (

@@ -141,4 +141,3 @@ pub struct ArchOutcome {
     /// With [`ArchPlan::bonded`]: the bonded single ring's λ (associative), when it has one.
     pub bonded_load_factor: Option<f64>,
 }
-

@@ -30,6 +30,7 @@ use super::limit::{
     solve_live_load, solve_live_load_after, ArchProblem, LimitSettings, LimitSolution, LimitStatus,
     WarmLiveLoad,
 };
+use crate::budget::Stop;
 
 /// One axle of a rolling load, relative to the set's reference point.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,8 +87,9 @@ pub struct Sweep {
     pub pivots: usize,
     /// Wall time of the first loaded stop (the dead-load check included), in seconds.
     pub first_stop_secs: f64,
-    /// Whether the time limit ran out before every stop was solved.
-    pub out_of_time: bool,
+    /// How the sweep ended: [`Stop::Finished`], or the budget's reason when it ended the sweep
+    /// before every stop was solved.
+    pub stop: Stop,
 }
 
 impl Sweep {
@@ -95,6 +97,21 @@ impl Sweep {
     pub fn critical(&self) -> Option<(usize, f64)> {
         least_stop(&self.stops)
     }
+}
+
+/// How a sweep ended: `skipped` (the stop that made it skip the stops left), else the stop of a
+/// stop's own programme that the budget ended (its λ is not an answer, so neither is the
+/// sweep's least).
+fn swept_stop(skipped: Stop, stops: &[Option<LimitSolution>]) -> Stop {
+    if !skipped.is_finished() {
+        return skipped;
+    }
+    stops
+        .iter()
+        .flatten()
+        .map(|s| s.stop)
+        .find(|s| !s.is_finished())
+        .unwrap_or(Stop::Finished)
 }
 
 /// The stop with the least λ (the first of equal ones) and that λ.
@@ -118,6 +135,7 @@ fn keep_if_least(
 ) -> LimitSolution {
     let bare = LimitSolution {
         status: solution.status,
+        stop: solution.stop,
         load_factor: solution.load_factor,
         dead_load_carried: solution.dead_load_carried,
         dead_load_margin: solution.dead_load_margin,
@@ -158,7 +176,7 @@ pub fn sweep_live_loads(
         return Ok(Sweep {
             stops,
             first_stop_secs: 0.0,
-            out_of_time: false,
+            stop: Stop::Finished,
             simplex_stops: 0,
             pivots: 0,
         });
@@ -173,20 +191,13 @@ pub fn sweep_live_loads(
     stops[first] = Some(solution);
     let warm = known_margin.and_then(|margin| WarmLiveLoad::new(problem).map(|w| (w, margin)));
     if let Some((warm, margin)) = warm {
-        return sweep_warm(
-            problem,
-            settings,
-            loads,
-            (first, stops),
-            (warm, margin),
-            start,
-        )
-        .map(|mut s| {
+        return sweep_warm(problem, settings, loads, first, stops, warm, margin).map(|mut s| {
             s.first_stop_secs = first_stop_secs;
             s
         });
     }
-    let out_of_time = AtomicBool::new(false);
+    // Raised by the first stop that finds the budget spent, so that the others skip at once.
+    let stopped = AtomicBool::new(false);
     // Only the least stop's state is answered: the others keep their λ alone (a thousand
     // states of a long chain took 270 MB).
     let least = Mutex::new(None);
@@ -194,11 +205,8 @@ pub fn sweep_live_loads(
         .into_par_iter()
         .filter(|&i| !loads[i].is_empty())
         .map(|i| {
-            if out_of_time.load(Ordering::Relaxed)
-                || start.elapsed().as_secs_f64() > settings.time_limit_secs
-                || settings.budget.is_spent()
-            {
-                out_of_time.store(true, Ordering::Relaxed);
+            if stopped.load(Ordering::Relaxed) || settings.budget.is_spent() {
+                stopped.store(true, Ordering::Relaxed);
                 return Ok((i, None));
             }
             let problem = at(i)?;
@@ -215,10 +223,15 @@ pub fn sweep_live_loads(
     if let Some((i, solution)) = least.into_inner().unwrap_or_else(|e| e.into_inner()) {
         stops[i] = Some(solution);
     }
+    let stop = if stopped.into_inner() {
+        settings.budget.stop()
+    } else {
+        Stop::Finished
+    };
     Ok(Sweep {
+        stop: swept_stop(stop, &stops),
         stops,
         first_stop_secs,
-        out_of_time: out_of_time.into_inner(),
         simplex_stops: 0,
         pivots: 0,
     })
@@ -230,31 +243,33 @@ fn sweep_warm(
     problem: &ArchProblem,
     settings: &LimitSettings,
     loads: &[Vec<LiveLoad>],
-    (first, mut stops): (usize, Vec<Option<LimitSolution>>),
-    (mut warm, margin): (WarmLiveLoad, f64),
-    start: Instant,
+    first: usize,
+    mut stops: Vec<Option<LimitSolution>>,
+    mut warm: WarmLiveLoad,
+    margin: f64,
 ) -> Result<Sweep, ArchError> {
-    let (mut simplex_stops, mut pivots, mut out_of_time) = (0, 0, false);
+    let (mut simplex_stops, mut pivots, mut stop) = (0, 0, Stop::Finished);
     let mut again: Vec<usize> = Vec::new();
     for i in first + 1..loads.len() {
         if loads[i].is_empty() {
             continue;
         }
-        if start.elapsed().as_secs_f64() > settings.time_limit_secs || settings.budget.is_spent() {
-            out_of_time = true;
+        if let Err(spent) = settings.budget.check() {
+            stop = spent;
             break;
         }
         let begun = Instant::now();
         match warm.solve(&loads[i]) {
-            Ok(stop) => {
+            Ok(answer) => {
                 simplex_stops += 1;
-                pivots += stop.pivots;
+                pivots += answer.pivots;
                 stops[i] = Some(LimitSolution {
-                    status: match stop.load_factor {
+                    status: match answer.load_factor {
                         Some(_) => LimitStatus::Solved,
                         None => LimitStatus::Unbounded,
                     },
-                    load_factor: stop.load_factor,
+                    stop: Stop::Finished,
+                    load_factor: answer.load_factor,
                     dead_load_carried: Some(true),
                     dead_load_margin: Some(margin),
                     resultants: Vec::new(),
@@ -282,8 +297,8 @@ fn sweep_warm(
             .and_then(|s| s.load_factor)
             .is_some_and(|f| f <= least + 1e-6 * least.abs())
     }));
-    if out_of_time {
-        // Unfinished: the answer is the first stop's (see the service), nothing to confirm.
+    if !stop.is_finished() {
+        // Unfinished: the answer is the first stop's (see the analysis), nothing to confirm.
         again.clear();
     }
     let resolved: Vec<(usize, LimitSolution)> = again
@@ -299,17 +314,18 @@ fn sweep_warm(
     // Should the interior-point λ of those stops differ from the simplex's by more than 1e-6
     // after all, the least stop (the first of equal ones) might be one without its state:
     // solve it too, until the least has one.
-    while let Some((i, _)) = least_stop(&stops).filter(|_| !out_of_time) {
+    while let Some((i, _)) = least_stop(&stops).filter(|_| stop.is_finished()) {
         if stops[i].as_ref().is_some_and(|s| !s.resultants.is_empty()) {
             break;
         }
         let at = problem.clone().with_live_loads(loads[i].clone())?;
         stops[i] = Some(solve_live_load_after(&at, settings, margin)?);
     }
+    let stop = swept_stop(stop, &stops);
     Ok(Sweep {
         stops,
         first_stop_secs: 0.0,
-        out_of_time,
+        stop,
         simplex_stops,
         pivots,
     })

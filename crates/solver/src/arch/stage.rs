@@ -18,7 +18,6 @@ use super::plan::{ArchOutcome, ArchPlan, ArchStatus, Friction, Programme, Rollin
 use super::rolling::sweep_live_loads;
 use super::thrust_line::thrust_line;
 use crate::budget::{Budget, Stop};
-use crate::outcome::SolverFailure;
 
 /// Analyses `problem` under the plan's programme and friction within `budget` (its other
 /// stages are [`super::analysis::analyse`]'s). `Err` only for input the solver cannot accept;
@@ -73,18 +72,11 @@ pub fn analyse_programme(
         // The state at the cap of λ (the non-associative iteration's start): not an answer.
         solution.resultants.clear();
     }
-    // Stopped at the time limit: the answer's own programme, or the friction iteration (whose
-    // check the answer would otherwise report as not settled).
-    let out_of_time =
-        |status: LimitStatus| status == LimitStatus::SolverFailed(SolverFailure::MaxTime);
-    let stop = if out_of_time(solution.status)
-        || friction
-            .as_ref()
-            .is_some_and(|f| out_of_time(f.solution.status))
-    {
-        budget.check().err().unwrap_or(Stop::TimeLimit)
-    } else {
-        Stop::Finished
+    // Stopped by the budget: the answer's own programme (or sweep), or the friction iteration
+    // (whose check the answer would otherwise report as not settled).
+    let stop = match (solution.stop, friction.as_ref().map(|f| f.solution.stop)) {
+        (Stop::Finished, Some(stop)) => stop,
+        (stop, _) => stop,
     };
     let thrust_line = thrust_line(problem.assembly(), &solution.resultants);
     // The answer's time is the whole analysis': every programme, round, step and stop.
@@ -140,7 +132,7 @@ fn solve_with_friction(
 
 /// Solves the live load at every stop; the critical stop's problem and solution with the
 /// curve. Out of time, or with no stop that collapses, the first loaded stop's answer as the
-/// sweep found it (out of time: with the time limit as its status).
+/// sweep found it (out of time: with the sweep's stop).
 fn roll(
     problem: &ArchProblem,
     settings: &LimitSettings,
@@ -164,7 +156,7 @@ fn roll(
     };
     let mut solutions = sweep.stops;
     let critical = best
-        .filter(|_| !sweep.out_of_time)
+        .filter(|_| sweep.stop.is_finished())
         .and_then(|(i, _)| solutions[i].take().map(|s| (i, s)));
     if let Some((i, solution)) = critical {
         let problem = problem.clone().with_live_loads(stops[i].clone())?;
@@ -175,11 +167,11 @@ fn roll(
         .flatten()
         .next()
         .map_or_else(|| solve_live_load(problem, settings), Ok)?;
-    if sweep.out_of_time {
-        // The sweep is not finished, and says so through the status.
+    if !sweep.stop.is_finished() {
+        // The sweep is not finished, and says so through its stop.
         curve.critical = None;
         curve.time_per_stop_ms = 0.0;
-        solution.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
+        solution.stop = sweep.stop;
     }
     Ok((problem.clone(), solution, curve))
 }

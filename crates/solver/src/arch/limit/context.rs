@@ -20,6 +20,7 @@ use crate::arch::equilibrium::{
     assemble_equilibrium, force_scale, Equilibrium, RESULTANTS_PER_INTERFACE,
 };
 use crate::arch::mechanism::{read_mechanism, Bound, LimitTag, Mechanism, Resultant};
+use crate::budget::Stop;
 use crate::outcome::SolverFailure;
 
 /// Live loads are scaled to a unit largest component; λ above this counts as no collapse.
@@ -486,6 +487,7 @@ impl<'a> Context<'a> {
         } = found;
         LimitSolution {
             status,
+            stop: Stop::Finished,
             load_factor,
             dead_load_carried,
             dead_load_margin,
@@ -498,8 +500,10 @@ impl<'a> Context<'a> {
         }
     }
 
+    /// No answer: a programme failed, or the budget ended it (then its `stop` says why: a
+    /// programme the budget interrupted reports a failure of its own).
     pub fn failed(&self, failure: SolverFailure, start: Instant) -> LimitSolution {
-        self.finish(
+        let mut solution = self.finish(
             Found {
                 status: LimitStatus::SolverFailed(failure),
                 load_factor: None,
@@ -510,6 +514,8 @@ impl<'a> Context<'a> {
                 mechanism: None,
             },
             start,
-        )
+        );
+        solution.stop = self.settings.budget.stop();
+        solution
     }
 }

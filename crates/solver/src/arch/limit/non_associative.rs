@@ -52,7 +52,6 @@ use super::mixing::{relaxed, Mixing};
 use super::problem::{ArchProblem, LimitSettings, LimitSolution, LimitStatus, Relaxation};
 use crate::arch::equilibrium::force_scale;
 use crate::arch::mechanism::Mechanism;
-use crate::outcome::SolverFailure;
 
 /// Steps at most.
 pub const MAX_STEPS: usize = 50;
@@ -175,9 +174,9 @@ pub fn iterate<E>(
     let mut run = Run::new(&associative, settings.relaxation);
     let mut out_of_budget = false;
     let settled = loop {
-        if settings.budget.is_spent() {
+        if let Err(stop) = settings.budget.check() {
             // The request's budget ended it: no answer the iteration can vouch for.
-            run.last.status = LimitStatus::SolverFailed(SolverFailure::MaxTime);
+            run.last.stop = stop;
             run.last.load_factor = None;
             out_of_budget = true;
             break false;

@@ -6,7 +6,7 @@ use crate::arch::error::{ArchError, ArchParameter};
 use crate::arch::fill::PassiveForce;
 use crate::arch::geometry::{Assembly, InterfaceKind};
 use crate::arch::mechanism::{Bound, Mechanism, Resultant};
-use crate::budget::Budget;
+use crate::budget::{Budget, Stop};
 use crate::outcome::SolverFailure;
 
 /// Limits on the stress resultants of every interface (absolute forces; `None` = unbounded).
@@ -446,16 +446,14 @@ pub struct LimitSettings {
     pub margin_tolerance: f64,
     /// Interior-point iterations per programme. Defaults to 200.
     pub max_iterations: u32,
-    /// Time limit of one programme in seconds. Defaults to 30.
-    pub time_limit_secs: f64,
     /// Which model the programmes are written on. Defaults to [`Formulation::Chain`].
     pub formulation: Formulation,
     /// How the non-associative iteration forms each step's normal forces. Defaults to
     /// [`Relaxation::Paper`].
     pub relaxation: Relaxation,
-    /// The whole analysis' budget: every programme stops at its deadline or when it is
-    /// cancelled (at the next interior-point iteration), whatever `time_limit_secs` allows.
-    /// Defaults to unlimited.
+    /// The whole analysis' budget, the one limit on its time: every programme stops at its
+    /// deadline or when it is cancelled (at the next interior-point iteration). Defaults to
+    /// unlimited.
     pub budget: Budget,
 }
 
@@ -488,7 +486,6 @@ impl Default for LimitSettings {
             tolerance: 1e-10,
             margin_tolerance: 1e-9,
             max_iterations: 200,
-            time_limit_secs: 30.0,
             formulation: Formulation::Chain,
             relaxation: Relaxation::Paper,
             budget: Budget::unlimited(),
@@ -512,8 +509,11 @@ pub enum LimitStatus {
 /// What a limit analysis found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LimitSolution {
-    /// How it ended.
+    /// What the programmes answered; meaningful only where `stop` is [`Stop::Finished`].
     pub status: LimitStatus,
+    /// How it ended: [`Stop::Finished`], or the budget's reason when the budget ended a
+    /// programme (then nothing is answered: no factor, no state).
+    pub stop: Stop,
     /// The dead-load factor λ₀ (dead load) or live-load factor λ (live load), when solved.
     pub load_factor: Option<f64>,
     /// Whether the dead load is carried (λ₀ = 1); `None` if that could not be decided.

@@ -213,13 +213,12 @@ fn run_clarabel_once(
     let clarabel_settings = DefaultSettingsBuilder::default()
         .verbose(false)
         .max_iter(settings.max_iterations)
+        // The budget's time, the one limit (Clarabel's default, none, without a deadline).
         .time_limit(
             settings
                 .budget
                 .remaining()
-                .map_or(settings.time_limit_secs, |r| {
-                    settings.time_limit_secs.min(r.as_secs_f64())
-                }),
+                .map_or(f64::INFINITY, |r| r.as_secs_f64()),
         )
         .tol_gap_abs(tol)
         .tol_gap_rel(tol)
@@ -524,7 +523,9 @@ pub(super) fn failure(status: SolverStatus) -> Option<SolverFailure> {
         SolverStatus::Solved => None,
         SolverStatus::AlmostSolved => Some(SolverFailure::ReducedAccuracy),
         SolverStatus::MaxIterations => Some(SolverFailure::MaxIterations),
-        SolverStatus::MaxTime => Some(SolverFailure::MaxTime),
+        // Clarabel's time limit is the budget's remaining time: past it the budget is spent, and
+        // the solution's stop says so (`Context::failed`).
+        SolverStatus::MaxTime => Some(SolverFailure::Numerical),
         SolverStatus::PrimalInfeasible
         | SolverStatus::AlmostPrimalInfeasible
         | SolverStatus::DualInfeasible
