@@ -200,3 +200,103 @@ pub async fn report<F: Family>(
     };
     Ok(report.html(parts.subject))
 }
+
+/// Declares a family's route handler, documented: its doc comment, then the kind of answer and
+/// `name(Family, Request)`. `json` takes its own `#[utoipa::path(...)]` after the doc (a route's
+/// examples are its own); the twins write theirs from `at "path", "tag"` (the same responses on
+/// every family): `stream` (with its line type), `svg`, `report`, and `csv` (with its table
+/// query). Each handler is one call of the generic one of its kind.
+macro_rules! route {
+    ($(#[$meta:meta])* json $name:ident($family:ty, $request:ty)) => {
+        $(#[$meta])*
+        pub async fn $name(
+            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
+            headers: axum::http::HeaderMap,
+            $crate::headers::RequestId(id): $crate::headers::RequestId,
+            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<axum::response::Response, $crate::error::ApiError> {
+            $crate::family::json::<$family>(state, &headers, id, (request, body)).await
+        }
+    };
+    ($(#[$meta:meta])* stream $name:ident($family:ty, $request:ty, $line:ty) at $path:tt, $tag:tt) => {
+        $(#[$meta])*
+        #[utoipa::path(
+            post,
+            path = $path,
+            tag = $tag,
+            request_body = $request,
+            responses(
+                (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = $line, content_type = "application/x-ndjson"),
+                $crate::error::ProblemResponses,
+            )
+        )]
+        pub async fn $name(
+            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
+            $crate::headers::RequestId(id): $crate::headers::RequestId,
+            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<axum::response::Response, $crate::error::ApiError> {
+            $crate::family::stream::<$family>(state, id, (request, body))
+        }
+    };
+    ($(#[$meta:meta])* svg $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
+        $(#[$meta])*
+        #[utoipa::path(
+            post,
+            path = $path,
+            tag = $tag,
+            request_body = $request,
+            responses(
+                (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+                $crate::error::ProblemResponses,
+            )
+        )]
+        pub async fn $name(
+            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
+            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<$crate::svg::Svg, $crate::error::ApiError> {
+            $crate::family::svg::<$family>(&state, (request, body)).await
+        }
+    };
+    ($(#[$meta:meta])* csv $name:ident($family:ty, $request:ty, $query:ty) at $path:tt, $tag:tt) => {
+        $(#[$meta])*
+        #[utoipa::path(
+            post,
+            path = $path,
+            tag = $tag,
+            request_body = $request,
+            params($query),
+            responses(
+                (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+                $crate::error::ProblemResponses,
+            )
+        )]
+        pub async fn $name(
+            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
+            $crate::table::Table(table): $crate::table::Table<$query>,
+            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<$crate::table::Csv, $crate::error::ApiError> {
+            $crate::family::csv::<$family>(&state, table, (request, body)).await
+        }
+    };
+    ($(#[$meta:meta])* report $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
+        $(#[$meta])*
+        #[utoipa::path(
+            post,
+            path = $path,
+            tag = $tag,
+            request_body = $request,
+            responses(
+                (status = 200, description = "The report, one HTML page", body = String, content_type = "text/html"),
+                $crate::error::ProblemResponses,
+            )
+        )]
+        pub async fn $name(
+            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
+            $crate::headers::RequestId(request_id): $crate::headers::RequestId,
+            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<axum::response::Html<String>, $crate::error::ApiError> {
+            $crate::family::report::<$family>(&state, request_id, (request, body)).await
+        }
+    };
+}
+pub(crate) use route;

@@ -2,7 +2,7 @@
 //! lower end of the slip surface, angles in degrees.
 
 use serde::Serialize;
-use thrustline_solver::slope::analysis::{Analysed, SearchReport};
+use thrustline_solver::slope::analysis::{Analysed, Refinement, SearchReport};
 use thrustline_solver::slope::{Sliced, SpencerSolution, SpencerStatus, ThrustPoint};
 
 use super::methods::MethodsDto;
@@ -261,15 +261,7 @@ impl SpencerResponse {
                 slices: solved.accuracy.slices,
                 discretisation_error: solved.accuracy.discretisation_error,
             },
-            slice_refinement: solved.refinement.as_ref().map(|r| {
-                r.steps
-                    .iter()
-                    .map(|s| SliceRefinementDto {
-                        slices: s.slices,
-                        factor_of_safety: s.factor_of_safety,
-                    })
-                    .collect()
-            }),
+            slice_refinement: solved.refinement.as_ref().map(refinement_out),
             omitted: Vec::new(),
             supports: super::supports::supports_out(
                 &section.supports(),
@@ -327,6 +319,18 @@ fn grid_out(search: &SearchReport) -> GridDto {
         x_absolute: search.grid.xs.iter().map(|x| x + search.origin.0).collect(),
         y_absolute: search.grid.ys.iter().map(|y| y + search.origin.1).collect(),
     }
+}
+
+/// The slice refinement's steps: F at each number of slices tried.
+fn refinement_out(refinement: &Refinement) -> Vec<SliceRefinementDto> {
+    refinement
+        .steps
+        .iter()
+        .map(|s| SliceRefinementDto {
+            slices: s.slices,
+            factor_of_safety: s.factor_of_safety,
+        })
+        .collect()
 }
 
 /// The slices' available and mobilised shear forces summed (none without slices).

@@ -2,9 +2,6 @@
 //! twins, each one call of the generic handlers of [`crate::family`], and their registration
 //! for `crate::routes`.
 
-use axum::extract::State;
-use axum::http::HeaderMap;
-use axum::response::Response;
 use axum::routing::post;
 use axum::Router;
 use utoipa::OpenApi;
@@ -12,12 +9,9 @@ use utoipa::OpenApi;
 use super::super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery};
 use super::family::Thickness;
 use super::{MinimumThicknessRequest, MinimumThicknessResponse};
-use crate::error::{ApiError, ProblemResponses};
-use crate::extract::ApiJsonWithBody;
-use crate::family::{self, Registration};
+use crate::error::ProblemResponses;
+use crate::family::{route, Registration};
 use crate::state::AppState;
-use crate::svg::Svg;
-use crate::table::{Csv, Table};
 
 /// The family's registration.
 pub const REGISTRATION: Registration = Registration {
@@ -42,74 +36,43 @@ fn routes() -> Router<AppState> {
 )]
 struct Api;
 
-/// Minimum thickness of a circular arch under its own weight.
-///
-/// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
-/// (Milankovitch 1904; model §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
-/// A given `thickness` D adds the geometric factor of safety D / D_min. A solve stopped at the time limit is 422 naming
-/// `tolerance`.
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness",
-    tag = "arch",
-    request_body(content = MinimumThicknessRequest, examples(
-        ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748",
-            value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
-    )),
-    responses(
-        (status = 200, description = "The minimum thickness, or the reason there is none (its tables as CSV: `/arch/minimum-thickness/csv`)", body = MinimumThicknessResponse),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness(
-    State(state): State<AppState>,
-    ApiJsonWithBody { request, body }: ApiJsonWithBody<MinimumThicknessRequest>,
-) -> Result<Response, ApiError> {
-    family::json::<Thickness>(state, &HeaderMap::new(), String::new(), (request, body)).await
+route! {
+    /// Minimum thickness of a circular arch under its own weight.
+    ///
+    /// The thinnest arch of the given shape, voussoirs and joint limits that carries its own weight
+    /// (Milankovitch 1904; model §1.4): Brent's method on the dead-load margin, to `tolerance`·R.
+    /// A given `thickness` D adds the geometric factor of safety D / D_min. A solve stopped at the time limit is 422 naming
+    /// `tolerance`.
+    #[utoipa::path(
+        post,
+        path = "/arch/minimum-thickness",
+        tag = "arch",
+        request_body(content = MinimumThicknessRequest, examples(
+            ("milankovitch" = (summary = "Milankovitch's semicircle of 1800 voussoirs: d/R = 0.10748",
+                value = json!({"geometry": {"kind": "circular", "radius": 10.0, "voussoirs": 1800}})))
+        )),
+        responses(
+            (status = 200, description = "The minimum thickness, or the reason there is none (its tables as CSV: `/arch/minimum-thickness/csv`)", body = MinimumThicknessResponse),
+            ProblemResponses,
+        )
+    )]
+    json minimum_thickness(Thickness, MinimumThicknessRequest)
 }
 
-/// A table of the minimum-thickness answer as CSV.
-///
-/// The same request and search as `/arch/minimum-thickness`; `table` chooses the table (a
-/// header row of the JSON field names, then one row per item).
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness/csv",
-    tag = "arch",
-    request_body = MinimumThicknessRequest,
-    params(MinimumThicknessTableQuery),
-    responses(
-        (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness_csv(
-    State(state): State<AppState>,
-    Table(table): Table<MinimumThicknessTableQuery>,
-    ApiJsonWithBody { request, body }: ApiJsonWithBody<MinimumThicknessRequest>,
-) -> Result<Csv, ApiError> {
-    family::csv::<Thickness>(&state, table, (request, body)).await
+route! {
+    /// A table of the minimum-thickness answer as CSV.
+    ///
+    /// The same request and search as `/arch/minimum-thickness`; `table` chooses the table (a
+    /// header row of the JSON field names, then one row per item).
+    csv minimum_thickness_csv(Thickness, MinimumThicknessRequest, MinimumThicknessTableQuery) at "/arch/minimum-thickness/csv", "arch"
 }
 
-/// Minimum thickness drawn: the arch just too thin to stand, with its collapse mechanism.
-///
-/// The same request and search as `/arch/minimum-thickness`, answered as an SVG picture: the
-/// arch at the thickest thickness that does not stand (the lower end of the final bracket),
-/// its voussoirs, the displaced blocks of its mechanism and the hinges labelled by angle and
-/// side, the minimum thickness in the title. Without a minimum, the arch as given and why.
-#[utoipa::path(
-    post,
-    path = "/arch/minimum-thickness/svg",
-    tag = "arch",
-    request_body = MinimumThicknessRequest,
-    responses(
-        (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
-        ProblemResponses,
-    )
-)]
-pub async fn minimum_thickness_svg(
-    State(state): State<AppState>,
-    ApiJsonWithBody { request, body }: ApiJsonWithBody<MinimumThicknessRequest>,
-) -> Result<Svg, ApiError> {
-    family::svg::<Thickness>(&state, (request, body)).await
+route! {
+    /// Minimum thickness drawn: the arch just too thin to stand, with its collapse mechanism.
+    ///
+    /// The same request and search as `/arch/minimum-thickness`, answered as an SVG picture: the
+    /// arch at the thickest thickness that does not stand (the lower end of the final bracket),
+    /// its voussoirs, the displaced blocks of its mechanism and the hinges labelled by angle and
+    /// side, the minimum thickness in the title. Without a minimum, the arch as given and why.
+    svg minimum_thickness_svg(Thickness, MinimumThicknessRequest) at "/arch/minimum-thickness/svg", "arch"
 }

@@ -200,7 +200,10 @@ fn search(
     settings: &MinimumThicknessSettings,
 ) -> Result<MinimumThicknessOutcome, Halt> {
     match bracket(delta, radius, settings)? {
-        Bracket::Found(below, above) => narrow(delta, radius, settings, below, above),
+        Bracket::Found(ends) => {
+            let (below, above) = *ends;
+            narrow(delta, radius, settings, below, above)
+        }
         Bracket::StandsHoweverThin => Ok(MinimumThicknessOutcome::StandsHoweverThin),
         Bracket::NeverStands => Ok(MinimumThicknessOutcome::NeverStands),
     }
@@ -208,8 +211,9 @@ fn search(
 
 /// Where the geometric steps from D = R/10 end.
 enum Bracket {
-    /// An arch that falls (δ > tol) and a thicker one that stands (δ ≤ tol).
-    Found(Evaluation, Evaluation),
+    /// An arch that falls (δ > tol) and a thicker one that stands (δ ≤ tol) (boxed: each
+    /// evaluation holds a mechanism).
+    Found(Box<(Evaluation, Evaluation)>),
     /// Even the thinnest arch stands.
     StandsHoweverThin,
     /// Even the thickest arch falls.
@@ -254,7 +258,7 @@ fn bracket(
             below = e;
         }
     };
-    Ok(Bracket::Found(below, above))
+    Ok(Bracket::Found(Box::new((below, above))))
 }
 
 /// Brent's method on δ(D) − tol from the bracket (`below` falls, `above` stands), keeping the

@@ -30,16 +30,50 @@ pub fn refine_critical(
     if positions.len() < 2 {
         return Ok(outcome);
     }
-    let spacing =
-        (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
-    let tolerance = RefineCritical::TOLERANCE * spacing;
-    let loads_at = |x: f64| refine.axles.loads_at(x);
     let Some(curve) = outcome.rolling.as_mut() else {
         return Ok(outcome);
     };
     let Some((i, stop_lambda)) = curve.critical.filter(|_| outcome.stop.is_finished()) else {
         return Ok(outcome);
     };
+    let Some(refined) = narrowed(problem, plan, refine, budget, i, stop_lambda)? else {
+        return Ok(outcome);
+    };
+    if refined.position != positions[i] {
+        // The answer at the refined position, friction treated as the plan says.
+        let Some(answer) = answer_at(problem, plan, refine, refined.position, budget)? else {
+            return Ok(outcome);
+        };
+        let (curve, swept) = (outcome.rolling.take(), outcome.solution.solve_time_secs);
+        outcome = ArchOutcome {
+            rolling: curve,
+            ..answer
+        };
+        outcome.solution.solve_time_secs = swept;
+    }
+    // The whole solve's time: the sweep's and the search's.
+    outcome.solution.solve_time_secs += start.elapsed().as_secs_f64();
+    if let Some(curve) = outcome.rolling.as_mut() {
+        curve.refined = Some(refined);
+    }
+    Ok(outcome)
+}
+
+/// The golden-section search between the neighbours of the critical stop `i` (of λ
+/// `stop_lambda`) to [`RefineCritical::TOLERANCE`] of the stops' spacing, one associative
+/// live-load analysis per position; `None` when the budget ended one of them.
+fn narrowed(
+    problem: &ArchProblem,
+    plan: &ArchPlan,
+    refine: &RefineCritical,
+    budget: &Budget,
+    i: usize,
+    stop_lambda: f64,
+) -> Result<Option<RefinedCritical>, ArchError> {
+    let positions = &refine.positions;
+    let spacing =
+        (positions[positions.len() - 1] - positions[0]).abs() / (positions.len() - 1) as f64;
+    let tolerance = RefineCritical::TOLERANCE * spacing;
     let (a, b) = (
         positions[i.saturating_sub(1)],
         positions[(i + 1).min(positions.len() - 1)],
@@ -51,7 +85,7 @@ pub fn refine_critical(
     );
     let mut evaluations = 0;
     let mut lambda = |x: f64| -> Result<Option<f64>, ArchError> {
-        let loads = loads_at(x);
+        let loads = refine.axles.loads_at(x);
         if loads.is_empty() {
             return Ok(Some(f64::INFINITY));
         }
@@ -68,38 +102,32 @@ pub fn refine_critical(
     };
     let Some((best, (a, b))) = golden((a, b), (positions[i], stop_lambda), tolerance, &mut lambda)?
     else {
-        return Ok(outcome);
+        return Ok(None);
     };
-    let refined = RefinedCritical {
+    Ok(Some(RefinedCritical {
         position: best.0,
         load_factor: best.1,
         error: 0.5 * (b - a),
         evaluations,
-    };
-    if best.0 != positions[i] {
-        // The answer at the refined position, friction treated as the plan says.
-        let at = ArchPlan::new(Programme::LiveLoad, plan.friction, plan.settings.clone());
-        let answer = analyse_programme(
-            &problem.clone().with_live_loads(loads_at(best.0))?,
-            &at,
-            budget,
-        )?;
-        if !answer.stop.is_finished() {
-            return Ok(outcome);
-        }
-        let (curve, swept) = (outcome.rolling.take(), outcome.solution.solve_time_secs);
-        outcome = ArchOutcome {
-            rolling: curve,
-            ..answer
-        };
-        outcome.solution.solve_time_secs = swept;
-    }
-    // The whole solve's time: the sweep's and the search's.
-    outcome.solution.solve_time_secs += start.elapsed().as_secs_f64();
-    if let Some(curve) = outcome.rolling.as_mut() {
-        curve.refined = Some(refined);
-    }
-    Ok(outcome)
+    }))
+}
+
+/// The live-load answer with `refine`'s axles at `x` (their reference point), friction treated
+/// as `plan` says; `None` when the budget ended it.
+fn answer_at(
+    problem: &ArchProblem,
+    plan: &ArchPlan,
+    refine: &RefineCritical,
+    x: f64,
+    budget: &Budget,
+) -> Result<Option<ArchOutcome>, ArchError> {
+    let at = ArchPlan::new(Programme::LiveLoad, plan.friction, plan.settings.clone());
+    let answer = analyse_programme(
+        &problem.clone().with_live_loads(refine.axles.loads_at(x))?,
+        &at,
+        budget,
+    )?;
+    Ok(answer.stop.is_finished().then_some(answer))
 }
 
 /// λ at a position: `None` when the budget ended its analysis.

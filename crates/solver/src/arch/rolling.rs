@@ -248,21 +248,112 @@ fn sweep_warm(
     mut warm: WarmLiveLoad,
     margin: f64,
 ) -> Result<Sweep, ArchError> {
-    let (mut simplex_stops, mut pivots, mut stop) = (0, 0, Stop::Finished);
-    let mut again: Vec<usize> = Vec::new();
+    let scene = WarmScene {
+        problem,
+        settings,
+        loads,
+        margin,
+    };
+    let WarmPass {
+        simplex_stops,
+        pivots,
+        stop,
+        mut again,
+    } = warm_pass(&scene, first, &mut stops, &mut warm);
+    again.extend(near_least(&stops, first));
+    if !stop.is_finished() {
+        // Unfinished: the answer is the first stop's (see the analysis), nothing to confirm.
+        again.clear();
+    }
+    let resolved: Vec<(usize, LimitSolution)> = again
+        .into_par_iter()
+        .map(|i| Ok((i, scene.solve(i)?)))
+        .collect::<Result<_, ArchError>>()?;
+    for (i, solution) in resolved {
+        stops[i] = Some(solution);
+    }
+    // Should the interior-point λ of those stops differ from the simplex's by more than 1e-6
+    // after all, the least stop (the first of equal ones) might be one without its state:
+    // solve it too, until the least has one.
+    while let Some((i, _)) = least_stop(&stops).filter(|_| stop.is_finished()) {
+        if stops[i].as_ref().is_some_and(|s| !s.resultants.is_empty()) {
+            break;
+        }
+        stops[i] = Some(scene.solve(i)?);
+    }
+    let stop = swept_stop(stop, &stops);
+    Ok(Sweep {
+        stops,
+        first_stop_secs: 0.0,
+        stop,
+        simplex_stops,
+        pivots,
+    })
+}
+
+/// What every stop of a warm sweep shares.
+struct WarmScene<'a> {
+    /// The problem without its live loads.
+    problem: &'a ArchProblem,
+    /// The interior-point settings (and the sweep's budget).
+    settings: &'a LimitSettings,
+    /// Each stop's live loads.
+    loads: &'a [Vec<LiveLoad>],
+    /// The dead load's margin, checked at the first loaded stop.
+    margin: f64,
+}
+
+impl WarmScene<'_> {
+    /// Stop `i` on the interior-point method, given the dead load's margin.
+    fn solve(&self, i: usize) -> Result<LimitSolution, ArchError> {
+        let at = self
+            .problem
+            .clone()
+            .with_live_loads(self.loads[i].clone())?;
+        solve_live_load_after(&at, self.settings, self.margin)
+    }
+}
+
+/// What the warm simplex method's pass over the stops left.
+struct WarmPass {
+    /// Stops it answered.
+    simplex_stops: usize,
+    /// Its pivots.
+    pivots: usize,
+    /// [`Stop::Finished`], or the budget's stop that ended the pass.
+    stop: Stop,
+    /// The stops it could not certify, for the interior-point method.
+    again: Vec<usize>,
+}
+
+/// The stops after `first` by the warm simplex method, one after the other, into `stops`,
+/// until the budget ends the pass.
+fn warm_pass(
+    scene: &WarmScene,
+    first: usize,
+    stops: &mut [Option<LimitSolution>],
+    warm: &mut WarmLiveLoad,
+) -> WarmPass {
+    let (loads, margin) = (scene.loads, scene.margin);
+    let mut pass = WarmPass {
+        simplex_stops: 0,
+        pivots: 0,
+        stop: Stop::Finished,
+        again: Vec::new(),
+    };
     for i in first + 1..loads.len() {
         if loads[i].is_empty() {
             continue;
         }
-        if let Err(spent) = settings.budget.check() {
-            stop = spent;
+        if let Err(spent) = scene.settings.budget.check() {
+            pass.stop = spent;
             break;
         }
         let begun = Instant::now();
         match warm.solve(&loads[i]) {
             Ok(answer) => {
-                simplex_stops += 1;
-                pivots += answer.pivots;
+                pass.simplex_stops += 1;
+                pass.pivots += answer.pivots;
                 stops[i] = Some(LimitSolution {
                     status: match answer.load_factor {
                         Some(_) => LimitStatus::Solved,
@@ -282,51 +373,26 @@ fn sweep_warm(
             }
             Err(_) => {
                 warm.forget();
-                again.push(i);
+                pass.again.push(i);
             }
         }
     }
-    // The stops that can be critical: within 1e-6 of the least λ found by the simplex method
-    // (the interior-point λ agree with it to the solver's tolerance, far below that).
-    let least = (first + 1..loads.len())
+    pass
+}
+
+/// The stops after `first` that can be critical: within 1e-6 of the least λ found by the
+/// simplex method (the interior-point λ agree with it to the solver's tolerance, far below
+/// that).
+fn near_least(stops: &[Option<LimitSolution>], first: usize) -> Vec<usize> {
+    let least = (first + 1..stops.len())
         .filter_map(|i| stops[i].as_ref().and_then(|s| s.load_factor))
         .fold(f64::INFINITY, f64::min);
-    again.extend((first + 1..loads.len()).filter(|&i| {
-        stops[i]
-            .as_ref()
-            .and_then(|s| s.load_factor)
-            .is_some_and(|f| f <= least + 1e-6 * least.abs())
-    }));
-    if !stop.is_finished() {
-        // Unfinished: the answer is the first stop's (see the analysis), nothing to confirm.
-        again.clear();
-    }
-    let resolved: Vec<(usize, LimitSolution)> = again
-        .into_par_iter()
-        .map(|i| {
-            let at = problem.clone().with_live_loads(loads[i].clone())?;
-            Ok((i, solve_live_load_after(&at, settings, margin)?))
+    (first + 1..stops.len())
+        .filter(|&i| {
+            stops[i]
+                .as_ref()
+                .and_then(|s| s.load_factor)
+                .is_some_and(|f| f <= least + 1e-6 * least.abs())
         })
-        .collect::<Result<_, ArchError>>()?;
-    for (i, solution) in resolved {
-        stops[i] = Some(solution);
-    }
-    // Should the interior-point λ of those stops differ from the simplex's by more than 1e-6
-    // after all, the least stop (the first of equal ones) might be one without its state:
-    // solve it too, until the least has one.
-    while let Some((i, _)) = least_stop(&stops).filter(|_| stop.is_finished()) {
-        if stops[i].as_ref().is_some_and(|s| !s.resultants.is_empty()) {
-            break;
-        }
-        let at = problem.clone().with_live_loads(loads[i].clone())?;
-        stops[i] = Some(solve_live_load_after(&at, settings, margin)?);
-    }
-    let stop = swept_stop(stop, &stops);
-    Ok(Sweep {
-        stops,
-        first_stop_secs: 0.0,
-        stop,
-        simplex_stops,
-        pivots,
-    })
+        .collect()
 }

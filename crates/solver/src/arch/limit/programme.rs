@@ -275,99 +275,150 @@ pub(super) fn solve_chain_programme(
     dead_factor: f64,
     extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
     (cap, objective): ((f64, f64), f64),
-    settings: (&LimitSettings, Refinement),
+    (settings, refinement): (&LimitSettings, Refinement),
 ) -> Programme {
     const MAX_ROUNDS: usize = 40;
     const MAX_ADDED_PER_ROUND: usize = 256;
     let dense = on_redundants(chain, rows, dead_factor, extra_coefficient);
     let interfaces = chain.interfaces();
     let per_interface = rows.len() / interfaces.max(1);
-    let stride = (interfaces / 32).max(1);
-    let mut selected: Vec<bool> = rows
-        .iter()
-        .map(|row| {
-            let k = row.tag.interface;
-            k % stride == 0 || k + 1 == interfaces || row.cut
-        })
-        .collect();
+    let mut selected = first_rows(rows, interfaces);
     let mut c = vec![0.0; 4];
     c[3] = objective;
+    let lp = ChainLp {
+        dense,
+        cap,
+        c,
+        settings,
+        refinement,
+    };
     let mut iterations = 0;
-    // The simplex method while the rows stay few; the interior-point method otherwise, or
-    // from the round where the simplex method fails.
-    let mut simplex = Some(ChainSimplex::new(objective, cap));
-    let mut pushed = vec![false; rows.len()];
+    let mut rounds = Rounds {
+        simplex: Some(ChainSimplex::new(objective, cap)),
+        pushed: vec![false; rows.len()],
+    };
     for _ in 0..MAX_ROUNDS {
-        if settings.0.budget.is_spent() {
-            return Programme {
-                status: SolverStatus::MaxTime,
-                x: Vec::new(),
-                z: Vec::new(),
-                iterations,
-            };
+        if settings.budget.is_spent() {
+            return unanswered(SolverStatus::MaxTime, iterations);
         }
         let subset: Vec<usize> = (0..rows.len()).filter(|&i| selected[i]).collect();
-        if subset.len() >= MAX_SIMPLEX_ROWS {
-            simplex = None;
-        }
-        let by_simplex = simplex.as_mut().and_then(|lp| {
-            for &i in &subset {
-                if !std::mem::replace(&mut pushed[i], true) {
-                    lp.add(i, &dense[i]);
-                }
-            }
-            simplex_programme(lp, &subset, rows.len())
-        });
-        if by_simplex.is_none() {
-            simplex = None;
-        }
-        let mut programme = match by_simplex {
-            Some(programme) => programme,
-            None => clarabel_on(&dense, &subset, cap, &c, settings),
-        };
+        let mut programme = rounds.solve(&lp, &subset);
         iterations += programme.iterations;
         programme.iterations = iterations;
         if failure(programme.status).is_some() {
             return programme;
         }
         let mut added = violated_peaks(
-            &dense,
+            &lp.dense,
             &selected,
             &programme.x,
             per_interface,
-            settings.0.tolerance,
+            settings.tolerance,
         );
         if added.is_empty() {
             // A margin programme (minimising δ) whose dead load is carried is not read for a
             // mechanism: its vertex's multipliers serve.
-            let read = objective < 0.0 || programme.x[3] > settings.0.margin_tolerance;
-            if simplex.is_some() && read {
+            let read = objective < 0.0 || programme.x[3] > settings.margin_tolerance;
+            if rounds.simplex.is_some() && read {
                 // The simplex method's multipliers are a vertex of the optimal face (a
                 // symmetric arch's five hinges come out as an asymmetric four): the interior-
                 // point method on the rows that hold at the vertex gives the face's centre,
                 // as the whole programme did.
-                central_multipliers(&dense, &subset, cap, &c, settings, &mut programme);
+                central_multipliers(&lp, &subset, &mut programme);
             }
-            // Multipliers of the full programme: zero on the rows never added.
-            let mut z = vec![0.0; rows.len() + 1];
-            for (r, &i) in subset.iter().enumerate() {
-                z[i] = programme.z[r];
-            }
-            z[rows.len()] = programme.z[subset.len()];
-            programme.z = z;
-            return programme;
+            return on_every_row(programme, &subset, rows.len());
         }
         added.sort_by(|a, b| b.0.total_cmp(&a.0));
         for &(_, i) in added.iter().take(MAX_ADDED_PER_ROUND) {
             selected[i] = true;
         }
     }
+    unanswered(SolverStatus::MaxIterations, iterations)
+}
+
+/// The chain programme written on the redundants, whose rows the rounds of constraint
+/// generation solve subsets of.
+struct ChainLp<'a> {
+    /// Each limit row's coefficients on (x₀, x₁, x₂, extra) and right-hand side
+    /// ([`on_redundants`]).
+    dense: Vec<([f64; 4], f64)>,
+    /// The cap on the extra variable: cap.0·extra ≤ cap.1.
+    cap: (f64, f64),
+    /// The objective's coefficients on (x₀, x₁, x₂, extra).
+    c: Vec<f64>,
+    /// The interior-point settings.
+    settings: &'a LimitSettings,
+    /// When the interior-point method refines its solutions.
+    refinement: Refinement,
+}
+
+/// The method that solves the rounds of constraint generation.
+struct Rounds {
+    /// The simplex method while the rows stay few and it solves; `None` from then on (the
+    /// interior-point method).
+    simplex: Option<ChainSimplex>,
+    /// The rows given to the simplex method so far.
+    pushed: Vec<bool>,
+}
+
+impl Rounds {
+    /// The programme of `lp` on `subset` (and the cap, last): by the simplex method while the
+    /// rows stay few, else, or from the round where it fails, by the interior-point method.
+    fn solve(&mut self, lp: &ChainLp, subset: &[usize]) -> Programme {
+        if subset.len() >= MAX_SIMPLEX_ROWS {
+            self.simplex = None;
+        }
+        let pushed = &mut self.pushed;
+        let by_simplex = self.simplex.as_mut().and_then(|simplex| {
+            for &i in subset {
+                if !std::mem::replace(&mut pushed[i], true) {
+                    simplex.add(i, &lp.dense[i]);
+                }
+            }
+            simplex_programme(simplex, subset, lp.dense.len())
+        });
+        if by_simplex.is_none() {
+            self.simplex = None;
+        }
+        match by_simplex {
+            Some(programme) => programme,
+            None => clarabel_on(lp, subset),
+        }
+    }
+}
+
+/// The rows the constraint generation starts from: those of about 32 evenly spread interfaces
+/// (the last among them) and the crushing cuts.
+fn first_rows(rows: &[Row], interfaces: usize) -> Vec<bool> {
+    let stride = (interfaces / 32).max(1);
+    rows.iter()
+        .map(|row| {
+            let k = row.tag.interface;
+            k % stride == 0 || k + 1 == interfaces || row.cut
+        })
+        .collect()
+}
+
+/// A programme without a solution, ended with `status` after `iterations`.
+fn unanswered(status: SolverStatus, iterations: u32) -> Programme {
     Programme {
-        status: SolverStatus::MaxIterations,
+        status,
         x: Vec::new(),
         z: Vec::new(),
         iterations,
     }
+}
+
+/// `programme` (over `subset`, the cap last) with the multipliers of the full programme over
+/// `rows` rows and the cap: zero on the rows never added.
+fn on_every_row(mut programme: Programme, subset: &[usize], rows: usize) -> Programme {
+    let mut z = vec![0.0; rows + 1];
+    for (r, &i) in subset.iter().enumerate() {
+        z[i] = programme.z[r];
+    }
+    z[rows] = programme.z[subset.len()];
+    programme.z = z;
+    programme
 }
 
 /// The rows not yet selected that `x` violates by more than `tolerance`, where the violation
@@ -398,14 +449,9 @@ fn violated_peaks(
         .collect()
 }
 
-/// The chain programme on `subset` (and the cap, last) by the interior-point method.
-fn clarabel_on(
-    dense: &[([f64; 4], f64)],
-    subset: &[usize],
-    cap: (f64, f64),
-    c: &[f64],
-    settings: (&LimitSettings, Refinement),
-) -> Programme {
+/// The chain programme `lp` on `subset` (and the cap, last) by the interior-point method.
+fn clarabel_on(lp: &ChainLp, subset: &[usize]) -> Programme {
+    let (dense, cap) = (&lp.dense, lp.cap);
     let m = subset.len() + 1;
     let (mut ti, mut tj, mut tv, mut b) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::with_capacity(m));
@@ -424,20 +470,15 @@ fn clarabel_on(
     tj.push(3);
     tv.push(cap.0);
     b.push(cap.1);
-    run_clarabel((m, 4, 0), (ti, tj, tv), &b, c, settings, None)
+    let settings = (lp.settings, lp.refinement);
+    run_clarabel((m, 4, 0), (ti, tj, tv), &b, &lp.c, settings, None)
 }
 
-/// Replaces the multipliers of the simplex method's `programme` (over `subset`, the cap last)
-/// by the interior-point method's on the rows that hold at its vertex (within 1e-9 of the
-/// largest right-hand side); kept as they are when that programme does not solve.
-fn central_multipliers(
-    dense: &[([f64; 4], f64)],
-    subset: &[usize],
-    cap: (f64, f64),
-    c: &[f64],
-    settings: (&LimitSettings, Refinement),
-    programme: &mut Programme,
-) {
+/// Replaces the multipliers of the simplex method's `programme` (over `subset` of `lp`'s rows,
+/// the cap last) by the interior-point method's on the rows that hold at its vertex (within
+/// 1e-9 of the largest right-hand side); kept as they are when that programme does not solve.
+fn central_multipliers(lp: &ChainLp, subset: &[usize], programme: &mut Programme) {
+    let (dense, cap) = (&lp.dense, lp.cap);
     let x = &programme.x;
     let scale = subset
         .iter()
@@ -456,7 +497,7 @@ fn central_multipliers(
         return;
     }
     let rows: Vec<usize> = holding.iter().map(|&r| subset[r]).collect();
-    let central = clarabel_on(dense, &rows, cap, c, settings);
+    let central = clarabel_on(lp, &rows);
     if central.status != SolverStatus::Solved {
         return;
     }

@@ -109,28 +109,9 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         negative_effective_stress: plan.negative_effective_stress,
         ..SpencerSettings::default()
     };
-    let (problem, search) = match &plan.target {
-        Target::Surface(problem) => (problem.clone(), None),
-        Target::SimpleSearch {
-            problem,
-            grid,
-            hard_bounds,
-        } => match search::simple(
-            problem,
-            (*grid, *hard_bounds),
-            &spencer,
-            plan.candidates,
-            budget,
-        )? {
-            Ok((problem, report)) => (problem, Some(report)),
-            Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
-        },
-        Target::SectionSearch(section) => {
-            match search::section(section, &spencer, plan.candidates, budget)? {
-                Ok((problem, report)) => (problem, Some(report)),
-                Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
-            }
-        }
+    let (problem, search) = match searched(plan, &spencer, budget)? {
+        Ok(searched) => searched,
+        Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
     };
     let Answered {
         problem,
@@ -146,36 +127,8 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         (Some(theta), true) => Some(factor_curves_around(&problem.model(), theta)),
         _ => None,
     };
-    let methods = (!plan.methods.is_empty()).then(|| {
-        let model = with_strength_dropped(
-            &problem.model(),
-            &solution.tension_dropped_slices,
-            plan.negative_effective_stress,
-        );
-        let mut found =
-            methods::side_by_side(&plan.methods, &plan.interslice_function, &model, &solution);
-        // At other slice counts, strength is dropped where Spencer's state there drops it.
-        let dropping = !solution.tension_dropped_slices.is_empty();
-        let prepare = |m: &SliceModel| match dropping {
-            true => {
-                let at = solve_spencer(m, &spencer);
-                with_strength_dropped(
-                    m,
-                    &at.tension_dropped_slices,
-                    plan.negative_effective_stress,
-                )
-            }
-            false => m.clone(),
-        };
-        methods::with_accuracy(
-            &mut found,
-            &problem,
-            &plan.interslice_function,
-            &prepare,
-            (recut, budget),
-        );
-        found
-    });
+    let methods = (!plan.methods.is_empty())
+        .then(|| other_methods(plan, &spencer, &problem, &solution, recut, budget));
     let design = plan.design.map(|d| d.verdict(solution.factor_of_safety));
     Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
         problem,
@@ -187,6 +140,73 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         refinement,
         accuracy,
     })))
+}
+
+/// The surface to answer: the plan's own, or the one its search found with the search's
+/// report; `Err(stop)` when the search found none or the budget ended it.
+fn searched(
+    plan: &SlopePlan,
+    spencer: &SpencerSettings,
+    budget: &Budget,
+) -> Result<Result<(Analysed, Option<SearchReport>), Stop>, SlopeError> {
+    Ok(match &plan.target {
+        Target::Surface(problem) => Ok((problem.clone(), None)),
+        Target::SimpleSearch {
+            problem,
+            grid,
+            hard_bounds,
+        } => search::simple(
+            problem,
+            (*grid, *hard_bounds),
+            spencer,
+            plan.candidates,
+            budget,
+        )?
+        .map(|(problem, report)| (problem, Some(report))),
+        Target::SectionSearch(section) => {
+            search::section(section, spencer, plan.candidates, budget)?
+                .map(|(problem, report)| (problem, Some(report)))
+        }
+    })
+}
+/// The plan's other methods on the answered slices (strength dropped where Spencer's
+/// `solution` drops it), with their accuracy estimated on `recut` as Spencer's was.
+fn other_methods(
+    plan: &SlopePlan,
+    spencer: &SpencerSettings,
+    problem: &Analysed,
+    solution: &SpencerSolution,
+    recut: Option<Recut>,
+    budget: &Budget,
+) -> MethodFactors {
+    let model = with_strength_dropped(
+        &problem.model(),
+        &solution.tension_dropped_slices,
+        plan.negative_effective_stress,
+    );
+    let mut found =
+        methods::side_by_side(&plan.methods, &plan.interslice_function, &model, solution);
+    // At other slice counts, strength is dropped where Spencer's state there drops it.
+    let dropping = !solution.tension_dropped_slices.is_empty();
+    let prepare = |m: &SliceModel| match dropping {
+        true => {
+            let at = solve_spencer(m, spencer);
+            with_strength_dropped(
+                m,
+                &at.tension_dropped_slices,
+                plan.negative_effective_stress,
+            )
+        }
+        false => m.clone(),
+    };
+    methods::with_accuracy(
+        &mut found,
+        problem,
+        &plan.interslice_function,
+        &prepare,
+        (recut, budget),
+    );
+    found
 }
 
 /// The answered surface at the slices the plan asks for, with its solution and accuracy.

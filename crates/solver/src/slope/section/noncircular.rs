@@ -8,6 +8,7 @@
 //! back upwards by more than `REVERSE_BEND_DEG` between segments (the surface is concave
 //! upwards but for that), stays below the ground and above bedrock.
 
+use std::cell::Cell;
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
@@ -226,9 +227,14 @@ fn confirmed_factor(
     section: &Section,
     mirror: &Section,
     shape: &SlipShape,
-    (slices, seismic, min_depth): (NonZeroUsize, Seismic, f64),
+    slicing: Slicing,
     settings: &SpencerSettings,
 ) -> f64 {
+    let Slicing {
+        slices,
+        seismic,
+        min_depth,
+    } = slicing;
     let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
     let at = |n: NonZeroUsize| -> Option<f64> {
         let cut = place(section, Some(mirror), shape, n, seismic, None).ok()?;
@@ -276,14 +282,25 @@ fn polyline_factor(
     section: &Section,
     mirror: &Section,
     points: Vec<(f64, f64)>,
-    cut: (NonZeroUsize, Seismic, f64),
+    slicing: Slicing,
     settings: &SpencerSettings,
 ) -> f64 {
     let Ok(line) = Polyline::new(points) else {
         return f64::INFINITY;
     };
     let shape = SlipShape::Polyline(line);
-    confirmed_factor(section, mirror, &shape, cut, settings)
+    confirmed_factor(section, mirror, &shape, slicing, settings)
+}
+
+/// How a trial surface is cut and solved.
+#[derive(Debug, Clone, Copy)]
+struct Slicing {
+    /// Its slices (confirmed at four times as many).
+    slices: NonZeroUsize,
+    /// The seismic loading.
+    seismic: Seismic,
+    /// The least depth of a candidate (`search.min_depth`; zero: any).
+    min_depth: f64,
 }
 
 /// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
@@ -299,70 +316,174 @@ pub fn search_noncircular(
     settings: &SpencerSettings,
     budget: &Budget,
 ) -> Option<NoncircularSearch> {
-    let mirror = section.mirrored();
     // The start is solved as any answer is (with Spencer's own construction when Newton's
     // method fails: a composite circle's θ can lie beyond Newton's reach from θ = 0); trial
     // surfaces without a Newton solution are skipped rather than searched for one.
     let start_settings = *settings;
-    let settings = &SpencerSettings {
-        fallback: false,
-        ..*settings
-    };
-    let evaluations = std::cell::Cell::new(0usize);
-    // What ends the search: the budget, or a count of trial surfaces that gives the same answer
-    // whatever the machine.
-    let stop = || match budget.stop() {
-        Stop::Finished if max_evaluations.is_some_and(|m| evaluations.get() >= m) => {
-            Stop::EvaluationCap
-        }
-        stop => stop,
-    };
-    let late = || !stop().is_finished();
-    let evaluate = |points: &[(f64, f64)]| -> f64 {
-        evaluations.set(evaluations.get() + 1);
-        polyline_factor(
-            section,
-            &mirror,
-            points.to_vec(),
-            (slices, seismic, min_depth),
-            settings,
-        )
-    };
-    // Past the deadline every trial fails, so that the optimisers stop.
-    let trial = |points: &[(f64, f64)]| {
-        if late() {
-            f64::INFINITY
-        } else {
-            evaluate(points)
-        }
+    let trials = Trials {
+        section,
+        mirror: section.mirrored(),
+        slicing: Slicing {
+            slices,
+            seismic,
+            min_depth,
+        },
+        settings: SpencerSettings {
+            fallback: false,
+            ..*settings
+        },
+        budget,
+        max_evaluations,
+        evaluations: Cell::new(0),
     };
     // The start: the circle's surface resampled at the vertices.
     let n = vertices.max(3);
     let (fractions, v) = resampled(section, start, n)?;
-    let factor = |fractions: &[(f64, f64)], v: &[f64]| {
-        surface_of(section, fractions, v).map_or(f64::INFINITY, |p| trial(&p))
-    };
     let began = Instant::now();
     // The start is evaluated whatever the time, so that a search out of time still answers.
-    evaluations.set(evaluations.get() + 1);
+    trials.evaluations.set(trials.evaluations.get() + 1);
     let first = surface_of(section, &fractions, &v).map_or(f64::INFINITY, |p| {
-        polyline_factor(section, &mirror, p, (slices, seismic, 0.0), &start_settings)
+        let slicing = Slicing {
+            min_depth: 0.0,
+            ..trials.slicing
+        };
+        polyline_factor(section, &trials.mirror, p, slicing, &start_settings)
     });
     if !first.is_finite() {
         return None;
     }
-    let mut starts = vec![(fractions, v, first)];
-    if let Some(points) = best_block(section, &trial) {
-        // Its F as polished and answered: with the vertices it will be moved by.
-        let (fractions, w) = parameters(section, &refined(points, n));
-        let f = factor(&fractions, &w);
-        if f.is_finite() {
-            starts.push((fractions, w, f));
+    let mut starts = vec![Candidate {
+        fractions,
+        v,
+        factor: first,
+    }];
+    starts.extend(block_start(&trials, n));
+    let Polished {
+        best,
+        path,
+        path_ms,
+        stop,
+    } = polished(&trials, starts, first, began);
+    Some(NoncircularSearch {
+        surface: surface_of(section, &best.fractions, &best.v)?,
+        factor_of_safety: best.factor,
+        path,
+        path_ms,
+        evaluations: trials.evaluations.get(),
+        stop,
+    })
+}
+
+/// The non-circular search's trial surfaces: how each is solved, and what ends the search.
+struct Trials<'a> {
+    /// The section.
+    section: &'a Section,
+    /// The section seen from behind ([`place`]'s mirror).
+    mirror: Section,
+    /// How a trial is cut.
+    slicing: Slicing,
+    /// Spencer's settings for a trial (without the fallback construction).
+    settings: SpencerSettings,
+    /// The search's budget.
+    budget: &'a Budget,
+    /// The most trial surfaces to evaluate, if capped.
+    max_evaluations: Option<usize>,
+    /// Surfaces evaluated so far.
+    evaluations: Cell<usize>,
+}
+
+impl Trials<'_> {
+    /// What ends the search: the budget, or a count of trial surfaces that gives the same
+    /// answer whatever the machine ([`Stop::Finished`] while it may go on).
+    #[inline]
+    fn stop(&self) -> Stop {
+        match self.budget.stop() {
+            Stop::Finished
+                if self
+                    .max_evaluations
+                    .is_some_and(|m| self.evaluations.get() >= m) =>
+            {
+                Stop::EvaluationCap
+            }
+            stop => stop,
         }
     }
+
+    /// Whether the search must end.
+    #[inline]
+    fn late(&self) -> bool {
+        !self.stop().is_finished()
+    }
+
+    /// A trial surface's F, confirmed ([`polyline_factor`]); past the end every trial fails,
+    /// so that the optimisers stop.
+    #[inline]
+    fn trial(&self, points: &Points) -> f64 {
+        if self.late() {
+            f64::INFINITY
+        } else {
+            self.evaluations.set(self.evaluations.get() + 1);
+            polyline_factor(
+                self.section,
+                &self.mirror,
+                points.to_vec(),
+                self.slicing,
+                &self.settings,
+            )
+        }
+    }
+
+    /// The trial F of the surface of parameters `v` ([`surface_of`]); infinite where there is
+    /// none.
+    #[inline]
+    fn factor(&self, fractions: &[(f64, f64)], v: &[f64]) -> f64 {
+        surface_of(self.section, fractions, v).map_or(f64::INFINITY, |p| self.trial(&p))
+    }
+}
+
+/// A surface the search moves: its parameters for [`surface_of`] and its F.
+#[derive(Debug, Clone)]
+struct Candidate {
+    /// The interior vertices' fractions of the way from entry to exit.
+    fractions: Vec<(f64, f64)>,
+    /// Entry x, exit x, then the interior vertices' depths below the ground.
+    v: Vec<f64>,
+    /// Its factor of safety.
+    factor: f64,
+}
+
+/// The best block surface ([`best_block`]) as a start with `n` vertices, when its F is finite.
+fn block_start(trials: &Trials, n: usize) -> Option<Candidate> {
+    let points = best_block(trials.section, &|p: &Points| trials.trial(p))?;
+    // Its F as polished and answered: with the vertices it will be moved by.
+    let (fractions, v) = parameters(trials.section, &refined(points, n));
+    let factor = trials.factor(&fractions, &v);
+    factor.is_finite().then_some(Candidate {
+        fractions,
+        v,
+        factor,
+    })
+}
+
+/// What polishing the starts found.
+struct Polished {
+    /// The best surface.
+    best: Candidate,
+    /// The least F so far, each time it fell ([`NoncircularSearch::path`]).
+    path: Vec<f64>,
+    /// When each of `path` was reached, in milliseconds from the start of the search.
+    path_ms: Vec<f64>,
+    /// What ended the search ([`Stop::Finished`]: nothing did).
+    stop: Stop,
+}
+
+/// Each of `starts` polished ([`polish`]), the lower first, while the search may go on: the
+/// best surface, the path of F from `first` (the circle's) with the times from `began`, and
+/// what ended the search.
+fn polished(trials: &Trials, mut starts: Vec<Candidate>, first: f64, began: Instant) -> Polished {
     // The lower start first: what the time budget leaves for the other is its bonus.
-    starts.sort_by(|p, q| p.2.total_cmp(&q.2));
-    let mut best = (starts[0].0.clone(), starts[0].1.clone(), starts[0].2);
+    starts.sort_by(|p, q| p.factor.total_cmp(&q.factor));
+    let mut best = starts[0].clone();
     let mut path = vec![first];
     let mut path_ms = vec![0.0];
     let mut note = |f: f64| {
@@ -371,30 +492,37 @@ pub fn search_noncircular(
             path_ms.push(began.elapsed().as_secs_f64() * 1e3);
         }
     };
-    note(best.2);
+    note(best.factor);
     let mut stopped = Stop::Finished;
-    for (fractions, v, f) in starts {
-        if late() {
-            stopped = stop();
+    for Candidate {
+        fractions,
+        v,
+        factor,
+    } in starts
+    {
+        if trials.late() {
+            stopped = trials.stop();
             break;
         }
-        let (v, g, stopped_here) = polish(&|v| factor(&fractions, v), v, f, &stop, &mut note);
+        let factor_of = |v: &[f64]| trials.factor(&fractions, v);
+        let (v, g, stopped_here) = polish(&factor_of, v, factor, &|| trials.stop(), &mut note);
         if stopped.is_finished() {
             stopped = stopped_here;
         }
-        if g < best.2 {
-            best = (fractions, v, g);
+        if g < best.factor {
+            best = Candidate {
+                fractions,
+                v,
+                factor: g,
+            };
         }
     }
-    let (fractions, v, f) = best;
-    Some(NoncircularSearch {
-        surface: surface_of(section, &fractions, &v)?,
-        factor_of_safety: f,
+    Polished {
+        best,
         path,
         path_ms,
-        evaluations: evaluations.get(),
         stop: stopped,
-    })
+    }
 }
 
 #[cfg(test)]
