@@ -4,6 +4,7 @@
 use std::time::Duration;
 
 use thrustline_solver::slope::analysis::Noncircular;
+use thrustline_solver::slope::circles::CentreGrid;
 use thrustline_solver::slope::section::search::{CircleRegion, Radii};
 use thrustline_solver::slope::section::{
     Layer, LineLoad, Polyline, Section, SectionParts, Surcharge, TensionCrack,
@@ -108,27 +109,28 @@ pub fn search_region(
         coordinate("search.y_max", search.y_max)?,
     ];
     let hard = bounds.iter().any(Option::is_some);
-    let region = CircleRegion {
-        x_min: bounds[0].unwrap_or(automatic.x_min),
-        x_max: bounds[1].unwrap_or(automatic.x_max),
-        y_min: bounds[2].unwrap_or(automatic.y_min),
-        y_max: bounds[3].unwrap_or(automatic.y_max),
+    let around = automatic.centres;
+    let centres = CentreGrid {
+        x_min: bounds[0].unwrap_or(around.x_min),
+        x_max: bounds[1].unwrap_or(around.x_max),
+        y_min: bounds[2].unwrap_or(around.y_min),
+        y_max: bounds[3].unwrap_or(around.y_max),
         nx,
         ny,
-        radii,
     };
-    if region.x_max <= region.x_min {
+    if centres.x_max <= centres.x_min {
         return Err(ApiError::invalid(
             "search.x_max",
-            format!("must be greater than search.x_min ({})", region.x_min),
+            format!("must be greater than search.x_min ({})", centres.x_min),
         ));
     }
-    if region.y_max <= region.y_min {
+    if centres.y_max <= centres.y_min {
         return Err(ApiError::invalid(
             "search.y_max",
-            format!("must be greater than search.y_min ({})", region.y_min),
+            format!("must be greater than search.y_min ({})", centres.y_min),
         ));
     }
+    let region = CircleRegion { centres, radii };
     Ok((region, hard, noncircular))
 }
 

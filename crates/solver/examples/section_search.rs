@@ -53,7 +53,7 @@ fn main() {
         let start = Instant::now();
         let found = search_circles(
             &section,
-            CircleRegion::automatic(&section, 50, 50, 10),
+            &CircleRegion::automatic(&section, 50, 50, 10),
             false,
             NonZeroUsize::new(50).unwrap(),
             Seismic::default(),

@@ -60,7 +60,7 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
     let slices = NonZeroUsize::new(50).unwrap();
     let circle = search_circles(
         &section,
-        CircleRegion::automatic(&section, 21, 21, 10),
+        &CircleRegion::automatic(&section, 21, 21, 10),
         false,
         slices,
         Seismic::default(),

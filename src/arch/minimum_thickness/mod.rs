@@ -217,21 +217,7 @@ pub fn response(
         Thinnest::Circle(_) => ("1e-6·R", "2·radius"),
         Thinnest::Profile { .. } => ("1e-6·span/2", "the span"),
     };
-    let none = MinimumThicknessResponse {
-        outcome: MinimumThicknessOutcomeDto::SolverFailed,
-        thickness: None,
-        thickness_to_radius: None,
-        thickness_to_span: None,
-        thickness_below: None,
-        geometric_factor_of_safety: None,
-        rupture_angle_deg: None,
-        hinges: Vec::new(),
-        active_constraints: Vec::new(),
-        evaluations: result.evaluations,
-        iterations: result.iterations,
-        solve_time_ms: result.solve_time_secs * 1e3,
-        detail: String::new(),
-    };
+    let none = without_thickness(result);
     // A search the budget ended is refused before it is answered ([`solve`]).
     let Ok(outcome) = &result.outcome else {
         return MinimumThicknessResponse {
@@ -321,4 +307,24 @@ fn found(
     ),
     ..none
 }
+}
+
+/// The answer without a thickness: the search's cost, every result empty (each outcome fills in
+/// what it has).
+fn without_thickness(result: &MinimumThickness) -> MinimumThicknessResponse {
+    MinimumThicknessResponse {
+        outcome: MinimumThicknessOutcomeDto::SolverFailed,
+        thickness: None,
+        thickness_to_radius: None,
+        thickness_to_span: None,
+        thickness_below: None,
+        geometric_factor_of_safety: None,
+        rupture_angle_deg: None,
+        hinges: Vec::new(),
+        active_constraints: Vec::new(),
+        evaluations: result.evaluations,
+        iterations: result.iterations,
+        solve_time_ms: result.solve_time_secs * 1e3,
+        detail: String::new(),
+    }
 }

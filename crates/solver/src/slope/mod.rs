@@ -16,6 +16,7 @@
 
 pub mod accuracy;
 pub mod analysis;
+pub mod circles;
 pub mod design;
 mod error;
 pub mod geometry;

@@ -1,9 +1,7 @@
-//! The critical slip circle: the circle of least Spencer factor of safety (Spencer 1967, §5 of
-//! the thesis). A grid over centres — Spencer's own scheme, which also gives the contour map —
-//! followed by a derivative-free local refinement (Nelder & Mead 1965) from the best few grid
-//! points, since F over centres is non-smooth and full of shallow local minima (the thesis found
-//! fmincon trapped in them). When the best centre lies on the edge of the grid, the grid is
-//! moved there and the search repeated.
+//! The simple slope's critical circle (Spencer 1967, §5 of the thesis): the circles through
+//! the lower end of their slip surface, one for each centre, searched by the one circle search
+//! ([`super::circles`]); when the lower end is searched too, the refinement moves it with the
+//! centre.
 //!
 //! Centres are measured from the lower end of the slip surface, as in [`super::geometry`].
 //! Grid points whose circle cuts no slip mass, or whose equations have no solution, have no F.
@@ -13,6 +11,8 @@ use std::num::NonZeroUsize;
 
 use rayon::prelude::*;
 
+use super::circles::{search, CentreGrid, CentreResult, CircleFamily, Start, F_RESOLUTION};
+pub use super::circles::{CircleSearch, FactorGrid, SearchStatus};
 use super::error::SlopeError;
 use super::geometry::{Embankment, SlipCircle};
 use crate::budget::{Budget, Stop};
@@ -22,22 +22,8 @@ use super::section::trial::circle_outcome;
 use super::section::{check_circle, Section, SectionProblem, SlipShape};
 use super::spencer::{Seismic, Soil, SpencerSettings};
 
-/// The region of centres searched and the grid laid over it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SearchGrid {
-    /// Smallest centre X (from the lower end).
-    pub x_min: f64,
-    /// Largest centre X.
-    pub x_max: f64,
-    /// Smallest centre Y (above the lower end).
-    pub y_min: f64,
-    /// Largest centre Y.
-    pub y_max: f64,
-    /// Grid points along X (≥ 2).
-    pub nx: usize,
-    /// Grid points along Y (≥ 2).
-    pub ny: usize,
-}
+/// The region of centres searched and the grid laid over it (centres from the lower end).
+pub type SearchGrid = CentreGrid;
 
 impl SearchGrid {
     /// Bounds that hold the critical circle of ordinary embankments: around the perpendicular
@@ -56,31 +42,6 @@ impl SearchGrid {
             ny: 21,
         }
     }
-
-    fn xs(&self) -> Vec<f64> {
-        spaced(self.x_min, self.x_max, self.nx)
-    }
-
-    fn ys(&self) -> Vec<f64> {
-        spaced(self.y_min, self.y_max, self.ny)
-    }
-
-    fn cell(&self) -> (f64, f64) {
-        (
-            (self.x_max - self.x_min) / (self.nx - 1) as f64,
-            (self.y_max - self.y_min) / (self.ny - 1) as f64,
-        )
-    }
-}
-
-/// `n` values evenly from `a` to `b` (just `a` when n < 2).
-pub(crate) fn spaced(a: f64, b: f64, n: usize) -> Vec<f64> {
-    if n < 2 {
-        return vec![a];
-    }
-    (0..n)
-        .map(|i| a + (b - a) * i as f64 / (n - 1) as f64)
-        .collect()
 }
 
 /// Everything about the embankment except the circle.
@@ -162,54 +123,8 @@ impl Default for SearchSettings {
     }
 }
 
-/// F over the grid of centres, for contour plots.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FactorGrid {
-    /// Centre X of the columns.
-    pub xs: Vec<f64>,
-    /// Centre Y of the rows.
-    pub ys: Vec<f64>,
-    /// F at (xs[i], ys[j]) in `factors[j][i]`; `None` where the centre gives no valid circle.
-    pub factors: Vec<Vec<Option<f64>>>,
-}
-
-/// What a search found (how it ended is its [`Stop`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SearchStatus {
-    /// The critical circle was found.
-    Found,
-    /// No centre of the region gives a circle with a solution.
-    NoValidCircle,
-}
-
 /// The critical circle found.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SearchSolution {
-    /// What the search found.
-    pub status: SearchStatus,
-    /// How it ended: [`Stop::Finished`], or the budget's reason when the budget cut it short
-    /// (its answer is then not to be trusted).
-    pub stop: Stop,
-    /// The critical circle; `None` when no grid point gives a valid circle.
-    pub circle: Option<SlipCircle>,
-    /// Its factor of safety.
-    pub factor_of_safety: Option<f64>,
-    /// The last grid evaluated (the one around the critical circle).
-    pub grid: FactorGrid,
-    /// Spencer solutions computed (grid and refinement).
-    pub evaluations: usize,
-    /// Times the grid was moved because the minimum lay on its edge.
-    pub regrids: usize,
-    /// Whether the minimum still lies on the edge of the last grid (the true minimum may lie
-    /// outside the region searched).
-    pub is_on_edge: bool,
-    /// Grid circles of the last grid that cut a mass but have no physical Spencer solution.
-    pub unsolved: usize,
-    /// The least Bishop F among those (an indication of what they would give).
-    pub unsolved_bishop_minimum: Option<f64>,
-    /// Whether such circles lie at or next to the grid point of the minimum.
-    pub unsolved_near_minimum: bool,
-}
+pub type SearchSolution = CircleSearch<SlipCircle>;
 
 /// Spencer's F for one circle, or `None` when the circle is invalid or has no solution.
 pub fn factor_of_safety(
@@ -253,104 +168,10 @@ fn outcome(
     })
 }
 
-/// The relative spread of F over the refinement's simplex below which it stops: what F is
-/// computed to (the equations solved to rounding, 1e-16 relative, and the conditioning of a
-/// circle's root on top), so a smaller simplex would only follow F's rounding.
-pub(crate) const F_RESOLUTION: f64 = 1e-13;
-
 /// Whether the circle's radius is within the limit.
 fn within_reach(circle: SlipCircle, max_radius: Option<f64>) -> bool {
     // (x² + y²) against m² rather than hypot: this is asked of every circle of a grid.
     max_radius.is_none_or(|m| circle.x * circle.x + circle.y * circle.y <= m * m)
-}
-
-/// F over the grid, and the outcome of each point: `Err(Some(bishop))` where unsolved.
-type Outcomes = Vec<Vec<Result<f64, Option<Option<f64>>>>>;
-
-fn evaluate_grid(
-    problem: &SearchProblem,
-    frames: (&Section, &Section),
-    grid: &SearchGrid,
-    settings: &SearchSettings,
-    budget: &Budget,
-) -> (FactorGrid, Outcomes) {
-    let (xs, ys) = (grid.xs(), grid.ys());
-    let outcomes: Outcomes = ys
-        .par_iter()
-        .map(|&y| {
-            // Each circle's F starts the next one's search for Bishop's F along the row.
-            let near = Cell::new(None);
-            xs.iter()
-                .map(|&x| {
-                    if budget.is_spent() {
-                        return Err(None);
-                    }
-                    let circle = SlipCircle {
-                        x,
-                        y,
-                        lower_end_factor: problem.lower_end_factor,
-                    };
-                    if !within_reach(circle, settings.max_radius) {
-                        return Err(None);
-                    }
-                    outcome(
-                        problem,
-                        frames,
-                        circle,
-                        (&settings.spencer, settings.min_depth),
-                        &near,
-                    )
-                })
-                .collect()
-        })
-        .collect();
-    let factors = outcomes
-        .iter()
-        .map(|row| row.iter().map(|o| o.as_ref().ok().copied()).collect())
-        .collect();
-    (FactorGrid { xs, ys, factors }, outcomes)
-}
-
-/// Unsolved circles of a grid: how many, the least Bishop F among them, and whether any lies
-/// at or next to grid point (i, j).
-pub(crate) fn unsolved_summary(
-    outcomes: &Outcomes,
-    (i, j): (usize, usize),
-) -> (usize, Option<f64>, bool) {
-    let mut count = 0;
-    let mut least: Option<f64> = None;
-    for row in outcomes {
-        for o in row {
-            if let Err(Some(bishop)) = o {
-                count += 1;
-                if let Some(b) = bishop {
-                    least = Some(least.map_or(*b, |l: f64| l.min(*b)));
-                }
-            }
-        }
-    }
-    let near = (j.saturating_sub(1)..=(j + 1).min(outcomes.len().saturating_sub(1))).any(|jj| {
-        let row = &outcomes[jj];
-        (i.saturating_sub(1)..=(i + 1).min(row.len().saturating_sub(1)))
-            .any(|ii| matches!(row[ii], Err(Some(_))))
-    });
-    (count, least, near)
-}
-
-/// The grid points that have an F, least F first: (F, i, j).
-fn ranked(factors: &FactorGrid) -> Vec<(f64, usize, usize)> {
-    let mut points: Vec<(f64, usize, usize)> = factors
-        .factors
-        .iter()
-        .enumerate()
-        .flat_map(|(j, row)| {
-            row.iter()
-                .enumerate()
-                .filter_map(move |(i, f)| f.map(|f| (f, i, j)))
-        })
-        .collect();
-    points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    points
 }
 
 /// A grid of the same size centred on the centre `v` (kept above the lower end).
@@ -372,14 +193,18 @@ fn recentred(grid: SearchGrid, v: &[f64]) -> SearchGrid {
 /// Nelder–Mead from grid point (i, j): the centre at the grid's lower-end factor, then, when it
 /// is searched too, the lower end with it.
 fn refine_from(
-    problem: &SearchProblem,
-    frames: (&Section, &Section),
+    family: &ThroughLowerEnd,
     grid: &SearchGrid,
     factors: &FactorGrid,
-    (i, j): (usize, usize),
-    settings: &SearchSettings,
-    budget: &Budget,
+    start: Start,
 ) -> Minimum {
+    let ThroughLowerEnd {
+        problem,
+        frames,
+        settings,
+        budget,
+    } = *family;
+    let (i, j) = (start.i, start.j);
     let (dx, dy) = grid.cell();
     let scale = dx.abs().max(dy.abs());
     let circle_at = |v: &[f64]| SlipCircle {
@@ -447,6 +272,101 @@ fn refine_from(
     }
 }
 
+/// The simple slope's circles: through the lower end of their slip surface, one for each centre
+/// (measured from there), the lower end moved by the refinement when it is searched too.
+struct ThroughLowerEnd<'a> {
+    problem: &'a SearchProblem,
+    /// The embankment as a section and seen from behind, built once.
+    frames: (&'a Section, &'a Section),
+    settings: &'a SearchSettings,
+    budget: &'a Budget,
+}
+
+impl CircleFamily for ThroughLowerEnd<'_> {
+    type Circle = SlipCircle;
+
+    fn budget(&self) -> &Budget {
+        self.budget
+    }
+
+    fn starts(&self) -> usize {
+        self.settings.starts
+    }
+
+    fn row(&self, xs: &[f64], y: f64) -> Vec<CentreResult> {
+        // Each circle's F starts the next one's search for Bishop's F along the row.
+        let near = Cell::new(None);
+        xs.iter()
+            .map(|&x| {
+                if self.budget.is_spent() {
+                    return CentreResult::default();
+                }
+                let circle = SlipCircle {
+                    x,
+                    y,
+                    lower_end_factor: self.problem.lower_end_factor,
+                };
+                if !within_reach(circle, self.settings.max_radius) {
+                    return CentreResult::default();
+                }
+                let settings = (&self.settings.spencer, self.settings.min_depth);
+                match outcome(self.problem, self.frames, circle, settings, &near) {
+                    Ok(f) => CentreResult {
+                        best: Some((f, 0.0)),
+                        ..CentreResult::default()
+                    },
+                    Err(None) => CentreResult::default(),
+                    Err(Some(bishop)) => CentreResult {
+                        best: None,
+                        unsolved: 1,
+                        bishop,
+                    },
+                }
+            })
+            .collect()
+    }
+
+    fn grid_evaluations(&self, xs: &[f64], ys: &[f64]) -> usize {
+        // Every centre counts, evaluated or not (the budget, the radius limit).
+        xs.len() * ys.len()
+    }
+
+    fn refine(&self, grid: &SearchGrid, starts: &[Start], factors: &FactorGrid) -> Vec<Minimum> {
+        starts
+            .par_iter()
+            .map(|&start| refine_from(self, grid, factors, start))
+            .collect()
+    }
+
+    fn accepts(&self, refined: &Minimum, _f0: f64) -> bool {
+        refined.value.is_finite()
+    }
+
+    fn grid_point(&self, factors: &FactorGrid, start: Start) -> Vec<f64> {
+        vec![factors.xs[start.i], factors.ys[start.j]]
+    }
+
+    fn is_on_edge(&self, grid: &SearchGrid, (i, j): (usize, usize), v: &[f64]) -> bool {
+        grid.is_edge_point((i, j)) || grid.is_outside(v)
+    }
+
+    fn may_move(&self, regrids: usize) -> bool {
+        !self.settings.hard_bounds && regrids < self.settings.max_regrids
+    }
+
+    fn moved(&self, grid: &SearchGrid, v: &[f64]) -> SearchGrid {
+        recentred(*grid, v)
+    }
+
+    fn circle(&self, v: &[f64]) -> SlipCircle {
+        SlipCircle {
+            x: v[0],
+            y: v[1],
+            lower_end_factor: v.get(2).copied().unwrap_or(self.problem.lower_end_factor),
+        }
+    }
+}
+
 /// A search that had no circle to evaluate.
 fn without_circles(grid: &SearchGrid) -> SearchSolution {
     SearchSolution {
@@ -459,6 +379,7 @@ fn without_circles(grid: &SearchGrid) -> SearchSolution {
             ys: grid.ys(),
             factors: vec![vec![None; grid.nx]; grid.ny],
         },
+        centres: *grid,
         evaluations: 0,
         regrids: 0,
         is_on_edge: false,
@@ -482,90 +403,11 @@ pub fn search_critical_circle(
         return without_circles(&grid);
     };
     let mirror = section.mirrored();
-    let frames = (&section, &mirror);
-    let mut grid = grid;
-    let mut evaluations = 0;
-    let mut regrids = 0;
-    loop {
-        let (factors, outcomes) = evaluate_grid(problem, frames, &grid, settings, budget);
-        evaluations += grid.nx * grid.ny;
-        let points = ranked(&factors);
-        let Some(&(_, bi, bj)) = points.first() else {
-            let (unsolved, unsolved_bishop_minimum, _) = unsolved_summary(&outcomes, (0, 0));
-            return SearchSolution {
-                status: SearchStatus::NoValidCircle,
-                stop: budget.stop(),
-                circle: None,
-                factor_of_safety: None,
-                grid: factors,
-                evaluations,
-                regrids,
-                is_on_edge: false,
-                unsolved,
-                unsolved_bishop_minimum,
-                unsolved_near_minimum: false,
-            };
-        };
-        // Refine from the best few grid points that are not neighbours of each other.
-        let mut starts: Vec<(usize, usize)> = Vec::new();
-        for &(_, i, j) in &points {
-            if starts.len() >= settings.starts {
-                break;
-            }
-            if starts
-                .iter()
-                .all(|&(a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
-            {
-                starts.push((i, j));
-            }
-        }
-        let refined: Vec<Minimum> = starts
-            .par_iter()
-            .map(|&start| refine_from(problem, frames, &grid, &factors, start, settings, budget))
-            .collect();
-        evaluations += refined.iter().map(|r| r.evaluations).sum::<usize>();
-        let best = refined
-            .into_iter()
-            .filter(|r| r.value.is_finite())
-            .min_by(|a, b| a.value.total_cmp(&b.value));
-        let (f, v) = match best {
-            Some(m) => (m.value, m.point),
-            None => {
-                let f = points[0].0;
-                (f, vec![factors.xs[bi], factors.ys[bj]])
-            }
-        };
-        let on_edge = bi == 0 || bj == 0 || bi + 1 == grid.nx || bj + 1 == grid.ny;
-        let outside =
-            v[0] < grid.x_min || v[0] > grid.x_max || v[1] < grid.y_min || v[1] > grid.y_max;
-        let circle = SlipCircle {
-            x: v[0],
-            y: v[1],
-            lower_end_factor: v.get(2).copied().unwrap_or(problem.lower_end_factor),
-        };
-        if (on_edge || outside)
-            && !settings.hard_bounds
-            && regrids < settings.max_regrids
-            && !budget.is_spent()
-        {
-            grid = recentred(grid, &v);
-            regrids += 1;
-            continue;
-        }
-        let (unsolved, unsolved_bishop_minimum, unsolved_near_minimum) =
-            unsolved_summary(&outcomes, (bi, bj));
-        return SearchSolution {
-            status: SearchStatus::Found,
-            stop: budget.stop(),
-            circle: Some(circle),
-            factor_of_safety: Some(f),
-            grid: factors,
-            evaluations,
-            regrids,
-            is_on_edge: on_edge || outside,
-            unsolved,
-            unsolved_bishop_minimum,
-            unsolved_near_minimum,
-        };
-    }
+    let family = ThroughLowerEnd {
+        problem,
+        frames: (&section, &mirror),
+        settings,
+        budget,
+    };
+    search(&family, grid)
 }

@@ -79,7 +79,7 @@ pub(super) fn section(
     };
     let found = search_circles(
         &plan.section,
-        plan.region.clone(),
+        &plan.region,
         plan.hard,
         plan.slices,
         plan.seismic,

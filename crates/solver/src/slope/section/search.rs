@@ -14,9 +14,11 @@ use rayon::prelude::*;
 use super::model::Section;
 use super::shape::SlipShape;
 use super::trial::{trial, Outcome};
-use crate::budget::{Budget, Stop};
-use crate::numerics::nelder_mead_to;
-use crate::slope::search::{spaced, FactorGrid, SearchStatus, F_RESOLUTION};
+use crate::budget::Budget;
+use crate::numerics::{nelder_mead_to, Minimum};
+use crate::slope::circles::{
+    self, search, spaced, CentreGrid, CentreResult, CircleFamily, FactorGrid, Start, F_RESOLUTION,
+};
 use crate::slope::spencer::{Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
@@ -44,18 +46,8 @@ pub enum Radii {
 /// The region of centres and the radii.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CircleRegion {
-    /// Smallest centre x.
-    pub x_min: f64,
-    /// Largest centre x.
-    pub x_max: f64,
-    /// Smallest centre y.
-    pub y_min: f64,
-    /// Largest centre y.
-    pub y_max: f64,
-    /// Grid points along x (≥ 2).
-    pub nx: usize,
-    /// Grid points along y (≥ 2).
-    pub ny: usize,
+    /// The grid of centres.
+    pub centres: CentreGrid,
     /// Radii at each centre.
     pub radii: Radii,
 }
@@ -87,36 +79,22 @@ fn relief(section: &Section) -> (f64, f64, f64, f64) {
 }
 
 impl CircleRegion {
-    /// The spacing of the grid's centres along x and y.
-    fn cell(&self) -> (f64, f64) {
-        (
-            (self.x_max - self.x_min) / (self.nx.max(2) - 1) as f64,
-            (self.y_max - self.y_min) / (self.ny.max(2) - 1) as f64,
-        )
-    }
-
     /// Centres over the sloping part of the ground widened by half its size each way, from
     /// half-way up the relief to two sizes above its top; radii chosen per centre.
     pub fn automatic(section: &Section, nx: usize, ny: usize, nr: usize) -> Self {
         let (x_lo, x_hi, y_low, y_top) = relief(section);
         let size = (x_hi - x_lo).max(y_top - y_low).max(1e-6);
         Self {
-            x_min: x_lo - 0.5 * size,
-            x_max: x_hi + 0.5 * size,
-            y_min: y_low + 0.5 * (y_top - y_low).max(0.1 * size),
-            y_max: y_top + 2.0 * size,
-            nx,
-            ny,
+            centres: CentreGrid {
+                x_min: x_lo - 0.5 * size,
+                x_max: x_hi + 0.5 * size,
+                y_min: y_low + 0.5 * (y_top - y_low).max(0.1 * size),
+                y_max: y_top + 2.0 * size,
+                nx,
+                ny,
+            },
             radii: Radii::Automatic { count: nr },
         }
-    }
-
-    fn xs(&self) -> Vec<f64> {
-        spaced(self.x_min, self.x_max, self.nx)
-    }
-
-    fn ys(&self) -> Vec<f64> {
-        spaced(self.y_min, self.y_max, self.ny)
     }
 }
 
@@ -152,36 +130,8 @@ impl Default for CircleSearchSettings {
     }
 }
 
-/// What the search found.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CircleSearch {
-    /// What it found.
-    pub status: SearchStatus,
-    /// How it ended: [`Stop::Finished`], or the budget's reason when the budget ended it (its
-    /// answer is then not to be trusted).
-    pub stop: Stop,
-    /// The critical circle: centre and radius.
-    pub circle: Option<((f64, f64), f64)>,
-    /// Its factor of safety.
-    pub factor_of_safety: Option<f64>,
-    /// The least F over the radii at each centre of the last grid (absolute coordinates).
-    pub grid: FactorGrid,
-    /// The region of the last grid.
-    pub region: CircleRegion,
-    /// Circles evaluated.
-    pub evaluations: usize,
-    /// Circles that cut a sliding mass but whose equations have no solution.
-    pub unsolved: usize,
-    /// The least Bishop F among the unsolved circles (an indication of what they would give).
-    pub unsolved_bishop_minimum: Option<f64>,
-    /// Whether unsolved circles lie at or next to the grid centre of the minimum.
-    pub unsolved_near_minimum: bool,
-    /// Times automatic bounds moved.
-    pub regrids: usize,
-    /// Whether the minimum lies on the edge of the region (given bounds: the answer is the
-    /// least F inside them; the true minimum may lie outside).
-    pub is_on_edge: bool,
-}
+/// What the search found: the critical circle as its centre and radius.
+pub type CircleSearch = circles::CircleSearch<((f64, f64), f64)>;
 
 struct Evaluator<'a> {
     section: &'a Section,
@@ -263,46 +213,45 @@ impl Evaluator<'_> {
 }
 
 impl Evaluator<'_> {
-    /// The least F over the radii at each centre of the grid `xs` × `ys` (rows by y).
-    fn grid(&self, radii: &Radii, xs: &[f64], ys: &[f64]) -> Vec<Vec<CentreResult>> {
-        ys.par_iter()
-            .map(|&y| {
-                // Each circle's F starts the search for Bishop's F of the circle of the same
-                // radius index at the next centre along the row (its nearest neighbour), or,
-                // before there is one, of the next radius.
-                let mut near: Vec<Option<f64>> = Vec::new();
-                let mut last = None;
-                xs.iter()
-                    .map(|&x| {
-                        let mut best: Option<(f64, f64)> = None;
-                        let mut unsolved = 0;
-                        let mut bishop: Option<f64> = None;
-                        for (k, r) in self.radii(radii, (x, y)).into_iter().enumerate() {
-                            if self.is_late() {
-                                break;
-                            }
-                            if near.len() <= k {
-                                near.resize(k + 1, None);
-                            }
-                            let outcome = self.factor((x, y), r, near[k].or(last));
-                            if let Ok(s) = &outcome {
-                                (near[k], last) =
-                                    (Some(s.factor_of_safety), Some(s.factor_of_safety));
-                            }
-                            match outcome.map(|s| s.factor_of_safety) {
-                                Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
-                                Ok(_) | Err(None) => {}
-                                Err(Some(b)) => {
-                                    unsolved += 1;
-                                    if let Some(b) = b {
-                                        bishop = Some(bishop.map_or(b, |l| l.min(b)));
-                                    }
-                                }
+    /// The least F over the radii at each centre of the row at `y` along `xs`.
+    fn row(&self, radii: &Radii, xs: &[f64], y: f64) -> Vec<CentreResult> {
+        // Each circle's F starts the search for Bishop's F of the circle of the same radius
+        // index at the next centre along the row (its nearest neighbour), or, before there is
+        // one, of the next radius.
+        let mut near: Vec<Option<f64>> = Vec::new();
+        let mut last = None;
+        xs.iter()
+            .map(|&x| {
+                let mut best: Option<(f64, f64)> = None;
+                let mut unsolved = 0;
+                let mut bishop: Option<f64> = None;
+                for (k, r) in self.radii(radii, (x, y)).into_iter().enumerate() {
+                    if self.is_late() {
+                        break;
+                    }
+                    if near.len() <= k {
+                        near.resize(k + 1, None);
+                    }
+                    let outcome = self.factor((x, y), r, near[k].or(last));
+                    if let Ok(s) = &outcome {
+                        (near[k], last) = (Some(s.factor_of_safety), Some(s.factor_of_safety));
+                    }
+                    match outcome.map(|s| s.factor_of_safety) {
+                        Ok(f) if best.is_none_or(|b| f < b.0) => best = Some((f, r)),
+                        Ok(_) | Err(None) => {}
+                        Err(Some(b)) => {
+                            unsolved += 1;
+                            if let Some(b) = b {
+                                bishop = Some(bishop.map_or(b, |l| l.min(b)));
                             }
                         }
-                        (best, unsolved, bishop)
-                    })
-                    .collect()
+                    }
+                }
+                CentreResult {
+                    best,
+                    unsolved,
+                    bishop,
+                }
             })
             .collect()
     }
@@ -311,19 +260,20 @@ impl Evaluator<'_> {
     /// its radii: each start's least F, its point and its evaluations.
     fn refine(
         &self,
-        region: &CircleRegion,
-        starts: &[(f64, usize, usize)],
+        region: (&CentreGrid, &Radii),
+        starts: &[Start],
         (xs, ys): (&[f64], &[f64]),
         settings: &CircleSearchSettings,
-    ) -> Vec<(f64, Vec<f64>, usize)> {
-        let (dx, dy) = region.cell();
+    ) -> Vec<Minimum> {
+        let (centres, radii) = region;
+        let (dx, dy) = centres.cell();
         let inside = |v: &[f64]| {
-            v[0] >= region.x_min
-                && v[0] <= region.x_max
-                && v[1] >= region.y_min
-                && v[1] <= region.y_max
+            v[0] >= centres.x_min
+                && v[0] <= centres.x_max
+                && v[1] >= centres.y_min
+                && v[1] <= centres.y_max
         };
-        let radius_allowed = |v: &[f64]| match &region.radii {
+        let radius_allowed = |v: &[f64]| match radii {
             Radii::Range { min, max, .. } => v[2] >= *min && v[2] <= *max,
             Radii::Tangent(ys) => {
                 let below: Vec<f64> = ys.iter().copied().filter(|&y| y < v[1]).collect();
@@ -338,7 +288,7 @@ impl Evaluator<'_> {
         };
         starts
             .par_iter()
-            .map(|&(r, i, j)| {
+            .map(|&Start { radius: r, i, j }| {
                 // The last F found starts the next circle's search for Bishop's F.
                 let near = std::cell::Cell::new(None);
                 let objective = |v: &[f64]| {
@@ -355,63 +305,15 @@ impl Evaluator<'_> {
                     }
                 };
                 let scale = dx.abs().max(dy.abs()).max(r);
-                let m = nelder_mead_to(
+                nelder_mead_to(
                     objective,
                     &[xs[i], ys[j], r],
                     &[0.5 * dx, 0.5 * dy, 0.05 * r],
                     (1e-9 * scale, F_RESOLUTION),
                     settings.max_refine_evaluations,
-                );
-                (m.value, m.point, m.evaluations)
+                )
             })
             .collect()
-    }
-}
-
-/// A grid's results summed up.
-struct GridSummary {
-    /// F over the centres.
-    grid: FactorGrid,
-    /// Circles that cut a mass without a solution.
-    unsolved: usize,
-    /// The least Bishop F among them.
-    unsolved_bishop_minimum: Option<f64>,
-    /// The centres that have an F, least first: (F, R, i, j).
-    points: Vec<(f64, f64, usize, usize)>,
-}
-
-/// A grid's results summed up: F over the centres, the unsolved circles, the least Bishop F
-/// among them, and the centres that have an F, least first: (F, R, i, j).
-fn summarise(results: &[Vec<CentreResult>], xs: &[f64], ys: &[f64]) -> GridSummary {
-    let unsolved: usize = results.iter().flatten().map(|r| r.1).sum();
-    let unsolved_bishop_minimum = results
-        .iter()
-        .flatten()
-        .filter_map(|r| r.2)
-        .reduce(f64::min);
-    let grid = FactorGrid {
-        xs: xs.to_vec(),
-        ys: ys.to_vec(),
-        factors: results
-            .iter()
-            .map(|row| row.iter().map(|r| r.0.map(|b| b.0)).collect())
-            .collect(),
-    };
-    let mut points: Vec<(f64, f64, usize, usize)> = results
-        .iter()
-        .enumerate()
-        .flat_map(|(j, row)| {
-            row.iter()
-                .enumerate()
-                .filter_map(move |(i, r)| r.0.map(|(f, radius)| (f, radius, i, j)))
-        })
-        .collect();
-    points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    GridSummary {
-        grid,
-        unsolved,
-        unsolved_bishop_minimum,
-        points,
     }
 }
 
@@ -448,132 +350,106 @@ impl<'a> Evaluator<'a> {
 
 /// Whether the best grid point (i, j) of an nx × ny grid lies on its edge, or the refined
 /// centre `v` on the region's bounds (to 1e-6 of a cell).
-fn is_on_edge(
-    region: &CircleRegion,
-    (bi, bj): (usize, usize),
-    (nx, ny): (usize, usize),
-    v: &[f64],
-) -> bool {
+fn is_on_edge(region: &CentreGrid, (bi, bj): (usize, usize), v: &[f64]) -> bool {
     let (dx, dy) = region.cell();
     let tolerance = 1e-6 * dx.abs().max(dy.abs());
-    bi == 0
-        || bj == 0
-        || bi + 1 == nx
-        || bj + 1 == ny
+    region.is_edge_point((bi, bj))
         || v[0] - region.x_min <= tolerance
         || region.x_max - v[0] <= tolerance
         || v[1] - region.y_min <= tolerance
         || region.y_max - v[1] <= tolerance
 }
 
-/// Up to `count` grid points (R, i, j) from `points` (sorted by F), no two of them neighbours.
-fn distinct_starts(points: &[(f64, f64, usize, usize)], count: usize) -> Vec<(f64, usize, usize)> {
-    let mut starts: Vec<(f64, usize, usize)> = Vec::new();
-    for &(_, r, i, j) in points {
-        if starts.len() >= count {
-            break;
-        }
-        if starts
-            .iter()
-            .all(|&(_, a, b)| a.abs_diff(i) > 1 || b.abs_diff(j) > 1)
-        {
-            starts.push((r, i, j));
-        }
-    }
-    starts
+/// A section's circles: several radii at each centre (a range, tangents, or chosen from the
+/// section), refined over (x, y, R).
+struct SeveralRadii<'a> {
+    evaluator: Evaluator<'a>,
+    radii: &'a Radii,
+    hard: bool,
+    settings: &'a CircleSearchSettings,
 }
 
-/// The least F over the radii at one centre: (F, R), the number of unsolved circles and the
-/// least Bishop F among them.
-type CentreResult = (Option<(f64, f64)>, usize, Option<f64>);
+impl CircleFamily for SeveralRadii<'_> {
+    type Circle = ((f64, f64), f64);
+
+    fn budget(&self) -> &Budget {
+        self.evaluator.budget
+    }
+
+    fn starts(&self) -> usize {
+        self.settings.starts
+    }
+
+    fn row(&self, xs: &[f64], y: f64) -> Vec<CentreResult> {
+        self.evaluator.row(self.radii, xs, y)
+    }
+
+    fn grid_evaluations(&self, xs: &[f64], ys: &[f64]) -> usize {
+        xs.iter()
+            .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
+            .map(|c| self.evaluator.radii(self.radii, c).len())
+            .sum::<usize>()
+    }
+
+    fn refine(&self, centres: &CentreGrid, starts: &[Start], factors: &FactorGrid) -> Vec<Minimum> {
+        let grid = (factors.xs.as_slice(), factors.ys.as_slice());
+        self.evaluator
+            .refine((centres, self.radii), starts, grid, self.settings)
+    }
+
+    fn accepts(&self, refined: &Minimum, f0: f64) -> bool {
+        refined.value.is_finite() && refined.value <= f0
+    }
+
+    fn grid_point(&self, factors: &FactorGrid, start: Start) -> Vec<f64> {
+        vec![factors.xs[start.i], factors.ys[start.j], start.radius]
+    }
+
+    fn is_on_edge(&self, centres: &CentreGrid, point: (usize, usize), v: &[f64]) -> bool {
+        is_on_edge(centres, point, v)
+    }
+
+    fn may_move(&self, regrids: usize) -> bool {
+        !self.hard && regrids < self.settings.max_regrids
+    }
+
+    fn moved(&self, centres: &CentreGrid, v: &[f64]) -> CentreGrid {
+        // Centre a region of the same size on the best point found.
+        let (half_x, half_y) = (
+            0.5 * (centres.x_max - centres.x_min),
+            0.5 * (centres.y_max - centres.y_min),
+        );
+        CentreGrid {
+            x_min: v[0] - half_x,
+            x_max: v[0] + half_x,
+            y_min: v[1] - half_y,
+            y_max: v[1] + half_y,
+            ..*centres
+        }
+    }
+
+    fn circle(&self, v: &[f64]) -> ((f64, f64), f64) {
+        ((v[0], v[1]), v[2])
+    }
+}
 
 /// Searches the critical circle of `section` over `region`; `hard` bounds stay put, automatic
 /// ones move when the minimum lies on their edge. No circle is evaluated once `budget` is spent;
 /// the search's stop then says why.
 pub fn search_circles(
     section: &Section,
-    region: CircleRegion,
+    region: &CircleRegion,
     hard: bool,
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &CircleSearchSettings,
     budget: &Budget,
 ) -> CircleSearch {
-    let evaluator = Evaluator::new(section, slices, seismic, settings, budget);
-    let mut region = region;
-    let mut evaluations = 0;
-    let mut regrids = 0;
-    loop {
-        let (xs, ys) = (region.xs(), region.ys());
-        let results = evaluator.grid(&region.radii, &xs, &ys);
-        evaluations += xs
-            .iter()
-            .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
-            .map(|c| evaluator.radii(&region.radii, c).len())
-            .sum::<usize>();
-        let GridSummary {
-            grid,
-            unsolved,
-            unsolved_bishop_minimum,
-            points,
-        } = summarise(&results, &xs, &ys);
-        let Some(&(f0, r0, bi, bj)) = points.first() else {
-            return CircleSearch {
-                status: SearchStatus::NoValidCircle,
-                stop: budget.stop(),
-                circle: None,
-                factor_of_safety: None,
-                grid,
-                region,
-                evaluations,
-                unsolved,
-                unsolved_bishop_minimum,
-                unsolved_near_minimum: false,
-                regrids,
-                is_on_edge: false,
-            };
-        };
-        let unsolved_near_minimum = (bj.saturating_sub(1)..=(bj + 1).min(ys.len() - 1)).any(|j| {
-            (bi.saturating_sub(1)..=(bi + 1).min(xs.len() - 1)).any(|i| results[j][i].1 > 0)
-        });
-        let starts = distinct_starts(&points, settings.starts);
-        let refined = evaluator.refine(&region, &starts, (&xs, &ys), settings);
-        evaluations += refined.iter().map(|r| r.2).sum::<usize>();
-        let (f, v) = refined
-            .into_iter()
-            .filter(|r| r.0.is_finite() && r.0 <= f0)
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or((f0, vec![xs[bi], ys[bj], r0]), |r| (r.0, r.1));
-        let on_edge = is_on_edge(&region, (bi, bj), (xs.len(), ys.len()), &v);
-        if on_edge && !hard && regrids < settings.max_regrids && !evaluator.is_late() {
-            // Centre a region of the same size on the best point found.
-            let (half_x, half_y) = (
-                0.5 * (region.x_max - region.x_min),
-                0.5 * (region.y_max - region.y_min),
-            );
-            region = CircleRegion {
-                x_min: v[0] - half_x,
-                x_max: v[0] + half_x,
-                y_min: v[1] - half_y,
-                y_max: v[1] + half_y,
-                ..region
-            };
-            regrids += 1;
-            continue;
-        }
-        return CircleSearch {
-            status: SearchStatus::Found,
-            stop: budget.stop(),
-            circle: Some(((v[0], v[1]), v[2])),
-            factor_of_safety: Some(f),
-            grid,
-            region,
-            evaluations,
-            unsolved,
-            unsolved_bishop_minimum,
-            unsolved_near_minimum,
-            regrids,
-            is_on_edge: on_edge,
-        };
-    }
+    let family = SeveralRadii {
+        evaluator: Evaluator::new(section, slices, seismic, settings, budget),
+        radii: &region.radii,
+        hard,
+        settings,
+    };
+    search(&family, region.centres)
 }

@@ -388,7 +388,7 @@ fn acads_search(region: CircleRegion, hard: bool) -> CircleSearch {
     let section = Section::new(one_soil(&ACADS_1A, 20.0, 3.0, 19.6)).unwrap();
     search_circles(
         &section,
-        region,
+        &region,
         hard,
         NonZeroUsize::new(50).unwrap(),
         Seismic::default(),
@@ -438,18 +438,21 @@ fn given_bounds_are_hard() {
     // A region well left of the critical centre (x_c ≈ 30): the answer stays inside it, on its
     // right edge, and says so.
     let region = CircleRegion {
-        x_min: 0.0,
-        x_max: 20.0,
-        y_min: 40.0,
-        y_max: 70.0,
-        nx: 11,
-        ny: 11,
+        centres: crate::slope::circles::CentreGrid {
+            x_min: 0.0,
+            x_max: 20.0,
+            y_min: 40.0,
+            y_max: 70.0,
+            nx: 11,
+            ny: 11,
+        },
         radii: Radii::Tangent(vec![10.0, 15.0, 20.0, 25.0]),
     };
     let found = acads_search(region.clone(), true);
     let ((xc, yc), r) = found.circle.unwrap();
-    assert!((region.x_min..=region.x_max).contains(&xc), "x_c = {xc}");
-    assert!((region.y_min..=region.y_max).contains(&yc), "y_c = {yc}");
+    let c = region.centres;
+    assert!((c.x_min..=c.x_max).contains(&xc), "x_c = {xc}");
+    assert!((c.y_min..=c.y_max).contains(&yc), "y_c = {yc}");
     assert!(yc - r >= 10.0 - 1e-9 && yc - r <= 25.0 + 1e-9);
     assert!(found.is_on_edge);
     assert_eq!(found.regrids, 0);
