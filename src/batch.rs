@@ -25,33 +25,44 @@ use crate::limits::MAX_BATCH_LINES;
 use crate::state::AppState;
 use crate::study::stream::NDJSON;
 
-/// The routes a batch line may name: the JSON solve routes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
-pub enum BatchRoute {
-    /// Spencer's method.
-    #[serde(rename = "/slope/spencer")]
-    SlopeSpencer,
-    /// Dead-load limit analysis.
-    #[serde(rename = "/arch/dead-load")]
-    ArchDeadLoad,
-    /// Live-load limit analysis.
-    #[serde(rename = "/arch/live-load")]
-    ArchLiveLoad,
-    /// Minimum thickness.
-    #[serde(rename = "/arch/minimum-thickness")]
-    ArchMinimumThickness,
-}
+/// A route a batch line may name: the JSON route of a registered family
+/// (`crate::routes::FAMILIES`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(transparent)]
+pub struct BatchRoute(&'static str);
 
 impl BatchRoute {
     fn path(self) -> &'static str {
-        match self {
-            Self::SlopeSpencer => "/slope/spencer",
-            Self::ArchDeadLoad => "/arch/dead-load",
-            Self::ArchLiveLoad => "/arch/live-load",
-            Self::ArchMinimumThickness => "/arch/minimum-thickness",
-        }
+        self.0
     }
 }
+
+impl<'de> Deserialize<'de> for BatchRoute {
+    /// One of the families' routes; any other string is serde's unknown variant, naming them.
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let name = std::borrow::Cow::<str>::deserialize(deserializer)?;
+        crate::routes::BATCH_ROUTES
+            .iter()
+            .find(|route| **route == name)
+            .map(|route| Self(route))
+            .ok_or_else(|| serde::de::Error::unknown_variant(&name, &crate::routes::BATCH_ROUTES))
+    }
+}
+
+impl utoipa::PartialSchema for BatchRoute {
+    fn schema() -> utoipa::openapi::RefOr<utoipa::openapi::schema::Schema> {
+        use utoipa::openapi::schema::{ObjectBuilder, Type};
+        ObjectBuilder::new()
+            .schema_type(Type::String)
+            .description(Some(
+                "The routes a batch line may name: the JSON solve routes.",
+            ))
+            .enum_values(Some(crate::routes::BATCH_ROUTES))
+            .into()
+    }
+}
+
+impl ToSchema for BatchRoute {}
 
 /// One line of a batch: a route and the body a request to it would have.
 #[derive(Debug, Deserialize, ToSchema)]

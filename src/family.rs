@@ -111,6 +111,11 @@ pub struct Registration {
     pub routes: fn() -> Router<AppState>,
     /// The OpenAPI paths of those routes.
     pub openapi: fn() -> utoipa::openapi::OpenApi,
+    /// The ranges its request's properties state (schema, property, limit), beside the shared
+    /// table `crate::limits::schema::SCHEMA_LIMITS`: the document writes them and the limits
+    /// test checks that the service refuses past them. The families of Parts I–III keep theirs
+    /// in the shared table.
+    pub limits: &'static [(&'static str, &'static str, crate::limits::Limit)],
 }
 
 /// Validates and analyses a request ([`Family::prepare`], [`Family::run`]).

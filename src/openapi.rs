@@ -55,8 +55,8 @@ pub fn document() -> utoipa::openapi::OpenApi {
     openapi
 }
 
-/// The limits of [`crate::limits::schema::SCHEMA_LIMITS`] written on their properties: the one
-/// table the checks read too. A table entry that names no property of the document is a fault
+/// The limits of [`crate::routes::schema_limits`] (the shared table and each family's) written on
+/// their properties: the one table the checks read too. A table entry that names no property of the document is a fault
 /// of the table ([`limit_targets_missing`] finds them; a test asserts there are none).
 struct SchemaLimits;
 
@@ -65,7 +65,7 @@ impl utoipa::Modify for SchemaLimits {
         let Some(components) = openapi.components.as_mut() else {
             return;
         };
-        for (schema, property, limit) in crate::limits::schema::SCHEMA_LIMITS {
+        for (schema, property, limit) in crate::routes::schema_limits() {
             if let Some(target) = property_mut(&mut components.schemas, schema, property) {
                 apply_limit(target, *limit);
             }
@@ -193,8 +193,7 @@ pub fn limit_targets_missing() -> Vec<String> {
     let Some(components) = openapi.components.as_mut() else {
         return vec!["no components".to_owned()];
     };
-    crate::limits::schema::SCHEMA_LIMITS
-        .iter()
+    crate::routes::schema_limits()
         .filter(|(schema, property, _)| {
             property_mut(&mut components.schemas, schema, property).is_none()
         })

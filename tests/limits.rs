@@ -9,7 +9,6 @@ mod common;
 
 use common::Server;
 use serde_json::{json, Value};
-use thrustline::limits::schema::SCHEMA_LIMITS;
 use thrustline::limits::{Limit, Range};
 
 #[test]
@@ -18,7 +17,7 @@ fn every_table_entry_names_a_property_of_the_document() {
     assert!(missing.is_empty(), "limits naming no property: {missing:?}");
     // And the document states each of them.
     let doc: Value = serde_json::from_str(&thrustline::openapi::openapi_json()).unwrap();
-    for (schema, property, limit) in SCHEMA_LIMITS {
+    for (schema, property, limit) in thrustline::routes::schema_limits() {
         let p = &doc["components"]["schemas"][schema]["properties"][property];
         let text = p.to_string();
         let stated = match limit {
@@ -273,8 +272,7 @@ async fn the_server_refuses_what_the_schema_excludes_and_names_the_field() {
     ];
     let mut checked = 0;
     for (schema, property, route, body, pointer, field) in cases {
-        let limit = SCHEMA_LIMITS
-            .iter()
+        let limit = thrustline::routes::schema_limits()
             .find(|(s, p, _)| s == schema && p == property)
             .map(|e| e.2)
             .unwrap_or_else(|| panic!("{schema}.{property} is not in the table"));

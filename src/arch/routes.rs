@@ -19,6 +19,7 @@ pub const DEAD_LOAD: Registration = Registration {
     route: "/arch/dead-load",
     routes: dead_load_routes,
     openapi: DeadLoadApi::openapi,
+    limits: &[],
 };
 
 /// The live load's registration.
@@ -26,6 +27,7 @@ pub const LIVE_LOAD: Registration = Registration {
     route: "/arch/live-load",
     routes: live_load_routes,
     openapi: LiveLoadApi::openapi,
+    limits: &[],
 };
 
 /// The dead load's routes.

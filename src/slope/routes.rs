@@ -19,6 +19,7 @@ pub const REGISTRATION: Registration = Registration {
     route: "/slope/spencer",
     routes,
     openapi: Api::openapi,
+    limits: &[],
 };
 
 /// The routes.

@@ -18,6 +18,7 @@ pub const REGISTRATION: Registration = Registration {
     route: "/arch/minimum-thickness",
     routes,
     openapi: Api::openapi,
+    limits: &[],
 };
 
 /// The routes.
