@@ -21,7 +21,7 @@ use serde::Serialize;
 use serde_json::Value;
 
 use crate::error::ApiError;
-use crate::extract::ApiJson;
+use crate::extract::{ApiJson, ApiJsonWithBody};
 use crate::report::{without_nulls, Report, ReportTable};
 use crate::state::AppState;
 use crate::study::run::Tally;
@@ -134,11 +134,12 @@ pub async fn json<F: Family>(
     state: AppState,
     headers: &HeaderMap,
     id: String,
-    (request, body): (F::Request, Value),
+    read: ApiJsonWithBody<F::Request>,
 ) -> Result<Response, ApiError> {
     if F::STREAMS && crate::study::stream::wants_stream(headers) {
-        return stream::<F>(state, id, (request, body));
+        return stream::<F>(state, id, read);
     }
+    let ApiJsonWithBody { request, body } = read;
     let solved = solve::<F>(&state, &request, &body, Arc::default()).await?;
     Ok(ApiJson(F::answer(&request, &solved)).into_response())
 }
@@ -148,7 +149,7 @@ pub async fn json<F: Family>(
 pub fn stream<F: Family>(
     state: AppState,
     id: String,
-    (request, body): (F::Request, Value),
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<F::Request>,
 ) -> Result<Response, ApiError> {
     let prepared = F::prepare(&state, &request, &body)?;
     let tally = Arc::new(Tally::default());
@@ -163,7 +164,7 @@ pub fn stream<F: Family>(
 /// The drawing of the answer.
 pub async fn svg<F: Family>(
     state: &AppState,
-    (request, body): (F::Request, Value),
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<F::Request>,
 ) -> Result<crate::svg::Svg, ApiError> {
     let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
     F::draw(&request, &solved).map(crate::svg::Svg)
@@ -173,7 +174,7 @@ pub async fn svg<F: Family>(
 pub async fn csv<F: Family>(
     state: &AppState,
     table: <F::Tables as TableQuery>::Table,
-    (request, body): (F::Request, Value),
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<F::Request>,
 ) -> Result<Csv, ApiError> {
     let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
     F::table(&F::answer(&request, &solved), table)
@@ -183,7 +184,7 @@ pub async fn csv<F: Family>(
 pub async fn report<F: Family>(
     state: &AppState,
     request_id: String,
-    (request, body): (F::Request, Value),
+    ApiJsonWithBody { request, body }: ApiJsonWithBody<F::Request>,
 ) -> Result<Html<String>, ApiError> {
     let solved = solve::<F>(state, &request, &body, Arc::default()).await?;
     let answer = F::answer(&request, &solved);
@@ -218,9 +219,9 @@ macro_rules! route {
             axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
             headers: axum::http::HeaderMap,
             $crate::headers::RequestId(id): $crate::headers::RequestId,
-            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+            read: $crate::extract::ApiJsonWithBody<$request>,
         ) -> Result<axum::response::Response, $crate::error::ApiError> {
-            $crate::family::json::<$family>(state, &headers, id, (request, body)).await
+            $crate::family::json::<$family>(state, &headers, id, read).await
         }
     };
     ($(#[$meta:meta])* stream $name:ident($family:ty, $request:ty, $line:ty) at $path:tt, $tag:tt) => {
@@ -238,9 +239,9 @@ macro_rules! route {
         pub async fn $name(
             axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
             $crate::headers::RequestId(id): $crate::headers::RequestId,
-            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+            read: $crate::extract::ApiJsonWithBody<$request>,
         ) -> Result<axum::response::Response, $crate::error::ApiError> {
-            $crate::family::stream::<$family>(state, id, (request, body))
+            $crate::family::stream::<$family>(state, id, read)
         }
     };
     ($(#[$meta:meta])* svg $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
@@ -257,9 +258,9 @@ macro_rules! route {
         )]
         pub async fn $name(
             axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
-            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+            read: $crate::extract::ApiJsonWithBody<$request>,
         ) -> Result<$crate::svg::Svg, $crate::error::ApiError> {
-            $crate::family::svg::<$family>(&state, (request, body)).await
+            $crate::family::svg::<$family>(&state, read).await
         }
     };
     ($(#[$meta:meta])* csv $name:ident($family:ty, $request:ty, $query:ty) at $path:tt, $tag:tt) => {
@@ -278,9 +279,9 @@ macro_rules! route {
         pub async fn $name(
             axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
             $crate::table::Table(table): $crate::table::Table<$query>,
-            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+            read: $crate::extract::ApiJsonWithBody<$request>,
         ) -> Result<$crate::table::Csv, $crate::error::ApiError> {
-            $crate::family::csv::<$family>(&state, table, (request, body)).await
+            $crate::family::csv::<$family>(&state, table, read).await
         }
     };
     ($(#[$meta:meta])* report $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
@@ -298,9 +299,9 @@ macro_rules! route {
         pub async fn $name(
             axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
             $crate::headers::RequestId(request_id): $crate::headers::RequestId,
-            $crate::extract::ApiJsonWithBody { request, body }: $crate::extract::ApiJsonWithBody<$request>,
+            read: $crate::extract::ApiJsonWithBody<$request>,
         ) -> Result<axum::response::Html<String>, $crate::error::ApiError> {
-            $crate::family::report::<$family>(&state, request_id, (request, body)).await
+            $crate::family::report::<$family>(&state, request_id, read).await
         }
     };
 }
