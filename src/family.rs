@@ -225,83 +225,67 @@ macro_rules! route {
         }
     };
     ($(#[$meta:meta])* stream $name:ident($family:ty, $request:ty, $line:ty) at $path:tt, $tag:tt) => {
-        $(#[$meta])*
-        #[utoipa::path(
-            post,
-            path = $path,
-            tag = $tag,
-            request_body = $request,
-            responses(
-                (status = 200, description = "Progress lines, then the answer (or its problem) as the last line", body = $line, content_type = "application/x-ndjson"),
-                $crate::error::ProblemResponses,
-            )
-        )]
-        pub async fn $name(
-            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
-            $crate::headers::RequestId(id): $crate::headers::RequestId,
-            read: $crate::extract::ApiJsonWithBody<$request>,
-        ) -> Result<axum::response::Response, $crate::error::ApiError> {
-            $crate::family::stream::<$family>(state, id, read)
+        $crate::family::route! { @twin [$(#[$meta])*] $path, $tag, $request, [],
+            (description = "Progress lines, then the answer (or its problem) as the last line", body = $line, content_type = "application/x-ndjson"),
+            $name(
+                $crate::headers::RequestId(id): $crate::headers::RequestId,
+            ) -> axum::response::Response {
+                |state, read| $crate::family::stream::<$family>(state, id, read)
+            }
         }
     };
     ($(#[$meta:meta])* svg $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
-        $(#[$meta])*
-        #[utoipa::path(
-            post,
-            path = $path,
-            tag = $tag,
-            request_body = $request,
-            responses(
-                (status = 200, description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
-                $crate::error::ProblemResponses,
-            )
-        )]
-        pub async fn $name(
-            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
-            read: $crate::extract::ApiJsonWithBody<$request>,
-        ) -> Result<$crate::svg::Svg, $crate::error::ApiError> {
-            $crate::family::svg::<$family>(&state, read).await
+        $crate::family::route! { @twin [$(#[$meta])*] $path, $tag, $request, [],
+            (description = "The drawing, 800 px wide", body = String, content_type = "image/svg+xml"),
+            $name() -> $crate::svg::Svg {
+                |state, read| $crate::family::svg::<$family>(&state, read).await
+            }
         }
     };
     ($(#[$meta:meta])* csv $name:ident($family:ty, $request:ty, $query:ty) at $path:tt, $tag:tt) => {
-        $(#[$meta])*
-        #[utoipa::path(
-            post,
-            path = $path,
-            tag = $tag,
-            request_body = $request,
-            params($query),
-            responses(
-                (status = 200, description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
-                $crate::error::ProblemResponses,
-            )
-        )]
-        pub async fn $name(
-            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
-            $crate::table::Table(table): $crate::table::Table<$query>,
-            read: $crate::extract::ApiJsonWithBody<$request>,
-        ) -> Result<$crate::table::Csv, $crate::error::ApiError> {
-            $crate::family::csv::<$family>(&state, table, read).await
+        $crate::family::route! { @twin [$(#[$meta])*] $path, $tag, $request, [params($query),],
+            (description = "The table (RFC 4180, UTF-8, a header row)", body = String, content_type = "text/csv"),
+            $name(
+                $crate::table::Table(table): $crate::table::Table<$query>,
+            ) -> $crate::table::Csv {
+                |state, read| $crate::family::csv::<$family>(&state, table, read).await
+            }
         }
     };
     ($(#[$meta:meta])* report $name:ident($family:ty, $request:ty) at $path:tt, $tag:tt) => {
-        $(#[$meta])*
+        $crate::family::route! { @twin [$(#[$meta])*] $path, $tag, $request, [],
+            (description = "The report, one HTML page", body = String, content_type = "text/html"),
+            $name(
+                $crate::headers::RequestId(request_id): $crate::headers::RequestId,
+            ) -> axum::response::Html<String> {
+                |state, read| $crate::family::report::<$family>(&state, request_id, read).await
+            }
+        }
+    };
+    // A twin: the attribute every family's twin of a kind shares, and its handler.
+    (@twin [$($meta:tt)*] $path:tt, $tag:tt, $request:ty, [$($params:tt)*], ($($ok:tt)*),
+        $name:ident($($extra:tt)*) -> $answer:ty {
+            |$state:ident, $read:ident| $call:expr
+        }
+    ) => {
+        $($meta)*
         #[utoipa::path(
             post,
             path = $path,
             tag = $tag,
             request_body = $request,
+            $($params)*
             responses(
-                (status = 200, description = "The report, one HTML page", body = String, content_type = "text/html"),
+                (status = 200, $($ok)*),
                 $crate::error::ProblemResponses,
             )
         )]
         pub async fn $name(
-            axum::extract::State(state): axum::extract::State<$crate::state::AppState>,
-            $crate::headers::RequestId(request_id): $crate::headers::RequestId,
-            read: $crate::extract::ApiJsonWithBody<$request>,
-        ) -> Result<axum::response::Html<String>, $crate::error::ApiError> {
-            $crate::family::report::<$family>(&state, request_id, read).await
+            axum::extract::State($state): axum::extract::State<$crate::state::AppState>,
+            $($extra)*
+            $read: $crate::extract::ApiJsonWithBody<$request>,
+        ) -> Result<$answer, $crate::error::ApiError> {
+            $call
         }
     };
 }
