@@ -5,10 +5,11 @@
 //! the drawing, the CSV tables and the calculation report.
 //!
 //! The handlers here are generic over a [`Family`]: a family's folder writes its documented
-//! route functions as one-line calls of them, and registers its routes and its OpenAPI paths
+//! route functions with [`route!`], and registers its routes, its OpenAPI paths and its ranges
 //! once ([`Registration`], listed in `crate::routes`). The router, `/batch` (whose lines go
-//! through the same routes) and the OpenAPI document read that list; nothing else names a
-//! family.
+//! through the same routes), the OpenAPI document and its limits read that list. What a family
+//! shares with the others stays shared: its solver errors become fields in `crate::fields`, its
+//! warnings are codes of `crate::warning`.
 
 use std::future::Future;
 use std::sync::Arc;

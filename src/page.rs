@@ -1,5 +1,5 @@
 //! `GET /`: a single static page (embedded in the binary; no build step, nothing fetched from
-//! the internet) with the three examples of the model pre-filled, their numbers and drawings side by
+//! the internet) with the nine examples of the model pre-filled, their numbers and drawings side by
 //! side.
 
 use axum::response::Html;
