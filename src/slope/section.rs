@@ -354,7 +354,7 @@ fn in_design_values(
         .iter()
         .map(|l| action(l.action, l.favourable))
         .collect();
-    Ok(design.section(parts, (&surcharges, &line_loads))?)
+    Ok(design.section(parts, &surcharges, &line_loads)?)
 }
 
 /// The surcharges on a section's ground, each over x_start < x_end.

@@ -30,10 +30,11 @@ pub fn prepare(request: &SpencerRequest, body: &serde_json::Value) -> Result<Pre
     })
 }
 
-/// Validates the request and analyses it ([`prepare`], [`run`]).
+/// Validates the request (its `body` as sent) and analyses it ([`prepare`], [`run`]).
 pub async fn solve(
     state: &AppState,
-    (request, body): (&SpencerRequest, &serde_json::Value),
+    request: &SpencerRequest,
+    body: &serde_json::Value,
     tally: Arc<Tally>,
 ) -> Result<SolvedSlope, ApiError> {
     run(state, prepare(request, body)?, tally).await

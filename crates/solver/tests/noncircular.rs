@@ -4,7 +4,7 @@
 use std::num::NonZeroUsize;
 
 use thrustline_solver::budget::Budget;
-use thrustline_solver::slope::section::noncircular::search_noncircular;
+use thrustline_solver::slope::section::noncircular::{search_noncircular, NoncircularLimits};
 use thrustline_solver::slope::section::search::{
     search_circles, CircleRegion, CircleSearchSettings,
 };
@@ -84,7 +84,11 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
     let found = search_noncircular(
         &section,
         &start,
-        (12, None, 0.0),
+        NoncircularLimits {
+            vertices: 12,
+            max_evaluations: None,
+            min_depth: 0.0,
+        },
         slices,
         Seismic::default(),
         &SpencerSettings::default(),

@@ -11,7 +11,8 @@ use crate::svg::{heat, Canvas};
 pub fn factor_map(
     canvas: &mut Canvas,
     grid: &FactorGrid,
-    (lower_end, visible): ((f64, f64), [f64; 4]),
+    lower_end: (f64, f64),
+    visible: [f64; 4],
     critical: String,
     reserved: &[[f64; 4]],
 ) {

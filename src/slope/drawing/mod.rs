@@ -155,7 +155,7 @@ fn factor_map(
             .iter()
             .map(|c| thrust::centre_label_box(canvas, c.centre, c.radius))
             .collect();
-        map::factor_map(canvas, grid, (lower_end, visible), critical, &reserved);
+        map::factor_map(canvas, grid, lower_end, visible, critical, &reserved);
     }
 }
 

@@ -33,7 +33,7 @@ pub fn nelder_mead(
     x_tolerance: f64,
     max_evaluations: usize,
 ) -> Minimum {
-    nelder_mead_to(f, start, step, (x_tolerance, 0.0), max_evaluations)
+    nelder_mead_to(f, start, step, x_tolerance, 0.0, max_evaluations)
 }
 
 /// [`nelder_mead`], stopping too when the values at the simplex's vertices differ by less than
@@ -43,7 +43,8 @@ pub fn nelder_mead_to(
     f: impl Fn(&[f64]) -> f64,
     start: &[f64],
     step: &[f64],
-    (x_tolerance, f_tolerance): (f64, f64),
+    x_tolerance: f64,
+    f_tolerance: f64,
     max_evaluations: usize,
 ) -> Minimum {
     let n = start.len();
@@ -187,13 +188,13 @@ mod tests {
         // is ~1e-5 across, long before it is 1e-12 across.
         let f = |v: &[f64]| 1.0 + (v[0] - 1.0).powi(2) + 3.0 * (v[1] + 2.0).powi(2);
         let by_x = nelder_mead(f, &[0.0, 0.0], &[0.5, 0.5], 1e-12, 5000);
-        let by_f = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], (1e-12, 1e-10), 5000);
+        let by_f = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], 1e-12, 1e-10, 5000);
         assert!(by_f.evaluations < by_x.evaluations, "{by_f:?} {by_x:?}");
         // Stopped within the tolerance of the minimum value 1.
         assert!(by_f.value - 1.0 <= 1e-10 && by_f.value >= 1.0);
         assert!((by_f.point[0] - 1.0).abs() < 1e-4 && (by_f.point[1] + 2.0).abs() < 1e-4);
         // A zero tolerance is `nelder_mead`.
-        let zero = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], (1e-12, 0.0), 5000);
+        let zero = nelder_mead_to(f, &[0.0, 0.0], &[0.5, 0.5], 1e-12, 0.0, 5000);
         assert_eq!(zero, by_x);
     }
 }

@@ -193,7 +193,8 @@ impl Design {
     pub fn section(
         &self,
         mut parts: SectionParts,
-        (surcharges, line_loads): (&[Action], &[Action]),
+        surcharges: &[Action],
+        line_loads: &[Action],
     ) -> Result<SectionParts, SlopeError> {
         let f = &self.factors;
         for layer in &mut parts.layers {

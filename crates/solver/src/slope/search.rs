@@ -18,7 +18,7 @@ use super::geometry::{Embankment, SlipCircle};
 use crate::budget::{Budget, Stop};
 use crate::numerics::{nelder_mead_to, Minimum};
 
-use super::section::trial::circle_outcome;
+use super::section::trial::{circle_outcome, TrialSetup};
 use super::section::{check_circle, Section, SectionProblem, SlipShape};
 use super::spencer::{Seismic, Soil, SpencerSettings};
 
@@ -133,20 +133,27 @@ pub fn factor_of_safety(
     settings: &SpencerSettings,
 ) -> Option<f64> {
     let section = problem.section().ok()?;
-    let frames = (&section, &section.mirrored());
-    outcome(problem, frames, circle, (settings, 0.0), &Cell::new(None)).ok()
+    let mirror = section.mirrored();
+    let trials = TrialSetup {
+        section: &section,
+        mirror: &mirror,
+        slices: problem.slices,
+        seismic: problem.seismic,
+        spencer: settings,
+        min_depth: 0.0,
+    };
+    outcome(problem, &trials, circle, &Cell::new(None)).ok()
 }
 
-/// Spencer's F for one circle on `section` (`mirror`: the section seen from behind, built
-/// once per search); `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it has no
-/// physical solution (with Bishop's F there, if any). Bishop's F, Spencer's start, is looked
-/// for from `near` first, the last F found (a neighbouring circle's), which a solved circle
-/// replaces.
+/// Spencer's F for one circle of `problem` tried as `trials` says (on the embankment as a
+/// section and seen from behind, built once per search); `Err(None)` when it cuts no mass,
+/// `Err(Some(bishop))` when it has no physical solution (with Bishop's F there, if any).
+/// Bishop's F, Spencer's start, is looked for from `near` first, the last F found (a
+/// neighbouring circle's), which a solved circle replaces.
 fn outcome(
     problem: &SearchProblem,
-    frames: (&Section, &Section),
+    trials: &TrialSetup<'_>,
     circle: SlipCircle,
-    (settings, min_depth): (&SpencerSettings, f64),
     near: &Cell<Option<f64>>,
 ) -> Result<f64, Option<Option<f64>>> {
     let Ok(SlipShape::Circle { centre, radius }) = circle.placed(problem.embankment.height())
@@ -155,14 +162,7 @@ fn outcome(
     };
     // A circle beyond what a section takes cuts no mass of it.
     check_circle(centre, radius).map_err(|_| None::<Option<f64>>)?;
-    circle_outcome(
-        frames,
-        (centre, radius),
-        (problem.slices, problem.seismic),
-        (settings, min_depth),
-        near.get(),
-    )
-    .map(|s| {
+    circle_outcome(trials, centre, radius, near.get()).map(|s| {
         near.set(Some(s.factor_of_safety));
         s.factor_of_safety
     })
@@ -200,7 +200,7 @@ fn refine_from(
 ) -> Minimum {
     let ThroughLowerEnd {
         problem,
-        frames,
+        ref trials,
         settings,
         budget,
     } = *family;
@@ -231,14 +231,7 @@ fn refine_from(
         if !within_reach(circle_at(v), settings.max_radius) {
             return f64::INFINITY;
         }
-        outcome(
-            problem,
-            frames,
-            circle_at(v),
-            (&settings.spencer, settings.min_depth),
-            &near,
-        )
-        .unwrap_or(f64::INFINITY)
+        outcome(problem, trials, circle_at(v), &near).unwrap_or(f64::INFINITY)
     };
     // Centres first, at the grid's lower-end factor…
     let start = [factors.xs[i], factors.ys[j]];
@@ -246,7 +239,8 @@ fn refine_from(
         objective,
         &start,
         &[0.5 * dx, 0.5 * dy],
-        (1e-9 * scale, F_RESOLUTION),
+        1e-9 * scale,
+        F_RESOLUTION,
         settings.max_refine_evaluations,
     );
     // …then, when it is searched too, the lower end with them, from there: never
@@ -260,7 +254,8 @@ fn refine_from(
                 objective,
                 &start,
                 &step,
-                (1e-9 * scale, F_RESOLUTION),
+                1e-9 * scale,
+                F_RESOLUTION,
                 settings.max_refine_evaluations,
             );
             Minimum {
@@ -276,8 +271,10 @@ fn refine_from(
 /// (measured from there), the lower end moved by the refinement when it is searched too.
 struct ThroughLowerEnd<'a> {
     problem: &'a SearchProblem,
-    /// The embankment as a section and seen from behind, built once.
-    frames: (&'a Section, &'a Section),
+    /// How each circle is tried: on the embankment as a section and seen from behind (built
+    /// once), with the problem's slices and seismic coefficients and the settings' Spencer
+    /// settings and least depth.
+    trials: TrialSetup<'a>,
     settings: &'a SearchSettings,
     budget: &'a Budget,
 }
@@ -309,8 +306,7 @@ impl CircleFamily for ThroughLowerEnd<'_> {
                 if !within_reach(circle, self.settings.max_radius) {
                     return CentreResult::default();
                 }
-                let settings = (&self.settings.spencer, self.settings.min_depth);
-                match outcome(self.problem, self.frames, circle, settings, &near) {
+                match outcome(self.problem, &self.trials, circle, &near) {
                     Ok(f) => CentreResult {
                         best: Some((f, 0.0)),
                         ..CentreResult::default()
@@ -405,7 +401,14 @@ pub fn search_critical_circle(
     let mirror = section.mirrored();
     let family = ThroughLowerEnd {
         problem,
-        frames: (&section, &mirror),
+        trials: TrialSetup {
+            section: &section,
+            mirror: &mirror,
+            slices: problem.slices,
+            seismic: problem.seismic,
+            spencer: &settings.spencer,
+            min_depth: settings.min_depth,
+        },
         settings,
         budget,
     };

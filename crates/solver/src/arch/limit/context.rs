@@ -10,8 +10,8 @@ use clarabel::solver::SolverStatus;
 
 use super::problem::{ArchProblem, Formulation, LimitSettings, LimitSolution, LimitStatus};
 use super::programme::{
-    dot, failure, solve_chain_programme, solve_programme, solve_state_programme, Programme,
-    ProgrammeSpec, Refinement,
+    dot, failure, solve_chain_programme, solve_programme, solve_state_programme, InteriorPoint,
+    Programme, ProgrammeSpec, Refinement,
 };
 use super::rows::{limit_rows, Row};
 use super::squeeze::local_programme;
@@ -29,7 +29,7 @@ pub(super) const LIVE_LOAD_CAP: f64 = 1e6;
 /// Whether a state programme's x satisfies H r = b_eq and the rows raised by `shift` to
 /// [`STATE_CHECK`] (scaled units: a fraction of the total weight): a programme short of
 /// `Solved` is accepted when its state passes.
-fn state_holds(eq: &Equilibrium, rows: &[Row], x: &[f64], (b_eq, shift): (&[f64], f64)) -> bool {
+fn state_holds(eq: &Equilibrium, rows: &[Row], x: &[f64], b_eq: &[f64], shift: f64) -> bool {
     if x.len() < eq.columns || x.iter().any(|v| !v.is_finite()) {
         return false;
     }
@@ -231,21 +231,16 @@ impl<'a> Context<'a> {
                     cap: (-1.0, 1.0),
                     objective: 1.0,
                 };
-                solve_programme(
-                    eq,
-                    &self.rows,
-                    &spec,
-                    (self.settings, self.refinement),
-                    None,
-                )
+                solve_programme(eq, &self.rows, &spec, self.solve(), None)
             }
             Model::Chain(chain) => solve_chain_programme(
                 chain,
                 &self.rows,
                 lambda,
                 |_, _| -1.0,
-                ((-1.0, 1.0), 1.0),
-                (self.settings, self.refinement),
+                (-1.0, 1.0),
+                1.0,
+                self.solve(),
             ),
         }
     }
@@ -270,7 +265,7 @@ impl<'a> Context<'a> {
                     cap: (1.0, LIVE_LOAD_CAP),
                     objective: -1.0,
                 };
-                let solve = (self.settings, self.refinement);
+                let solve = self.solve();
                 (solve_programme(eq, &self.rows, &spec, solve, abort), scale)
             }
             Model::Chain(chain) => {
@@ -281,8 +276,9 @@ impl<'a> Context<'a> {
                     &self.rows,
                     1.0,
                     coefficient,
-                    ((1.0, LIVE_LOAD_CAP), -1.0),
-                    (self.settings, self.refinement),
+                    (1.0, LIVE_LOAD_CAP),
+                    -1.0,
+                    self.solve(),
                 );
                 (programme, scale)
             }
@@ -308,20 +304,14 @@ impl<'a> Context<'a> {
         };
         let b_eq = self.state_equations(eq, dead_factor, live_factor);
         let costs = normal_costs(&self.rows, eq.columns);
-        let programme = solve_state_programme(
-            eq,
-            &self.rows,
-            (&b_eq, margin),
-            &costs,
-            (self.settings, Refinement::Never),
-        );
+        let programme =
+            solve_state_programme(eq, &self.rows, &b_eq, margin, &costs, self.solve_once());
         self.iterations += programme.iterations;
         self.programmes += 1;
         if !usable(programme.status) {
             return None;
         }
-        let factors = (dead_factor, live_factor);
-        self.checked_state(eq, &programme.x, (&b_eq, margin), factors)
+        self.checked_state(eq, &programme.x, &b_eq, margin, dead_factor, live_factor)
     }
 
     /// [`Self::least_normal_state`] changing only the resultants of `contacts`: every other
@@ -330,8 +320,11 @@ impl<'a> Context<'a> {
     /// [`super::squeeze`]). `None` as there, or when nothing is left to change.
     pub fn relieve_squeeze(
         &mut self,
-        (dead_factor, live_factor, margin): (f64, f64, f64),
-        (resultants, passive): (&[[f64; 3]], &[f64]),
+        dead_factor: f64,
+        live_factor: f64,
+        margin: f64,
+        resultants: &[[f64; 3]],
+        passive: &[f64],
         contacts: &[usize],
     ) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
         let Model::Assembly(eq) = &self.model else {
@@ -344,14 +337,15 @@ impl<'a> Context<'a> {
             return None;
         }
         let b_eq = self.state_equations(eq, dead_factor, live_factor);
-        let local = local_programme(eq, &self.rows, (&x, &b_eq, margin), contacts);
+        let local = local_programme(eq, &self.rows, &x, &b_eq, margin, contacts);
         let costs = normal_costs(&local.rows, local.eq.columns);
         let programme = solve_state_programme(
             &local.eq,
             &local.rows,
-            (&local.b_eq, margin + local.excess),
+            &local.b_eq,
+            margin + local.excess,
             &costs,
-            (self.settings, Refinement::Never),
+            self.solve_once(),
         );
         self.iterations += programme.iterations;
         self.programmes += 1;
@@ -361,24 +355,43 @@ impl<'a> Context<'a> {
         for (&j, &v) in local.columns.iter().zip(&programme.x) {
             x[j] = v;
         }
-        let factors = (dead_factor, live_factor);
-        self.checked_state(eq, &x, (&b_eq, margin + local.excess), factors)
+        let shift = margin + local.excess;
+        self.checked_state(eq, &x, &b_eq, shift, dead_factor, live_factor)
     }
 
-    /// The state x (scaled, every column) in force units, when it passes [`state_holds`].
+    /// The state x (scaled, every column) in force units, when it passes [`state_holds`]
+    /// (equations H r = `b_eq`, the rows raised by `shift`), read at the given factors.
     fn checked_state(
         &self,
         eq: &Equilibrium,
         x: &[f64],
-        (b_eq, shift): (&[f64], f64),
-        (dead_factor, live_factor): (f64, f64),
+        b_eq: &[f64],
+        shift: f64,
+        dead_factor: f64,
+        live_factor: f64,
     ) -> Option<(Vec<[f64; 3]>, Vec<f64>)> {
-        state_holds(eq, &self.rows, x, (b_eq, shift)).then(|| {
+        state_holds(eq, &self.rows, x, b_eq, shift).then(|| {
             (
                 self.resultants(x, dead_factor, live_factor),
                 self.passive(x),
             )
         })
+    }
+
+    /// How the interior-point method solves this analysis' margin and live-load programmes.
+    fn solve(&self) -> InteriorPoint<'a> {
+        InteriorPoint {
+            settings: self.settings,
+            refinement: self.refinement,
+        }
+    }
+
+    /// How it solves a state programme: once, without refinement.
+    fn solve_once(&self) -> InteriorPoint<'a> {
+        InteriorPoint {
+            settings: self.settings,
+            refinement: Refinement::Never,
+        }
     }
 
     /// The right-hand sides of the equilibrium rows at the given factors.

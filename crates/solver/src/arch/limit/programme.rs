@@ -45,6 +45,15 @@ pub(super) enum Refinement {
     Never,
 }
 
+/// How the interior-point method solves a programme: its settings and when it refines.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct InteriorPoint<'a> {
+    /// The interior-point settings (tolerances, iterations, the budget).
+    pub settings: &'a LimitSettings,
+    /// When the method refines the solutions of its KKT systems.
+    pub refinement: Refinement,
+}
+
 /// One programme over the resultants r and one extra variable x (δ or λ):
 /// min objective·x subject to H r + extra_equilibrium·x = b_eq, the limit rows (each with
 /// `row_extra`·x added), and cap.0·x ≤ cap.1.
@@ -60,7 +69,7 @@ pub(super) fn solve_programme(
     eq: &Equilibrium,
     rows: &[Row],
     spec: &ProgrammeSpec,
-    (settings, refinement): (&LimitSettings, Refinement),
+    solve: InteriorPoint<'_>,
     abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
     let ProgrammeSpec {
@@ -97,14 +106,7 @@ pub(super) fn solve_programme(
     b.push(cap.1);
     let mut c = vec![0.0; n];
     c[extra] = objective_extra;
-    run_clarabel(
-        (m, n, m_eq),
-        (ti, tj, tv),
-        &b,
-        &c,
-        (settings, refinement),
-        abort,
-    )
+    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, &c, solve, abort)
 }
 
 /// The state programme over the resultants alone: min costs·r subject to H r = b_eq and the
@@ -113,21 +115,15 @@ pub(super) fn solve_programme(
 pub(super) fn solve_state_programme(
     eq: &Equilibrium,
     rows: &[Row],
-    (b_eq, shift): (&[f64], f64),
+    b_eq: &[f64],
+    shift: f64,
     costs: &[f64],
-    (settings, refinement): (&LimitSettings, Refinement),
+    solve: InteriorPoint<'_>,
 ) -> Programme {
     let (n, m_eq) = (eq.columns, eq.rows);
     let m = m_eq + rows.len();
     let (ti, tj, tv, b) = assemble(eq, rows, b_eq, shift);
-    run_clarabel(
-        (m, n, m_eq),
-        (ti, tj, tv),
-        &b,
-        costs,
-        (settings, refinement),
-        None,
-    )
+    run_clarabel((m, n, m_eq), (ti, tj, tv), &b, costs, solve, None)
 }
 
 /// The triplets of H with the limit rows below it (row m_eq + r for rows[r]), and b: `b_eq`
@@ -169,20 +165,24 @@ fn relaxed(row: &Row) -> bool {
     row.tag.resultant != Resultant::Passive
 }
 
-/// Solves min c'x subject to A x + s = b with s in {0}^m_eq × R₊^(m − m_eq); with
-/// [`Refinement::OnRetry`] first without iterative refinement (the iterations of both attempts
-/// counted). Setting `abort` stops the interior-point method at its next iteration
-/// (`CallbackTerminated`: the answer is no longer wanted).
+/// Solves min c'x subject to A x + s = b (A: m × n from the triplets) with s in
+/// {0}^m_eq × R₊^(m − m_eq); with [`Refinement::OnRetry`] first without iterative refinement
+/// (the iterations of both attempts counted). Setting `abort` stops the interior-point method
+/// at its next iteration (`CallbackTerminated`: the answer is no longer wanted).
 fn run_clarabel(
     (m, n, m_eq): (usize, usize, usize),
     (ti, tj, tv): (Vec<usize>, Vec<usize>, Vec<f64>),
     b: &[f64],
     c: &[f64],
-    (settings, refinement): (&LimitSettings, Refinement),
+    solve: InteriorPoint<'_>,
     abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
+    let InteriorPoint {
+        settings,
+        refinement,
+    } = solve;
     let a = CscMatrix::new_from_triplets(m, n, ti, tj, tv);
-    let once = |refine: bool| run_clarabel_once((m, m_eq), &a, b, c, (settings, refine), abort);
+    let once = |refine: bool| run_clarabel_once((m, m_eq), &a, b, c, settings, refine, abort);
     if refinement == Refinement::OnRetry {
         let quick = once(false);
         if matches!(
@@ -198,12 +198,15 @@ fn run_clarabel(
     once(refinement == Refinement::Always)
 }
 
+/// One attempt of [`run_clarabel`] (m rows, the first m_eq equalities), with iterative
+/// refinement when `refine`.
 fn run_clarabel_once(
     (m, m_eq): (usize, usize),
     a: &CscMatrix<f64>,
     b: &[f64],
     c: &[f64],
-    (settings, refine): (&LimitSettings, bool),
+    settings: &LimitSettings,
+    refine: bool,
     abort: Option<&Arc<AtomicBool>>,
 ) -> Programme {
     let n = a.n;
@@ -261,7 +264,7 @@ fn run_clarabel_once(
 
 /// A programme of the chain formulation over (x₀, x₁, x₂, extra): each limit row a·r_k ≤ b
 /// becomes (D_kᵀa)·x + extra_coefficient(a, k)·extra ≤ b − dead_factor·a·(D_k C_k), plus the
-/// cap cap.0·extra ≤ cap.1; minimise objective·extra.
+/// cap cap.0·extra ≤ cap.1; minimise objective·extra, as `solve` says.
 ///
 /// Only a few rows are active at the optimum (the hinges), so the programme is solved by
 /// constraint generation: start from the rows of about 32 evenly spread interfaces and the
@@ -274,9 +277,11 @@ pub(super) fn solve_chain_programme(
     rows: &[Row],
     dead_factor: f64,
     extra_coefficient: impl Fn(&[f64; 3], usize) -> f64,
-    (cap, objective): ((f64, f64), f64),
-    (settings, refinement): (&LimitSettings, Refinement),
+    cap: (f64, f64),
+    objective: f64,
+    solve: InteriorPoint<'_>,
 ) -> Programme {
+    let settings = solve.settings;
     const MAX_ROUNDS: usize = 40;
     const MAX_ADDED_PER_ROUND: usize = 256;
     let dense = on_redundants(chain, rows, dead_factor, extra_coefficient);
@@ -289,8 +294,7 @@ pub(super) fn solve_chain_programme(
         dense,
         cap,
         c,
-        settings,
-        refinement,
+        solve,
     };
     let mut iterations = 0;
     let mut rounds = Rounds {
@@ -346,10 +350,8 @@ struct ChainLp<'a> {
     cap: (f64, f64),
     /// The objective's coefficients on (x₀, x₁, x₂, extra).
     c: Vec<f64>,
-    /// The interior-point settings.
-    settings: &'a LimitSettings,
-    /// When the interior-point method refines its solutions.
-    refinement: Refinement,
+    /// How the interior-point method solves the rounds.
+    solve: InteriorPoint<'a>,
 }
 
 /// The method that solves the rounds of constraint generation.
@@ -470,8 +472,7 @@ fn clarabel_on(lp: &ChainLp, subset: &[usize]) -> Programme {
     tj.push(3);
     tv.push(cap.0);
     b.push(cap.1);
-    let settings = (lp.settings, lp.refinement);
-    run_clarabel((m, 4, 0), (ti, tj, tv), &b, &lp.c, settings, None)
+    run_clarabel((m, 4, 0), (ti, tj, tv), &b, &lp.c, lp.solve, None)
 }
 
 /// Replaces the multipliers of the simplex method's `programme` (over `subset` of `lp`'s rows,

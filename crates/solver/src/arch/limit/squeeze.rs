@@ -31,7 +31,9 @@ pub(super) struct Local {
 pub(super) fn local_programme(
     eq: &Equilibrium,
     rows: &[Row],
-    (x, b_eq, margin): (&[f64], &[f64], f64),
+    x: &[f64],
+    b_eq: &[f64],
+    margin: f64,
     contacts: &[usize],
 ) -> Local {
     let mut local_column = vec![None; eq.columns];

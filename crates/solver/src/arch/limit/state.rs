@@ -125,14 +125,23 @@ pub fn relieve_squeeze(
         .collect();
     let start = Instant::now();
     let mut cx = Context::new(problem, settings);
-    let shown = (solution.resultants.as_slice(), solution.passive.as_slice());
     // A carried dead load's margin backed off as for the whole programme (the contacts' rows
     // at the margin leave no interior). A squeeze over most contacts is the whole programme
     // at the optimum, which has none either.
     let (dead, live, margin) = at.factors();
     let local = 2 * contacts.len() <= solution.resultants.len();
     let state = local
-        .then(|| cx.relieve_squeeze((dead, live, margin * inside()), shown, &contacts))
+        .then(|| {
+            let (resultants, passive) = (&solution.resultants, &solution.passive);
+            cx.relieve_squeeze(
+                dead,
+                live,
+                margin * inside(),
+                resultants,
+                passive,
+                &contacts,
+            )
+        })
         .flatten()
         .filter(|(r, _)| largest_force(r) <= SQUEEZED * loads)
         .or_else(|| least_inside(&mut cx, at));

@@ -101,7 +101,8 @@ pub fn with_accuracy<P: Sliced>(
     problem: &P,
     function: &InterSliceFunction,
     prepare: &dyn Fn(&SliceModel) -> SliceModel,
-    (mut recut, budget): (Option<Recut>, &Budget),
+    mut recut: Option<Recut>,
+    budget: &Budget,
 ) {
     let mut assess = |answer: &mut Option<MethodAnswer>, method: Method| {
         let Some(answer) = answer.as_mut() else {

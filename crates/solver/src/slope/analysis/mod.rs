@@ -157,7 +157,8 @@ fn searched(
             hard_bounds,
         } => search::simple(
             problem,
-            (*grid, *hard_bounds),
+            *grid,
+            *hard_bounds,
             spencer,
             plan.candidates,
             budget,
@@ -204,7 +205,8 @@ fn other_methods(
         problem,
         &plan.interslice_function,
         &prepare,
-        (recut, budget),
+        recut,
+        budget,
     );
     found
 }

@@ -9,7 +9,7 @@ use crate::budget::{Budget, Stop};
 use crate::slope::search::{
     search_critical_circle, SearchGrid, SearchProblem, SearchSettings, SearchStatus,
 };
-use crate::slope::section::noncircular::search_noncircular;
+use crate::slope::section::noncircular::{search_noncircular, NoncircularLimits};
 use crate::slope::section::search::{search_circles, CircleSearchSettings};
 use crate::slope::section::{Polyline, SectionProblem, SlipShape};
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
@@ -28,10 +28,12 @@ fn no_circle(budget: &Budget) -> Stop {
     budget.check().err().unwrap_or(Stop::NoCandidate)
 }
 
-/// The simple slope's critical circle over `grid`.
+/// The simple slope's critical circle over `grid` (`hard_bounds`: whether its bounds were
+/// given, and stay put).
 pub(super) fn simple(
     problem: &SearchProblem,
-    (grid, hard_bounds): (SearchGrid, bool),
+    grid: SearchGrid,
+    hard_bounds: bool,
     spencer: &SpencerSettings,
     candidates: Candidates,
     budget: &Budget,
@@ -102,11 +104,11 @@ pub(super) fn section(
         let better = search_noncircular(
             problem.section(),
             &problem.surface(),
-            (
-                noncircular.vertices,
-                noncircular.max_evaluations,
-                candidates.min_depth,
-            ),
+            NoncircularLimits {
+                vertices: noncircular.vertices,
+                max_evaluations: noncircular.max_evaluations,
+                min_depth: candidates.min_depth,
+            },
             plan.slices,
             plan.seismic,
             spencer,

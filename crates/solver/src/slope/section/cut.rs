@@ -85,13 +85,7 @@ pub(super) fn place(
     seismic: Seismic,
     moment_centre: Option<(f64, f64)>,
 ) -> Result<Cut, SlopeError> {
-    place_checked(
-        section,
-        mirror,
-        shape,
-        (slices, seismic, moment_centre),
-        true,
-    )
+    place_checked(section, mirror, shape, slices, seismic, moment_centre, true)
 }
 
 /// [`place`] for a search, which solves the cut at once and counts a mass that nothing drives
@@ -104,7 +98,7 @@ pub(super) fn place_for_search(
     slices: NonZeroUsize,
     seismic: Seismic,
 ) -> Result<Cut, SlopeError> {
-    place_checked(section, Some(mirror), shape, (slices, seismic, None), false)
+    place_checked(section, Some(mirror), shape, slices, seismic, None, false)
 }
 
 /// [`place`]; `check_single`: whether a surface of one piece is checked for what drives it.
@@ -112,7 +106,9 @@ fn place_checked(
     section: &Section,
     mirror: Option<&Section>,
     shape: &SlipShape,
-    (slices, seismic, moment_centre): (NonZeroUsize, Seismic, Option<(f64, f64)>),
+    slices: NonZeroUsize,
+    seismic: Seismic,
+    moment_centre: Option<(f64, f64)>,
     check_single: bool,
 ) -> Result<Cut, SlopeError> {
     // The deepest mass that something drives towards the toe: a lens under level ground
@@ -206,10 +202,25 @@ impl Cut {
         moment_centre: Option<(f64, f64)>,
         mirrored: bool,
     ) -> Result<Self, SlopeError> {
-        let at = (slices, seismic, moment_centre, mirrored);
-        let mut cut = Self::one_state(section, shape, ends, at)?;
+        let mut cut = Self::one_state(
+            section,
+            shape,
+            ends,
+            slices,
+            seismic,
+            moment_centre,
+            mirrored,
+        )?;
         if let Some(d) = &section.drawdown {
-            let before = Self::one_state(&d.before, shape, ends, at)?;
+            let before = Self::one_state(
+                &d.before,
+                shape,
+                ends,
+                slices,
+                seismic,
+                moment_centre,
+                mirrored,
+            )?;
             cut.drawdown = Some(super::drawdown::stages(d, &before.model, &mut cut.model)?);
         }
         Ok(cut)
@@ -220,12 +231,10 @@ impl Cut {
         section: &Section,
         shape: &SlipShape,
         (entry, exit): (f64, f64),
-        (slices, seismic, moment_centre, mirrored): (
-            NonZeroUsize,
-            Seismic,
-            Option<(f64, f64)>,
-            bool,
-        ),
+        slices: NonZeroUsize,
+        seismic: Seismic,
+        moment_centre: Option<(f64, f64)>,
+        mirrored: bool,
     ) -> Result<Self, SlopeError> {
         let ground = &section.ground;
         let base = |x: f64| {
@@ -255,7 +264,8 @@ impl Cut {
             &boundaries,
             base_at,
             &points,
-            (tolerance, still_water_level(section, xa, xb)),
+            tolerance,
+            still_water_level(section, xa, xb),
         );
         spare::keep(&SPARE_SIDES, boundaries);
         let (loads, supports) = forces_on(section, &slices, ponded, crack, &mut surface);
@@ -320,7 +330,7 @@ fn forces_on(
     // Supports cross the bases only: the crack carries no force but its water.
     let face = crack.map(|c| [(c.0, c.1), (c.0, c.2)]);
     let (supports, support_loads) =
-        super::supports::forces(&section.supports, (surface, face), slices);
+        super::supports::forces(&section.supports, surface, face, slices);
     surface.extend(crack.map(|c| (c.0, c.2)));
     loads.extend(support_loads);
     (loads, supports)

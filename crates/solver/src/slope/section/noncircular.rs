@@ -303,14 +303,26 @@ struct Slicing {
     min_depth: f64,
 }
 
-/// Searches from `start` (a circle's polyline, left to right) with `vertices` points, and from
-/// the best block surface along the section's layer boundaries when that is lower. Once `budget`
-/// is spent, or `max_evaluations` trial surfaces were evaluated, every trial fails, so that the
-/// optimisers stop with the best found so far (`stop` then says which).
+/// How far a non-circular search goes and which surfaces it may answer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NoncircularLimits {
+    /// Points of the polyline moved (at least 3).
+    pub vertices: usize,
+    /// The most trial surfaces evaluated; none: as many as the budget allows.
+    pub max_evaluations: Option<usize>,
+    /// Surfaces shallower than this are no candidates (zero: any).
+    pub min_depth: f64,
+}
+
+/// Searches from `start` (a circle's polyline, left to right) with `limits.vertices` points,
+/// and from the best block surface along the section's layer boundaries when that is lower.
+/// Once `budget` is spent, or `limits.max_evaluations` trial surfaces were evaluated, every
+/// trial fails, so that the optimisers stop with the best found so far (`stop` then says
+/// which).
 pub fn search_noncircular(
     section: &Section,
     start: &[(f64, f64)],
-    (vertices, max_evaluations, min_depth): (usize, Option<usize>, f64),
+    limits: NoncircularLimits,
     slices: NonZeroUsize,
     seismic: Seismic,
     settings: &SpencerSettings,
@@ -319,6 +331,11 @@ pub fn search_noncircular(
     // The start is solved as any answer is (with Spencer's own construction when Newton's
     // method fails: a composite circle's θ can lie beyond Newton's reach from θ = 0); trial
     // surfaces without a Newton solution are skipped rather than searched for one.
+    let NoncircularLimits {
+        vertices,
+        max_evaluations,
+        min_depth,
+    } = limits;
     let start_settings = *settings;
     let trials = Trials {
         section,

@@ -13,7 +13,7 @@ use rayon::prelude::*;
 
 use super::model::Section;
 use super::shape::SlipShape;
-use super::trial::{trial, Outcome};
+use super::trial::{trial, Outcome, TrialSetup};
 use crate::budget::Budget;
 use crate::numerics::{nelder_mead_to, Minimum};
 use crate::slope::circles::{
@@ -155,13 +155,17 @@ impl Evaluator<'_> {
 
     /// The circle's outcome, Bishop's start looked for from `near` (a neighbour's F) first.
     fn factor(&self, centre: (f64, f64), radius: f64, near: Option<f64>) -> Outcome {
-        trial(
-            (self.section, &self.mirror),
-            &SlipShape::Circle { centre, radius },
-            (self.slices, self.seismic),
-            (&self.spencer, self.min_depth, near),
-            |cut| self.circles_only && self.crosses_bedrock(cut, centre, radius),
-        )
+        let setup = TrialSetup {
+            section: self.section,
+            mirror: &self.mirror,
+            slices: self.slices,
+            seismic: self.seismic,
+            spencer: &self.spencer,
+            min_depth: self.min_depth,
+        };
+        trial(&setup, &SlipShape::Circle { centre, radius }, near, |cut| {
+            self.circles_only && self.crosses_bedrock(cut, centre, radius)
+        })
     }
 
     /// Whether the circle dips below the bedrock between its ends (its mass then follows the
@@ -256,16 +260,17 @@ impl Evaluator<'_> {
             .collect()
     }
 
-    /// Nelder–Mead on (x, y, R) from each start (R, i, j) of the grid, inside the region and
-    /// its radii: each start's least F, its point and its evaluations.
+    /// Nelder–Mead on (x, y, R) from each start (R, i, j) of the grid (`factors`), inside the
+    /// region (`centres`) and its `radii`: each start's least F, its point and its evaluations.
     fn refine(
         &self,
-        region: (&CentreGrid, &Radii),
+        centres: &CentreGrid,
+        radii: &Radii,
         starts: &[Start],
-        (xs, ys): (&[f64], &[f64]),
+        factors: &FactorGrid,
         settings: &CircleSearchSettings,
     ) -> Vec<Minimum> {
-        let (centres, radii) = region;
+        let (xs, ys) = (factors.xs.as_slice(), factors.ys.as_slice());
         let (dx, dy) = centres.cell();
         let inside = |v: &[f64]| {
             v[0] >= centres.x_min
@@ -309,7 +314,8 @@ impl Evaluator<'_> {
                     objective,
                     &[xs[i], ys[j], r],
                     &[0.5 * dx, 0.5 * dy, 0.05 * r],
-                    (1e-9 * scale, F_RESOLUTION),
+                    1e-9 * scale,
+                    F_RESOLUTION,
                     settings.max_refine_evaluations,
                 )
             })
@@ -392,9 +398,8 @@ impl CircleFamily for SeveralRadii<'_> {
     }
 
     fn refine(&self, centres: &CentreGrid, starts: &[Start], factors: &FactorGrid) -> Vec<Minimum> {
-        let grid = (factors.xs.as_slice(), factors.ys.as_slice());
         self.evaluator
-            .refine((centres, self.radii), starts, grid, self.settings)
+            .refine(centres, self.radii, starts, factors, self.settings)
     }
 
     fn accepts(&self, refined: &Minimum, f0: f64) -> bool {

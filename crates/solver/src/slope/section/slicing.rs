@@ -83,7 +83,9 @@ pub(super) fn still_water_level(section: &Section, a: f64, b: f64) -> Option<f64
 fn base_water(
     section: &Section,
     still: Option<f64>,
-    (levels, layer, (xm, bm)): (&[f64], usize, (f64, f64)),
+    levels: &[f64],
+    layer: usize,
+    (xm, bm): (f64, f64),
     s: &Scratch,
     (xr, br): (f64, f64),
 ) -> (f64, (f64, f64)) {
@@ -115,7 +117,8 @@ pub(super) fn slice_all(
     xs: &[f64],
     base_at: impl Fn(usize, f64, f64) -> f64,
     points: &[f64],
-    (tolerance, still): (f64, Option<f64>),
+    tolerance: f64,
+    still: Option<f64>,
 ) -> Slicing {
     if let (Some(soil), None) = (PlainSoil::of(section), still) {
         let (slices, surface) = super::plain::slices(section, soil, xs, base_at, points);
@@ -127,13 +130,14 @@ pub(super) fn slice_all(
     }
     // The buffers live with the thread: a search cuts thousands of surfaces on each.
     SCRATCH.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut s) => slice_with(section, xs, base_at, points, (tolerance, still), &mut s),
+        Ok(mut s) => slice_with(section, xs, base_at, points, tolerance, still, &mut s),
         Err(_) => slice_with(
             section,
             xs,
             base_at,
             points,
-            (tolerance, still),
+            tolerance,
+            still,
             &mut Scratch::default(),
         ),
     })
@@ -149,13 +153,13 @@ fn slice_with(
     xs: &[f64],
     base_at: impl Fn(usize, f64, f64) -> f64,
     points: &[f64],
-    (tolerance, still): (f64, Option<f64>),
+    tolerance: f64,
+    still: Option<f64>,
     s: &mut Scratch,
 ) -> Slicing {
     s.line_water = water_from_line_alone(section);
-    let mut tan_phi = std::mem::take(&mut s.tan_phi);
-    tan_phi.clear();
-    tan_phi.extend(
+    s.tan_phi.clear();
+    s.tan_phi.extend(
         section
             .layers
             .iter()
@@ -183,7 +187,8 @@ fn slice_with(
             ((xl, bl), (xr, br)),
             column_left,
             points,
-            (tolerance, &tan_phi, still),
+            tolerance,
+            still,
             s,
         );
         out.slices.push(slice);
@@ -192,7 +197,6 @@ fn slice_with(
         std::mem::swap(&mut s.left, &mut s.right);
         (bl, column_left) = (br, column_right);
     }
-    s.tan_phi = tan_phi;
     out
 }
 
@@ -215,7 +219,8 @@ fn piece(
     ((xa, ya), (xb, yb)): ((f64, f64), (f64, f64)),
     (a, b): (&[f64], &[f64]),
     column_a: (f64, f64),
-    (ponded, still): (bool, Option<f64>),
+    ponded: bool,
+    still: Option<f64>,
     middle: &mut Levels,
 ) -> Piece {
     middle.midway(a, b);
@@ -305,14 +310,15 @@ impl Totals {
 }
 
 /// The slice from ((x_l, b_l), (x_r, b_r)) on its base, the levels at its sides read into
-/// `s.left` and `s.right` and the column over its left side given: the slice, the column over
-/// its right side, and the ponded water on it.
+/// `s.left` and `s.right` (and tan φ′ per layer into `s.tan_phi`) and the column over its left
+/// side given: the slice, the column over its right side, and the ponded water on it.
 fn slice(
     section: &Section,
     ((xl, bl), (xr, br)): ((f64, f64), (f64, f64)),
     column_left: (f64, f64),
     points: &[f64],
-    (tolerance, tan_phi, still): (f64, &[f64], Option<f64>),
+    tolerance: f64,
+    still: Option<f64>,
     s: &mut Scratch,
 ) -> (BaseSlice, (f64, f64), (f64, f64, f64)) {
     let width = xr - xl;
@@ -327,7 +333,8 @@ fn slice(
             ((xl, bl), (xr, br)),
             (s.left.values(), s.right.values()),
             column_left,
-            (ponded, still),
+            ponded,
+            still,
             &mut s.middle,
         ))
     } else {
@@ -347,7 +354,8 @@ fn slice(
                 ((xa, ya), (xb, yb)),
                 (s.a.values(), s.b.values()),
                 column_a,
-                (ponded, still),
+                ponded,
+                still,
                 &mut s.middle,
             ));
             (xa, ya, column_a) = (xb, yb, column_b);
@@ -363,7 +371,7 @@ fn slice(
         ((xl, bl), (xr, br)),
         &totals,
         layer,
-        tan_phi[layer],
+        s.tan_phi[layer],
         still,
     );
     (slice, column_right, totals.water_force)
@@ -388,8 +396,8 @@ fn base_slice(
     let rise = br - bl;
     let base_length = (width * width + rise * rise).sqrt();
     let (pore_pressure, side_water) =
-        base_water(section, still, (levels, layer, (xm, bm)), s, (xr, br));
-    let (cohesion, tan_phi) = strength(section, (layer, tan_phi), (bm, ground(levels)), || {
+        base_water(section, still, levels, layer, (xm, bm), s, (xr, br));
+    let (cohesion, tan_phi) = strength(section, layer, tan_phi, (bm, ground(levels)), || {
         (weight / width * (width / base_length).powi(2) - pore_pressure).max(0.0)
     });
     BaseSlice {
@@ -418,7 +426,8 @@ fn base_slice(
 #[inline]
 fn strength(
     section: &Section,
-    (layer, tan_phi): (usize, f64),
+    layer: usize,
+    tan_phi: f64,
     (y, g): (f64, f64),
     sigma: impl Fn() -> f64,
 ) -> (f64, f64) {
@@ -491,14 +500,15 @@ mod tests {
                         &xs,
                         base_at,
                         &points,
-                        (1e-9, None),
+                        1e-9,
+                        None,
                         &mut Scratch::default(),
                     );
                     let (slices, surface) = plain::slices(section, soil, &xs, base_at, &points);
                     assert_eq!(slices, general.slices);
                     assert_eq!(surface, general.surface);
                     assert!(general.ponded.iter().all(|&p| p == (0.0, 0.0, 0.0)));
-                    let sliced = slice_all(section, &xs, base_at, &points, (1e-9, None));
+                    let sliced = slice_all(section, &xs, base_at, &points, 1e-9, None);
                     assert_eq!(sliced.slices, general.slices);
                     assert!(sliced.ponded.is_empty());
                     compared += slices.len();

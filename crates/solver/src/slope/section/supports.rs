@@ -439,7 +439,8 @@ pub(super) type Segment = [(f64, f64); 2];
 /// only the crack holds nothing, and says so (`crack_only`).
 pub(super) fn forces(
     supports: &[Support],
-    (surface, crack): (&[(f64, f64)], Option<Segment>),
+    surface: &[(f64, f64)],
+    crack: Option<Segment>,
     slices: &[BaseSlice],
 ) -> (Vec<SupportForce>, Vec<ExternalLoad>) {
     let mut out = Vec::with_capacity(supports.len());

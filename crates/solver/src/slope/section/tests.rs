@@ -563,14 +563,15 @@ fn a_searched_circle_answers_the_same_after_other_circles_on_its_thread() {
     let layered_mirror = layered.mirrored();
     let settings = SpencerSettings::default();
     let circle = |n: usize, on: (&Section, &Section), centre: (f64, f64), radius: f64| {
-        trial::circle_outcome(
-            on,
-            (centre, radius),
-            (NonZeroUsize::new(n).unwrap(), Seismic::default()),
-            (&settings, 0.0),
-            None,
-        )
-        .unwrap()
+        let setup = trial::TrialSetup {
+            section: on.0,
+            mirror: on.1,
+            slices: NonZeroUsize::new(n).unwrap(),
+            seismic: Seismic::default(),
+            spencer: &settings,
+            min_depth: 0.0,
+        };
+        trial::circle_outcome(&setup, centre, radius, None).unwrap()
     };
     let centre = (9.63168, 63.76416);
     let radius = 9.63168f64.hypot(63.76416);

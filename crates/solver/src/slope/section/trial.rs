@@ -14,35 +14,54 @@ use crate::slope::spencer::{
 /// cuts one but has no solution (with Bishop's F there, if any).
 pub type Outcome = Result<SpencerFactor, Option<Option<f64>>>;
 
-/// Spencer's F (and θ) of one trial circle of a search on `section` (`mirror`: the section
-/// seen from behind, built once per search), Bishop's start looked for from `near` first when
-/// given (a neighbouring circle's F, [`spencer_factor_outcome_near`]); `Err(None)` when it
-/// cuts no mass (or one shallower than `min_depth`), `Err(Some(bishop))` when it has no
-/// solution.
+/// What every trial surface of one search shares: the section it is placed on, how it is cut
+/// into slices and how it is solved.
+#[derive(Debug, Clone, Copy)]
+pub struct TrialSetup<'a> {
+    /// The section searched.
+    pub section: &'a Section,
+    /// The section seen from behind ([`Section::mirrored`]), built once per search.
+    pub mirror: &'a Section,
+    /// About how many slices each surface is cut into.
+    pub slices: NonZeroUsize,
+    /// The seismic coefficients.
+    pub seismic: Seismic,
+    /// How Spencer's equations are solved.
+    pub spencer: &'a SpencerSettings,
+    /// Masses shallower than this cut no mass (are no candidates).
+    pub min_depth: f64,
+}
+
+/// Spencer's F (and θ) of the trial circle through `centre` of `radius` of a search
+/// (`setup`), Bishop's start looked for from `near` first when given (a neighbouring circle's
+/// F, [`spencer_factor_outcome_near`]); `Err(None)` when it cuts no mass (or one shallower
+/// than `setup.min_depth`), `Err(Some(bishop))` when it has no solution.
 pub fn circle_outcome(
-    (section, mirror): (&Section, &Section),
-    (centre, radius): ((f64, f64), f64),
-    (slices, seismic): (NonZeroUsize, Seismic),
-    (spencer, min_depth): (&SpencerSettings, f64),
+    setup: &TrialSetup<'_>,
+    centre: (f64, f64),
+    radius: f64,
     near: Option<f64>,
 ) -> Outcome {
-    trial(
-        (section, mirror),
-        &SlipShape::Circle { centre, radius },
-        (slices, seismic),
-        (spencer, min_depth, near),
-        |_| false,
-    )
+    trial(setup, &SlipShape::Circle { centre, radius }, near, |_| {
+        false
+    })
 }
 
 /// [`circle_outcome`] of any trial surface; `excluded(cut)`: whether the cut is no candidate.
 pub(super) fn trial(
-    (section, mirror): (&Section, &Section),
+    setup: &TrialSetup<'_>,
     shape: &SlipShape,
-    (slices, seismic): (NonZeroUsize, Seismic),
-    (spencer, min_depth, near): (&SpencerSettings, f64, Option<f64>),
+    near: Option<f64>,
     excluded: impl Fn(&Cut) -> bool,
 ) -> Outcome {
+    let TrialSetup {
+        section,
+        mirror,
+        slices,
+        seismic,
+        spencer,
+        min_depth,
+    } = *setup;
     let cut = place_for_search(section, mirror, shape, slices, seismic).map_err(|e| match e {
         // A drawdown stage without a solution: a mass that cannot be answered.
         SlopeError::NoSlipMass {
