@@ -28,11 +28,7 @@ fn every_family_is_in_the_document_and_a_batch_route() {
             "{route}: no POST in the document"
         );
         assert!(
-            batch_routes
-                .as_array()
-                .unwrap()
-                .iter()
-                .any(|r| r == route),
+            batch_routes.as_array().unwrap().iter().any(|r| r == route),
             "{route}: not a batch route in the document"
         );
         // The family's own document holds its paths and nothing of another family.
