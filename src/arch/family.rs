@@ -10,7 +10,7 @@ use super::drawing;
 use super::input::ArchInput;
 use super::request::{DeadLoadRequest, LiveLoadRequest};
 use super::response::{ArchOutcomeDto, DeadLoadResponse, LiveLoadResponse};
-use super::solve::{solve, Problem};
+use super::solve::solve;
 use super::solved::SolvedArch;
 use super::study::{prepare_live, run_live, PreparedLive};
 use super::tables::{arch_table, rolling_table, ArchTableDto, ArchTableQuery};
@@ -20,6 +20,7 @@ use crate::report::{table, ReportTable};
 use crate::state::AppState;
 use crate::study::run::Tally;
 use crate::table::Csv;
+use thrustline_solver::arch::analysis::ArchPlan;
 
 /// `POST /arch/dead-load` and its twins: Livesley's λ₀.
 pub struct DeadLoad;
@@ -38,7 +39,7 @@ fn report_tables(outcome: &ArchOutcomeDto) -> Vec<ReportTable> {
 
 impl Family for DeadLoad {
     type Request = DeadLoadRequest;
-    type Prepared = ArchInput;
+    type Prepared = (ArchInput, ArchPlan);
     type Solved = SolvedArch;
     type Answer = DeadLoadResponse;
     type Tables = ArchTableQuery;
@@ -49,16 +50,16 @@ impl Family for DeadLoad {
         _state: &AppState,
         request: &DeadLoadRequest,
         _body: &Value,
-    ) -> Result<ArchInput, ApiError> {
+    ) -> Result<(ArchInput, ArchPlan), ApiError> {
         request.validate()
     }
 
     async fn run(
         state: &AppState,
-        input: ArchInput,
+        (input, plan): (ArchInput, ArchPlan),
         _tally: Arc<Tally>,
     ) -> Result<SolvedArch, ApiError> {
-        solve(state, Problem::DeadLoad, input).await
+        solve(state, input, plan).await
     }
 
     fn answer(_request: &DeadLoadRequest, solved: &SolvedArch) -> DeadLoadResponse {

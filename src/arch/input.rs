@@ -5,6 +5,7 @@
 
 use std::num::NonZeroUsize;
 
+use thrustline_solver::arch::analysis::ArchPlan;
 use thrustline_solver::arch::fill::{Extrados, ExtradosFaces, Fill, RoadLoad};
 use thrustline_solver::arch::{
     ArchProblem, Assembly, CircularArch, Crushing, Formulation, LimitSettings, LiveLoad,
@@ -18,10 +19,11 @@ use super::geometry::{
     VoussoirDto,
 };
 use super::material::material;
+use super::plan::{plan, Problem};
 use super::request::{
     ArchDetailDto, DeadLoadRequest, FrictionDto, LimitFields, LiveLoadRequest, LoadDto,
 };
-use super::rolling::{Rolling, RollingDto};
+use super::rolling::RollingDto;
 use crate::error::ApiError;
 use crate::limits::{
     BASE_ANGLE_DEG, BLOCKS, COORDINATE, CRUSHING_PLANES, FORCE, LENGTH, LOADS, POSITIVE_STRESS,
@@ -29,31 +31,26 @@ use crate::limits::{
 };
 use crate::validation::{count, count_within, finite, within};
 
-/// A validated dead- or live-load request, ready for the solver.
+/// A validated dead- or live-load request: the structure the solver analyses and what the
+/// answer needs of the request beside the solver's outcome. Its plan is the other half of what
+/// validation gives ([`DeadLoadRequest::validate`]).
 #[derive(Debug, Clone)]
 pub struct ArchInput {
     /// The structure, its loads and limits.
     pub problem: ArchProblem,
-    /// The interior-point settings, within the service's time limit.
-    pub settings: LimitSettings,
     /// Whether the voussoirs are annular sectors (drawn with arcs).
     pub is_curved: bool,
     /// The fill's weight, when there is a fill.
     pub fill_weight: Option<f64>,
-    /// A rolling load's stops and loads.
-    pub rolling: Option<Rolling>,
+    /// A rolling load's stops (their loads are the plan's).
+    pub rolling_positions: Option<Vec<f64>>,
     /// With `fill.passive`: whether passive restraint was asked for (its forces are the
     /// problem's).
     pub has_passive: bool,
-    /// `friction: non_associative`.
-    pub non_associative: bool,
     /// The fill, the faces it lies on and the road loads, for drawings.
     pub fill: Option<(Fill, ExtradosFaces, Vec<RoadLoad>)>,
     /// The details the answer carries (`include`; all when not given).
     pub include: Vec<ArchDetailDto>,
-    /// Rings that cannot slip on each other (one span, no rolling load): the same request on
-    /// one ring of the whole thickness, whose λ the answer is compared with (`rings_locked`).
-    pub bonded: Option<ArchProblem>,
     /// A partial-factor check: the problem is in its design values.
     pub design: Option<super::design::ArchFactors>,
 }
@@ -80,25 +77,25 @@ impl Extras<'_> {
 }
 
 impl DeadLoadRequest {
-    /// Validates the request into the solver's input.
-    pub fn validate(&self) -> Result<ArchInput, ApiError> {
+    /// Validates the request into the structure and the plan of its analysis.
+    pub fn validate(&self) -> Result<(ArchInput, ArchPlan), ApiError> {
         let extras = Extras {
             fill: self.fill.as_ref(),
             ..Extras::default()
         };
-        input(self.limit_fields(), &[], extras)
+        input(Problem::DeadLoad, self.limit_fields(), &[], extras)
     }
 }
 
 impl LiveLoadRequest {
-    /// Validates the request into the solver's input.
-    pub fn validate(&self) -> Result<ArchInput, ApiError> {
+    /// Validates the request into the structure and the plan of its analysis.
+    pub fn validate(&self) -> Result<(ArchInput, ArchPlan), ApiError> {
         if let Some(design) = &self.design {
             // The design values, once; the input remembers the check for the answer.
             let factors = super::design::factors(design)?;
-            let mut input = super::design::in_design_values(self, &factors).validate()?;
+            let (mut input, plan) = super::design::in_design_values(self, &factors).validate()?;
             input.design = Some(factors);
-            return Ok(input);
+            return Ok((input, plan));
         }
         count_within("loads", self.loads.len(), LOADS)?;
         if self.friction == FrictionDto::NonAssociative && self.rolling.is_some() {
@@ -125,11 +122,19 @@ impl LiveLoadRequest {
             road_loads: &self.road_loads,
             rolling: self.rolling.as_ref(),
         };
-        input(self.limit_fields(), &self.loads, extras)
+        input(Problem::LiveLoad, self.limit_fields(), &self.loads, extras)
     }
 }
 
-fn input(fields: LimitFields, loads: &[LoadDto], extras: Extras) -> Result<ArchInput, ApiError> {
+/// The structure of a request and the plan of its analysis: the programme (a rolling load's
+/// stops), the treatment of friction, the settings, the critical position's refinement and the
+/// bonded ring to compare with.
+fn input(
+    which: Problem,
+    fields: LimitFields,
+    loads: &[LoadDto],
+    extras: Extras,
+) -> Result<(ArchInput, ArchPlan), ApiError> {
     let material = material(fields.material)?;
     let (assembly, bridge_faces) = assembly(fields.geometry)?;
     let is_curved = matches!(fields.geometry, GeometryDto::Circular(c) if c.is_curved_single());
@@ -162,22 +167,21 @@ fn input(fields: LimitFields, loads: &[LoadDto], extras: Extras) -> Result<ArchI
     let problem = with_rings_and_crushing(problem, &fields)?;
     let settings = settings(&fields, &problem, filled.passive.is_some())?;
     let bonded = bonded(&fields, &problem, loads, extras);
-    Ok(ArchInput {
-        bonded,
+    let (plan, rolling_positions) = plan(which, fields.friction, settings, filled.rolling, bonded);
+    let input = ArchInput {
         design: None,
         problem,
-        settings,
         is_curved,
         fill_weight: extras.fill.map(|_| filled.weight),
-        rolling: filled.rolling,
+        rolling_positions,
         has_passive: filled.passive.is_some(),
-        non_associative: fields.friction == FrictionDto::NonAssociative,
         fill: filled
             .fill
             .zip(faces)
             .map(|(f, faces)| (f, faces, filled.road)),
         include: include(fields.include),
-    })
+    };
+    Ok((input, plan))
 }
 
 /// The live loads the problem starts with: those on blocks and the road loads dispersed onto
@@ -272,7 +276,9 @@ fn bonded(
         geometry: &single,
         ..*fields
     };
-    input(fields, loads, extras).ok().map(|i| i.problem)
+    input(Problem::LiveLoad, fields, loads, extras)
+        .ok()
+        .map(|(i, _)| i.problem)
 }
 
 /// The ring interfaces' limits and friction (arches of more than one ring) and crushing.

@@ -18,6 +18,7 @@ pub mod interfaces;
 pub mod material;
 pub mod mechanism;
 pub mod minimum_thickness;
+pub mod plan;
 pub mod profile;
 pub mod request;
 pub mod response;

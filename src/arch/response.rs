@@ -254,13 +254,13 @@ impl ArchOutcomeDto {
                 .map(|m| one_based(&m.crushing))
                 .unwrap_or_default(),
             mechanism: detail(ArchDetailDto::Mechanism).map(MechanismDto::new),
-            friction_may_overestimate: !solved.input.non_associative
+            friction_may_overestimate: !solved.is_non_associative
                 && solved
                     .friction
                     .as_ref()
                     .is_some_and(|f| f.associative_may_overestimate()),
             non_associative: solved.friction.as_ref().and_then(|f| {
-                (solved.input.non_associative || f.history.len() > 1)
+                (solved.is_non_associative || f.history.len() > 1)
                     .then(|| NonAssociativeOutDto::new(f, included(ArchDetailDto::Mechanism)))
             }),
             thrust_line: thrust_points(thrust_line),
@@ -276,8 +276,8 @@ impl ArchOutcomeDto {
                 iterations: solution.iterations,
                 programmes: solution.programmes,
                 time_ms: solution.solve_time_secs * 1e3,
-                formulation: solved.input.settings.formulation.into(),
-                tolerance: solved.input.settings.tolerance,
+                formulation: solved.settings.formulation.into(),
+                tolerance: solved.settings.tolerance,
             },
             omitted,
         }

@@ -1,8 +1,9 @@
-//! The arch routes' one pipeline: a validated request → its plan (the programme and the
-//! treatment of friction) → what it will cost → the analysis on the pool within the request's
-//! budget → the solved arch every answer (JSON, CSV, SVG, report) is built from.
+//! The arch routes' one pipeline: a validated request and its plan (the programme, the
+//! treatment of friction, the stages after it) → what it will cost → the analysis on the pool
+//! within the request's budget → the solved arch every answer (JSON, CSV, SVG, report) is built
+//! from.
 
-use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme, RefineCritical};
+use thrustline_solver::arch::analysis::{analyse, ArchPlan, Friction, Programme};
 use thrustline_solver::arch::memory::{memory_bound, on_chain};
 use thrustline_solver::arch::ArchError;
 use thrustline_solver::budget::Budget;
@@ -15,49 +16,6 @@ use crate::state::AppState;
 use crate::stop::Work;
 use crate::study::run::StudyStop;
 use crate::study::StudyAnswers;
-
-/// Which of Livesley's two programmes a route asks for.
-#[derive(Debug, Clone, Copy)]
-pub enum Problem {
-    /// `dead-load`: λ₀.
-    DeadLoad,
-    /// `live-load`: λ.
-    LiveLoad,
-}
-
-/// The plan of a validated request: the programme (a rolling load's stops for a live load that
-/// rolls: moved out of the input, which keeps the positions; a thousand stops of a long chain's
-/// loads are tens of MB), the treatment of friction, the critical position narrowed
-/// (`refine_critical`) and, where the rings lock, the bonded single ring to compare with (moved
-/// out of the input).
-pub fn plan(which: Problem, input: &mut ArchInput) -> ArchPlan {
-    let programme = match (which, input.rolling.as_mut()) {
-        (Problem::DeadLoad, _) => Programme::DeadLoad,
-        (Problem::LiveLoad, Some(rolling)) => {
-            Programme::Rolling(std::mem::take(&mut rolling.loads))
-        }
-        (Problem::LiveLoad, None) => Programme::LiveLoad,
-    };
-    let friction = if input.non_associative {
-        Friction::NonAssociative
-    } else {
-        Friction::Checked
-    };
-    let refine = input.rolling.as_ref().and_then(|r| {
-        let axles = r.refine.clone()?;
-        (r.positions.len() > 1).then(|| RefineCritical {
-            positions: r.positions.clone(),
-            axles,
-        })
-    });
-    ArchPlan {
-        programme,
-        friction,
-        settings: input.settings.clone(),
-        refine,
-        bonded: input.bonded.take(),
-    }
-}
 
 /// Chains of up to this many blocks, without a rolling load or the friction iteration, are
 /// light (a few milliseconds: docs/performance.md).
@@ -100,24 +58,29 @@ pub type StudyJob =
 /// the outcome rule's 422 naming `geometry` (503 when other solves ran beside it).
 pub async fn solve(
     state: &AppState,
-    which: Problem,
     input: ArchInput,
+    plan: ArchPlan,
 ) -> Result<SolvedArch, ApiError> {
-    solve_studied(state, which, input, None).await
+    solve_studied(state, input, plan, None).await
 }
 
 /// [`solve`], then the request's studies (`job`) within the same budget; a study stopped is
 /// the outcome rule's 422 naming the field that sets its work.
 pub async fn solve_studied(
     state: &AppState,
-    which: Problem,
-    mut input: ArchInput,
+    input: ArchInput,
+    plan: ArchPlan,
     job: Option<StudyJob>,
 ) -> Result<SolvedArch, ApiError> {
-    let plan = plan(which, &mut input);
     let mut cost = cost(state, &input, &plan)?;
     cost.light &= job.is_none();
     let problem = input.problem.clone();
+    // What the answer names of the plan, kept before the plan goes to the pool.
+    let (is_dead_load, friction, settings) = (
+        plan.programme == Programme::DeadLoad,
+        plan.friction,
+        plan.settings.clone(),
+    );
     let ran = state
         .pool
         .run_budgeted(state.solve_time_limit, cost, move |budget| {
@@ -136,7 +99,7 @@ pub async fn solve_studied(
         .map_err(|stopped| crate::study::refusal(state, stopped, advice, ran.shared))?
         .unwrap_or_default();
     tracing::info!(
-        problem = ?which,
+        dead_load = is_dead_load,
         blocks = outcome.problem.assembly().blocks.len(),
         interfaces = outcome.problem.assembly().interfaces.len(),
         iterations = outcome.solution.iterations,
@@ -153,7 +116,7 @@ pub async fn solve_studied(
         };
         return Err(state.refuse(outcome.stop, work, ran.shared));
     };
-    let mut solved = SolvedArch::new(input, outcome, status);
+    let mut solved = SolvedArch::new(input, outcome, status, friction, settings);
     solved.studies = studies;
     Ok(solved)
 }

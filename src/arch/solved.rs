@@ -2,9 +2,11 @@
 //! answer names it. The JSON answer, the tables, the drawing and the report are built from it.
 
 use serde::Serialize;
-use thrustline_solver::arch::analysis::{ArchOutcome, ArchStatus};
+use thrustline_solver::arch::analysis::{ArchOutcome, ArchStatus, Friction};
 use thrustline_solver::arch::non_associative::NonAssociative;
-use thrustline_solver::arch::{LimitSolution, LimitStatus, SolverFailure, ThrustPoint};
+use thrustline_solver::arch::{
+    LimitSettings, LimitSolution, LimitStatus, SolverFailure, ThrustPoint,
+};
 use utoipa::ToSchema;
 
 use super::input::ArchInput;
@@ -74,17 +76,29 @@ pub struct SolvedArch {
     pub bonded_load_factor: Option<f64>,
     /// What the request's studies answered (nothing without studies).
     pub studies: crate::study::StudyAnswers,
+    /// Whether the plan answered by the non-associative iteration (`friction:
+    /// non_associative`).
+    pub is_non_associative: bool,
+    /// The programmes' settings (the formulation and tolerance the answer names).
+    pub settings: LimitSettings,
 }
 
 impl SolvedArch {
-    /// The answer to `input` from the analysis' `outcome` with its `status`; the problem shown
-    /// is the one answered (a rolling load's critical stop).
-    pub fn new(mut input: ArchInput, outcome: ArchOutcome, status: ArchStatusDto) -> Self {
+    /// The answer to `input` from the analysis' `outcome` with its `status`, under the plan's
+    /// treatment of `friction` and `settings`; the problem shown is the one answered (a rolling
+    /// load's critical stop).
+    pub fn new(
+        mut input: ArchInput,
+        outcome: ArchOutcome,
+        status: ArchStatusDto,
+        friction: Friction,
+        settings: LimitSettings,
+    ) -> Self {
         let rolling = outcome
             .rolling
             .as_ref()
-            .zip(input.rolling.take())
-            .map(|(curve, stops)| RollingOutDto::new(curve, stops.positions));
+            .zip(input.rolling_positions.take())
+            .map(|(curve, positions)| RollingOutDto::new(curve, positions));
         input.problem = outcome.problem;
         Self {
             input,
@@ -95,6 +109,8 @@ impl SolvedArch {
             friction: outcome.friction,
             bonded_load_factor: outcome.bonded_load_factor,
             studies: Default::default(),
+            is_non_associative: friction == Friction::NonAssociative,
+            settings,
         }
     }
 }

@@ -15,7 +15,7 @@ use thrustline_solver::budget::Budget;
 
 use super::input::ArchInput;
 use super::request::LiveLoadRequest;
-use super::solve::{plan as route_plan, solve_studied, Problem, StudyJob};
+use super::solve::{solve_studied, StudyJob};
 use super::solved::SolvedArch;
 use crate::error::ApiError;
 use crate::state::AppState;
@@ -26,13 +26,16 @@ use crate::study::Study;
 /// A live-load request read into what runs: its input and its studies.
 pub struct PreparedLive {
     input: ArchInput,
+    plan: ArchPlan,
     study: Option<Study>,
 }
 
 /// Validates a live-load request and its studies (its `body` as sent): every 4xx of the input.
 pub fn prepare_live(request: &LiveLoadRequest, body: &Value) -> Result<PreparedLive, ApiError> {
+    let (input, analysis) = request.validate()?;
     Ok(PreparedLive {
-        input: request.validate()?,
+        input,
+        plan: analysis,
         study: plan(request, body)?,
     })
 }
@@ -44,12 +47,12 @@ pub async fn run_live(
     prepared: PreparedLive,
     tally: Arc<Tally>,
 ) -> Result<SolvedArch, ApiError> {
-    let PreparedLive { input, study } = prepared;
+    let PreparedLive { input, plan, study } = prepared;
     let job = study.map(|study| {
         tally.expect(crate::study::analyses(&study));
         job(study, tally)
     });
-    solve_studied(state, Problem::LiveLoad, input, job).await
+    solve_studied(state, input, plan, job).await
 }
 
 /// The request's studies, checked against its `body` as sent (None without any).
@@ -84,7 +87,7 @@ pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
         Ok(typed) => typed,
         Err(e) => return Sampled::Refused(e.to_string()),
     };
-    let mut input = match typed.validate() {
+    let (input, plan) = match typed.validate() {
         Ok(input) => input,
         Err(e) => return Sampled::Refused(e.to_string()),
     };
@@ -93,7 +96,7 @@ pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
     let plan = ArchPlan {
         refine: None,
         bonded: None,
-        ..route_plan(Problem::LiveLoad, &mut input)
+        ..plan
     };
     match analyse(&input.problem, &plan, budget) {
         Ok(outcome) if outcome.stop.is_finished() => match outcome.status {

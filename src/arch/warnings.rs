@@ -52,7 +52,7 @@ pub fn warnings(solved: &SolvedArch) -> Vec<Warning> {
         );
     }
     let friction = solved.friction.as_ref();
-    if !solved.input.non_associative && friction.is_some_and(|f| f.associative_may_overestimate()) {
+    if !solved.is_non_associative && friction.is_some_and(|f| f.associative_may_overestimate()) {
         let sliding = solved
             .solution
             .mechanism
