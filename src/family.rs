@@ -51,11 +51,7 @@ pub trait Family: Send + Sync + 'static {
 
     /// Validates `request` (`body`: the JSON it was read from): every 4xx of the input, and
     /// nothing computed.
-    fn prepare(
-        state: &AppState,
-        request: &Self::Request,
-        body: &Value,
-    ) -> Result<Self::Prepared, ApiError>;
+    fn prepare(request: &Self::Request, body: &Value) -> Result<Self::Prepared, ApiError>;
 
     /// Runs the analysis (and the studies) on the pool within the request's budget; `tally`
     /// counts the studies' analyses as they finish.
@@ -113,9 +109,10 @@ pub struct Registration {
     /// The OpenAPI paths of those routes.
     pub openapi: fn() -> utoipa::openapi::OpenApi,
     /// The ranges its request's properties state (schema, property, limit), beside the shared
-    /// table `crate::limits::schema::SCHEMA_LIMITS`: the document writes them and the limits
-    /// test checks that the service refuses past them. The families of Parts I–III keep theirs
-    /// in the shared table.
+    /// table `crate::limits::schema::SCHEMA_LIMITS`: the document writes them, and the limits
+    /// test checks that each lands on a property the document states (that the service refuses
+    /// past one is checked for the cases that test lists). The families of Parts I–III keep
+    /// theirs in the shared table.
     pub limits: &'static [(&'static str, &'static str, crate::limits::Limit)],
 }
 
@@ -126,7 +123,7 @@ pub async fn solve<F: Family>(
     body: &Value,
     tally: Arc<Tally>,
 ) -> Result<F::Solved, ApiError> {
-    let prepared = F::prepare(state, request, body)?;
+    let prepared = F::prepare(request, body)?;
     F::run(state, prepared, tally).await
 }
 
@@ -152,7 +149,7 @@ pub fn stream<F: Family>(
     id: String,
     ApiJsonWithBody { request, body }: ApiJsonWithBody<F::Request>,
 ) -> Result<Response, ApiError> {
-    let prepared = F::prepare(&state, &request, &body)?;
+    let prepared = F::prepare(&request, &body)?;
     let tally = Arc::new(Tally::default());
     let counted = tally.clone();
     Ok(crate::study::stream::ndjson(tally, id, async move {

@@ -47,7 +47,6 @@ impl Family for DeadLoad {
     const ROUTE: &'static str = "/arch/dead-load";
 
     fn prepare(
-        _state: &AppState,
         request: &DeadLoadRequest,
         _body: &Value,
     ) -> Result<(ArchInput, ArchPlan), ApiError> {
@@ -100,11 +99,7 @@ impl Family for LiveLoad {
     const ROUTE: &'static str = "/arch/live-load";
     const STREAMS: bool = true;
 
-    fn prepare(
-        _state: &AppState,
-        request: &LiveLoadRequest,
-        body: &Value,
-    ) -> Result<PreparedLive, ApiError> {
+    fn prepare(request: &LiveLoadRequest, body: &Value) -> Result<PreparedLive, ApiError> {
         prepare_live(request, body)
     }
 

@@ -11,12 +11,12 @@ use super::request::{DeadLoadRequest, LiveLoadRequest};
 use super::response::{DeadLoadResponse, LiveLoadResponse, LiveLoadStreamLine};
 use super::tables::{ArchTableDto, ArchTableQuery};
 use crate::error::ProblemResponses;
-use crate::family::{route, Registration};
+use crate::family::{route, Family, Registration};
 use crate::state::AppState;
 
 /// The dead load's registration.
 pub const DEAD_LOAD: Registration = Registration {
-    route: "/arch/dead-load",
+    route: <DeadLoad as Family>::ROUTE,
     routes: dead_load_routes,
     openapi: DeadLoadApi::openapi,
     limits: &[],
@@ -24,7 +24,7 @@ pub const DEAD_LOAD: Registration = Registration {
 
 /// The live load's registration.
 pub const LIVE_LOAD: Registration = Registration {
-    route: "/arch/live-load",
+    route: <LiveLoad as Family>::ROUTE,
     routes: live_load_routes,
     openapi: LiveLoadApi::openapi,
     limits: &[],

@@ -32,11 +32,7 @@ impl Family for Spencer {
     const ROUTE: &'static str = "/slope/spencer";
     const STREAMS: bool = true;
 
-    fn prepare(
-        _state: &AppState,
-        request: &SpencerRequest,
-        body: &Value,
-    ) -> Result<Prepared, ApiError> {
+    fn prepare(request: &SpencerRequest, body: &Value) -> Result<Prepared, ApiError> {
         prepare(request, body)
     }
 

@@ -11,12 +11,12 @@ use super::request::SpencerRequest;
 use super::response::{SpencerResponse, SpencerStreamLine};
 use super::tables::{SlopeTableDto, SlopeTableQuery};
 use crate::error::ProblemResponses;
-use crate::family::{route, Registration};
+use crate::family::{route, Family, Registration};
 use crate::state::AppState;
 
 /// The family's registration.
 pub const REGISTRATION: Registration = Registration {
-    route: "/slope/spencer",
+    route: <Spencer as Family>::ROUTE,
     routes,
     openapi: Api::openapi,
     limits: &[],

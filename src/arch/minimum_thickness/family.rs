@@ -39,11 +39,7 @@ impl Family for Thickness {
 
     const ROUTE: &'static str = "/arch/minimum-thickness";
 
-    fn prepare(
-        _state: &AppState,
-        request: &MinimumThicknessRequest,
-        _body: &Value,
-    ) -> Result<Planned, ApiError> {
+    fn prepare(request: &MinimumThicknessRequest, _body: &Value) -> Result<Planned, ApiError> {
         plan(request)
     }
 

@@ -10,12 +10,12 @@ use super::super::tables::{MinimumThicknessTableDto, MinimumThicknessTableQuery}
 use super::family::Thickness;
 use super::{MinimumThicknessRequest, MinimumThicknessResponse};
 use crate::error::ProblemResponses;
-use crate::family::{route, Registration};
+use crate::family::{route, Family, Registration};
 use crate::state::AppState;
 
 /// The family's registration.
 pub const REGISTRATION: Registration = Registration {
-    route: "/arch/minimum-thickness",
+    route: <Thickness as Family>::ROUTE,
     routes,
     openapi: Api::openapi,
     limits: &[],
