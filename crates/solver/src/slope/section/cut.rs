@@ -202,25 +202,13 @@ impl Cut {
         moment_centre: Option<(f64, f64)>,
         mirrored: bool,
     ) -> Result<Self, SlopeError> {
-        let mut cut = Self::one_state(
-            section,
-            shape,
-            ends,
-            slices,
-            seismic,
-            moment_centre,
-            mirrored,
-        )?;
+        // The surface cut in a state of the section (a drawdown's stage before, or now).
+        let cut_in = |state: &Section| {
+            Self::one_state(state, shape, ends, slices, seismic, moment_centre, mirrored)
+        };
+        let mut cut = cut_in(section)?;
         if let Some(d) = &section.drawdown {
-            let before = Self::one_state(
-                &d.before,
-                shape,
-                ends,
-                slices,
-                seismic,
-                moment_centre,
-                mirrored,
-            )?;
+            let before = cut_in(&d.before)?;
             cut.drawdown = Some(super::drawdown::stages(d, &before.model, &mut cut.model)?);
         }
         Ok(cut)
