@@ -37,6 +37,10 @@ pub enum WarningCode {
     SmallMAlpha,
     /// Negative effective normal force (tension) at some bases.
     Tension,
+    /// Spencer's F lies more than 15 % below Bishop's on the same circle.
+    FarBelowBishop,
+    /// The inter-slice forces are inclined more than 60° from the horizontal.
+    SteepInterslice,
     /// Bases in tension had their strength dropped and the equations were solved again.
     TensionDropped,
     /// The line of thrust leaves the sliding mass at some boundaries.

@@ -13,6 +13,7 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
     let mut warnings = Vec::new();
     warnings.extend(status_warning(solution));
     slice_warnings(solution, &mut warnings);
+    warnings.extend(root_warnings(solution));
     if let Some(refinement) = solved.refinement.as_ref().filter(|r| !r.is_settled) {
         warnings.push(Warning::new(
             Code::SliceToleranceNotReached,
@@ -67,13 +68,53 @@ fn status_warning(solution: &SpencerSolution) -> Option<Warning> {
             Code::Unphysical,
             format!(
                 "the equilibrium equations have a root F = {:e} that is not physical (F outside \
-             1e-6…1e6, or the mass held up by tension at the base: Σ N'·tan φ' < 0); no factor \
+             1e-6…1e6, a base pulled below the apex of its strength envelope: c'·l + N'·tan φ' \
+             < 0, or the mass held up by tension at the base: Σ N'·tan φ' < 0); no factor \
              of safety is reported — negative_effective_stress: drop_friction solves such \
              surfaces without tension",
                 solution.unphysical_root.unwrap_or(f64::NAN)
             ),
         )),
     }
+}
+
+/// Spencer's F this far below Bishop's on the same circle is the inter-slice forces' doing, not
+/// the circle's: the answer says so (model §14).
+pub const FAR_BELOW_BISHOP: f64 = 0.85;
+
+/// Inter-slice forces inclined more than this from the horizontal (degrees) are rarely physical.
+pub const STEEP_INTERSLICE_DEG: f64 = 60.0;
+
+/// A root an engineer should look at twice: far below Bishop's F on the same circle, or with
+/// inter-slice forces inclined steeply.
+fn root_warnings(solution: &SpencerSolution) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let Some(f) = solution.factor_of_safety else {
+        return out;
+    };
+    let theta = solution.theta_rad.map(f64::to_degrees);
+    let at = theta.map_or(String::new(), |t| format!(" (θ = {t:.1}°)"));
+    if let Some(bishop) = solution
+        .bishop_factor_of_safety
+        .filter(|&b| f < FAR_BELOW_BISHOP * b)
+    {
+        out.push(Warning::new(
+            Code::FarBelowBishop,
+            format!(
+                "Spencer's F = {f:.4} is {:.0} % below Bishop's F = {bishop:.4} on the same                  surface{at}: the difference is carried by the inter-slice forces, not by the                  surface; look at the bases in tension and the line of thrust (a tension crack,                  or negative_effective_stress: drop_friction, usually brings the two together)",
+                100.0 * (1.0 - f / bishop)
+            ),
+        ));
+    }
+    if let Some(t) = theta.filter(|t| t.abs() > STEEP_INTERSLICE_DEG) {
+        out.push(Warning::new(
+            Code::SteepInterslice,
+            format!(
+                "the inter-slice forces are inclined at θ = {t:.1}°, steeper than                  {STEEP_INTERSLICE_DEG}°: forces this steep are rarely physical; compare                  methods.bishop and methods.morgenstern_price on the same surface"
+            ),
+        ));
+    }
+    out
 }
 
 /// Slices with small m_α, dropped or left tension; boundaries the line of thrust leaves the mass.

@@ -162,7 +162,9 @@ fn friction_angle_zero_and_near_ninety_and_full_pore_pressure() {
     let s = spencer(100, 89.9, 0.0);
     assert_eq!(s.status, SpencerStatus::Converged);
     assert!(s.factor_of_safety.unwrap() > 100.0 && s.residual.unwrap() < 1e-9);
-    // r_u from 0 to 1: F decreases; at r_u = 1 it still solves (or says it cannot).
+    // r_u from 0 to 1: F decreases; at r_u = 1 it still solves or says why not. At r_u = 1
+    // the pore force u·l = W/cos α exceeds W·cos α on every inclined base: N' < 0 there, and
+    // with c'/(γH) = 0.02 the steep bases fall below their envelope's apex (model §2.2).
     let mut previous = f64::INFINITY;
     for ru in [0.0, 0.25, 0.5, 0.75, 1.0] {
         let s = spencer(100, 40.0, ru);
@@ -170,7 +172,15 @@ fn friction_angle_zero_and_near_ninety_and_full_pore_pressure() {
             assert!(f < previous, "r_u = {ru}: {f}");
             previous = f;
         } else {
-            assert_eq!(s.status, SpencerStatus::NoSolution);
+            assert!(ru > 0.9, "r_u = {ru}: {:?}", s.status);
+            assert!(
+                matches!(
+                    s.status,
+                    SpencerStatus::NoSolution | SpencerStatus::Unphysical
+                ),
+                "{:?}",
+                s.status
+            );
         }
     }
 }

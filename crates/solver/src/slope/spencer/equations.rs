@@ -27,6 +27,10 @@ pub(super) struct SliceTerms {
     pub pore_force: f64,
     /// c'·l + (A_n − u·l)·tan φ': the resisting force at F = 1 without the Q term.
     pub resistance: f64,
+    /// c'·l: the base's strength without normal stress.
+    pub cohesion: f64,
+    /// Whether a known force acts on this slice (`model.loads`).
+    pub loaded: bool,
     pub tan_phi: f64,
     /// Base middle relative to the circle centre.
     pub arm: (f64, f64),
@@ -52,6 +56,8 @@ impl SliceTerms {
             a_n,
             pore_force,
             resistance: s.cohesion * s.base_length + (a_n - pore_force) * tan_phi,
+            cohesion: s.cohesion * s.base_length,
+            loaded: false,
             tan_phi,
             arm: (
                 s.base_middle.0 - model.reference.0,
@@ -145,6 +151,7 @@ impl Equations {
             t.a_n += a_n;
             t.resistance += a_n * t.tan_phi;
             t.moment += load.moment;
+            t.loaded = true;
         }
         (terms, total_weight)
     }

@@ -19,6 +19,7 @@
 
 use super::equations::{Equations, SliceTerms};
 use super::nonlinear::{effective_normals, method};
+use super::physical::strength_holds;
 use crate::slope::slices::SliceModel;
 
 /// The inter-slice function of Morgenstern–Price.
@@ -264,9 +265,18 @@ fn mp_normals(
     (f, lambda): (f64, f64),
 ) -> Vec<f64> {
     let equations = Equations::new(model);
-    let Some(f_values) = boundary_values(model, function) else {
-        return Vec::new();
-    };
+    match boundary_values(model, function) {
+        Some(f_values) => mp_effective_normals(&equations, &f_values, (f, lambda)),
+        None => Vec::new(),
+    }
+}
+
+/// [`mp_normals`] from the equations and the inter-slice function at the boundaries.
+fn mp_effective_normals(
+    equations: &Equations,
+    f_values: &[f64],
+    (f, lambda): (f64, f64),
+) -> Vec<f64> {
     let mut e = 0.0;
     let mut out = Vec::with_capacity(equations.terms.len());
     for (i, t) in equations.terms.iter().enumerate() {
@@ -298,11 +308,7 @@ fn mp_linear(model: &SliceModel, function: &InterSliceFunction, start: (f64, f64
     };
     for _ in 0..60 {
         if merit(r) <= SOLVED {
-            return MethodFactor {
-                factor_of_safety: Some(x.0),
-                lambda: Some(x.1),
-                iterations,
-            };
+            break;
         }
         iterations += 1;
         // Central differences: the residuals are smooth where every D is positive.
@@ -346,7 +352,12 @@ fn mp_linear(model: &SliceModel, function: &InterSliceFunction, start: (f64, f64
         let Some((next, rn)) = accepted else { break };
         (x, r) = (next, rn);
     }
-    let solved = merit(r) <= SOLVED;
+    // The same rule for roots as Spencer's (model §2.2): no base below its envelope's apex.
+    let solved = merit(r) <= SOLVED
+        && strength_holds(
+            &equations,
+            mp_effective_normals(&equations, &f_values, x).into_iter(),
+        );
     MethodFactor {
         factor_of_safety: solved.then_some(x.0),
         lambda: solved.then_some(x.1),

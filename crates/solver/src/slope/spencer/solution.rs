@@ -59,8 +59,9 @@ pub enum SpencerStatus {
     /// (the classical φ = 0 analysis). F is reported, θ is not; per-slice forces are Bishop's
     /// (θ = 0) and there is no line of thrust.
     MomentOnly,
-    /// The equations have a root, but not a physical one: F outside 1e-6…1e6, or the
-    /// frictional terms Σ N'·tan φ' add up to a negative resistance (tension at the base
+    /// The equations have a root, but not a physical one: F outside 1e-6…1e6, a base pulled
+    /// below the apex of its strength envelope (c'·l + N'·tan φ' < 0: a negative strength), or
+    /// the frictional terms Σ N'·tan φ' adding up to a negative resistance (tension at the base
     /// carried by friction). No F is reported; `unphysical_root` holds the root for the record.
     Unphysical,
 }
