@@ -84,8 +84,24 @@ impl SpencerRequest {
                 "is Morgenstern–Price's: add \"morgenstern_price\" to methods, or leave it out",
             ));
         }
+        let per_method = self.search.as_ref().is_some_and(|s| s.per_method);
+        if per_method && methods.is_empty() {
+            return Err(ApiError::invalid(
+                "search.per_method",
+                "names no method to search: list them in methods (bishop, janbu, ordinary, \
+                 morgenstern_price)",
+            ));
+        }
+        if per_method && self.negative_effective_stress != Default::default() {
+            return Err(ApiError::invalid(
+                "search.per_method",
+                "searches each method on its classic equations: it does not combine with \
+                 negative_effective_stress other than keep",
+            ));
+        }
         Ok(SlopePlan {
             target,
+            per_method,
             slice_tolerance,
             relative_error,
             estimate_accuracy: true,

@@ -2,11 +2,12 @@
 //! same slices (model §4.3).
 
 use serde::{Deserialize, Serialize};
-use thrustline_solver::slope::analysis::{Method, MethodAnswer, MethodFactors};
+use thrustline_solver::slope::analysis::{Method, MethodAnswer, MethodFactors, OwnCritical};
 use thrustline_solver::slope::spencer::methods::InterSliceFunction;
 use utoipa::ToSchema;
 
 use super::options::AccuracyOutDto;
+use super::outputs::{circle_out, search_out, CircleOutDto, SearchOutDto};
 use crate::error::ApiError;
 use crate::limits::INTERSLICE_POINTS;
 use crate::validation::number;
@@ -42,6 +43,37 @@ pub struct MethodDto {
     /// not converged.
     #[schema(required = true)]
     pub accuracy: Option<AccuracyOutDto>,
+    /// With `search.per_method`: the method's own critical circle, searched with its F.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical: Option<MethodCriticalDto>,
+}
+
+/// A method's own critical circle (`search.per_method`): the search's centres, radii and
+/// candidates, the circles ranked by the method's F.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct MethodCriticalDto {
+    /// Whether a circle of the search has an F by the method.
+    pub converged: bool,
+    /// The method's least F over the search; null when no circle has one.
+    #[schema(required = true)]
+    pub factor_of_safety: Option<f64>,
+    /// Its critical circle; null when none.
+    #[schema(required = true)]
+    pub circle: Option<CircleOutDto>,
+    /// How its search went; null when it found no circle.
+    #[schema(required = true)]
+    pub search: Option<SearchOutDto>,
+}
+
+impl MethodCriticalDto {
+    fn new(critical: &OwnCritical) -> Self {
+        Self {
+            converged: critical.is_some(),
+            factor_of_safety: critical.as_ref().map(|c| c.factor_of_safety),
+            circle: critical.as_ref().and_then(|c| circle_out(&c.problem)),
+            search: critical.as_ref().map(|c| search_out(&c.report)),
+        }
+    }
 }
 
 /// The methods asked for, each present only when asked.
@@ -106,7 +138,7 @@ impl From<MethodName> for Method {
 }
 
 impl MethodDto {
-    fn new(answer: &MethodAnswer) -> Self {
+    fn new(answer: &MethodAnswer, critical: Option<&OwnCritical>) -> Self {
         let m = &answer.factor;
         Self {
             converged: m.factor_of_safety.is_some(),
@@ -116,18 +148,24 @@ impl MethodDto {
                 slices: a.slices,
                 discretisation_error: a.discretisation_error,
             }),
+            critical: critical.map(MethodCriticalDto::new),
         }
     }
 }
 
 impl MethodsDto {
-    /// The methods' answers as the API states them.
-    pub fn new(found: &MethodFactors) -> Self {
+    /// The methods' answers as the API states them, each with its own critical circle when
+    /// `critical` has one for it.
+    pub fn new(found: &MethodFactors, critical: &[(Method, OwnCritical)]) -> Self {
+        let of = |method: Method| critical.iter().find(|(m, _)| *m == method).map(|(_, c)| c);
+        let dto = |answer: &Option<MethodAnswer>, method: Method| {
+            answer.as_ref().map(|a| MethodDto::new(a, of(method)))
+        };
         Self {
-            morgenstern_price: found.morgenstern_price.as_ref().map(MethodDto::new),
-            bishop: found.bishop.as_ref().map(MethodDto::new),
-            janbu: found.janbu.as_ref().map(MethodDto::new),
-            ordinary: found.ordinary.as_ref().map(MethodDto::new),
+            morgenstern_price: dto(&found.morgenstern_price, Method::MorgensternPrice),
+            bishop: dto(&found.bishop, Method::Bishop),
+            janbu: dto(&found.janbu, Method::Janbu),
+            ordinary: dto(&found.ordinary, Method::Ordinary),
         }
     }
 }

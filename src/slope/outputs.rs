@@ -1,7 +1,9 @@
-//! The optional parts of the Spencer answer: how a search went, F over its grid of centres,
-//! and Spencer's two curves.
+//! The parts of the Spencer answer that its methods share with the headline: how a search went,
+//! F over its grid of centres, Spencer's two curves, and the circle and points a surface is
+//! stated by.
 
 use serde::Serialize;
+use thrustline_solver::slope::analysis::{Analysed, SearchReport};
 use utoipa::ToSchema;
 
 /// F over the grid of centres, for contour plots.
@@ -69,4 +71,69 @@ pub struct CurvesDto {
     pub force_factor: Vec<Option<f64>>,
     /// F_m(θ), from moment equilibrium; null where it has no root.
     pub moment_factor: Vec<Option<f64>>,
+}
+
+/// A point in the plane of the section.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PointDto {
+    /// Horizontal coordinate (the simple slope: toe at 0, towards the crest positive; a
+    /// section: its own coordinates).
+    pub x: f64,
+    /// Vertical coordinate (up positive).
+    pub y: f64,
+}
+
+/// The slip circle as placed on the embankment.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct CircleOutDto {
+    /// Centre X measured from the lower end (as given).
+    pub x: f64,
+    /// Centre Y measured from the lower end (as given).
+    pub y: f64,
+    /// Radius.
+    pub radius: f64,
+    /// The centre in embankment coordinates (toe at the origin).
+    pub centre: PointDto,
+    /// Lower end of the slip surface.
+    pub lower_end: PointDto,
+    /// Upper exit of the slip surface on the ground.
+    pub upper_exit: PointDto,
+}
+
+/// A point of the section.
+pub(super) fn point((x, y): (f64, f64)) -> PointDto {
+    PointDto { x, y }
+}
+
+/// The analysed circle, if the surface is one: its centre relative to the lower end, its ends.
+pub(super) fn circle_out(problem: &Analysed) -> Option<CircleOutDto> {
+    problem.circle().map(|c| CircleOutDto {
+        x: c.centre.0 - c.lower_end.0,
+        y: c.centre.1 - c.lower_end.1,
+        radius: c.radius,
+        centre: point(c.centre),
+        lower_end: point(c.lower_end),
+        upper_exit: point(c.upper_exit),
+    })
+}
+
+/// How a search went, as answered.
+pub(super) fn search_out(search: &SearchReport) -> SearchOutDto {
+    SearchOutDto {
+        evaluations: search.evaluations,
+        regrids: search.regrids,
+        on_edge: search.is_on_edge,
+        unsolved: search.unsolved,
+        unsolved_bishop_minimum: search.unsolved_bishop_minimum,
+        unsolved_near_minimum: search.unsolved_near_minimum,
+        min_depth: search.candidates.min_depth,
+        composite: if search.candidates.circles_only {
+            super::options::CompositeDto::CirclesOnly
+        } else {
+            super::options::CompositeDto::FollowBedrock
+        },
+        budget_exhausted: !search.noncircular_stop.is_finished(),
+        path: search.path.clone(),
+        path_ms: search.path_ms.clone(),
+    }
 }

@@ -7,7 +7,9 @@ use thrustline_solver::slope::{Sliced, SpencerSolution, SpencerStatus, ThrustPoi
 
 use super::methods::MethodsDto;
 use super::options::{AccuracyOutDto, SlopeDetailDto};
-use super::outputs::{CurvesDto, GridDto, SearchOutDto};
+use super::outputs::{
+    circle_out, point, search_out, CircleOutDto, CurvesDto, GridDto, PointDto, SearchOutDto,
+};
 use super::slices::slice_dtos;
 pub use super::slices::SliceDto;
 use super::solved::SolvedSlope;
@@ -15,16 +17,6 @@ use super::warnings::warnings;
 use crate::warning::Warning;
 
 use utoipa::ToSchema;
-
-/// A point in the plane of the section.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct PointDto {
-    /// Horizontal coordinate (the simple slope: toe at 0, towards the crest positive; a
-    /// section: its own coordinates).
-    pub x: f64,
-    /// Vertical coordinate (up positive).
-    pub y: f64,
-}
 
 /// A point of the line of thrust on an inter-slice boundary (Spencer 1973).
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -40,23 +32,6 @@ pub struct BoundaryThrustPointDto {
     pub force: f64,
     /// Whether the point lies between the slip surface and the ground surface.
     pub inside_slice: bool,
-}
-
-/// The slip circle as placed on the embankment.
-#[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct CircleOutDto {
-    /// Centre X measured from the lower end (as given).
-    pub x: f64,
-    /// Centre Y measured from the lower end (as given).
-    pub y: f64,
-    /// Radius.
-    pub radius: f64,
-    /// The centre in embankment coordinates (toe at the origin).
-    pub centre: PointDto,
-    /// Lower end of the slip surface.
-    pub lower_end: PointDto,
-    /// Upper exit of the slip surface on the ground.
-    pub upper_exit: PointDto,
 }
 
 /// How the solution of Spencer's equations ended.
@@ -251,7 +226,10 @@ impl SpencerResponse {
             solve_time_ms: solved.solve_time_ms,
             search: solved.search.as_ref().map(search_out),
             grid: solved.search.as_ref().map(grid_out),
-            methods: solved.methods.as_ref().map(MethodsDto::new),
+            methods: solved
+                .methods
+                .as_ref()
+                .map(|m| MethodsDto::new(m, &solved.critical)),
             curves: solved.curves.as_ref().map(|c| CurvesDto {
                 theta_deg: c.theta_deg.clone(),
                 force_factor: c.force_factor.clone(),
@@ -277,23 +255,6 @@ impl SpencerResponse {
             sensitivity: solved.studies.sensitivity.clone(),
         }
     }
-}
-
-/// A point of the section.
-fn point((x, y): (f64, f64)) -> PointDto {
-    PointDto { x, y }
-}
-
-/// The analysed circle, if the surface is one: its centre relative to the lower end, its ends.
-fn circle_out(problem: &Analysed) -> Option<CircleOutDto> {
-    problem.circle().map(|c| CircleOutDto {
-        x: c.centre.0 - c.lower_end.0,
-        y: c.centre.1 - c.lower_end.1,
-        radius: c.radius,
-        centre: point(c.centre),
-        lower_end: point(c.lower_end),
-        upper_exit: point(c.upper_exit),
-    })
 }
 
 /// A line of thrust as answered, in the request's x.
@@ -351,27 +312,6 @@ fn status_of(solution: &SpencerSolution) -> (bool, SpencerStatusDto, bool) {
         SpencerStatus::NoSolution => (false, SpencerStatusDto::NoSolution, false),
         SpencerStatus::MomentOnly => (false, SpencerStatusDto::MomentOnly, true),
         SpencerStatus::Unphysical => (false, SpencerStatusDto::Unphysical, false),
-    }
-}
-
-/// How a search went, as answered.
-fn search_out(search: &SearchReport) -> SearchOutDto {
-    SearchOutDto {
-        evaluations: search.evaluations,
-        regrids: search.regrids,
-        on_edge: search.is_on_edge,
-        unsolved: search.unsolved,
-        unsolved_bishop_minimum: search.unsolved_bishop_minimum,
-        unsolved_near_minimum: search.unsolved_near_minimum,
-        min_depth: search.candidates.min_depth,
-        composite: if search.candidates.circles_only {
-            super::options::CompositeDto::CirclesOnly
-        } else {
-            super::options::CompositeDto::FollowBedrock
-        },
-        budget_exhausted: !search.noncircular_stop.is_finished(),
-        path: search.path.clone(),
-        path_ms: search.path_ms.clone(),
     }
 }
 

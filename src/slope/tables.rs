@@ -5,7 +5,8 @@ use serde::{Deserialize, Serialize};
 use utoipa::{IntoParams, ToSchema};
 
 use super::options::SlopeDetailDto;
-use super::response::{BoundaryThrustPointDto, PointDto, SliceDto, SpencerResponse};
+use super::outputs::PointDto;
+use super::response::{BoundaryThrustPointDto, SliceDto, SpencerResponse};
 use crate::error::ApiError;
 use crate::table::{csv, Csv, Row, TableQuery};
 

@@ -20,6 +20,7 @@ use crate::numerics::{nelder_mead_to, Minimum};
 
 use super::section::trial::{circle_outcome, TrialSetup};
 use super::section::{check_circle, Section, SectionProblem, SlipShape};
+use super::spencer::methods::{InterSliceFunction, Method};
 use super::spencer::{Seismic, Soil, SpencerSettings};
 
 /// The region of centres searched and the grid laid over it (centres from the lower end).
@@ -88,7 +89,7 @@ impl SearchProblem {
 
 /// Settings of the search.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SearchSettings {
+pub struct SearchSettings<'a> {
     /// Settings of each Spencer solution.
     pub spencer: SpencerSettings,
     /// Grid points the local refinement starts from (0: the best grid point is the answer).
@@ -107,9 +108,12 @@ pub struct SearchSettings {
     /// Circles whose greatest depth below the ground is smaller are no candidates (a sliver
     /// along a c' = 0 face is not the mechanism an engineer checks). Defaults to 0.
     pub min_depth: f64,
+    /// The method the circles are ranked by: Spencer's (`None`, the default) or another's, for
+    /// its own critical circle.
+    pub method: Option<(Method, &'a InterSliceFunction)>,
 }
 
-impl Default for SearchSettings {
+impl Default for SearchSettings<'_> {
     fn default() -> Self {
         Self {
             spencer: SpencerSettings::default(),
@@ -119,6 +123,7 @@ impl Default for SearchSettings {
             hard_bounds: false,
             max_radius: None,
             min_depth: 0.0,
+            method: None,
         }
     }
 }
@@ -141,6 +146,7 @@ pub fn factor_of_safety(
         seismic: problem.seismic,
         spencer: settings,
         min_depth: 0.0,
+        method: None,
     };
     outcome(problem, &trials, circle, &Cell::new(None)).ok()
 }
@@ -275,7 +281,7 @@ struct ThroughLowerEnd<'a> {
     /// once), with the problem's slices and seismic coefficients and the settings' Spencer
     /// settings and least depth.
     trials: TrialSetup<'a>,
-    settings: &'a SearchSettings,
+    settings: &'a SearchSettings<'a>,
     budget: &'a Budget,
 }
 
@@ -408,6 +414,7 @@ pub fn search_critical_circle(
             seismic: problem.seismic,
             spencer: &settings.spencer,
             min_depth: settings.min_depth,
+            method: settings.method,
         },
         settings,
         budget,

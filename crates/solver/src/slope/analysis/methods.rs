@@ -4,23 +4,11 @@
 use crate::budget::Budget;
 use crate::slope::accuracy::{estimate, Accuracy, Recut};
 use crate::slope::slices::{SliceModel, Sliced};
+pub use crate::slope::spencer::methods::Method;
 use crate::slope::spencer::methods::{
     bishop, janbu, morgenstern_price, ordinary, InterSliceFunction, MethodFactor,
 };
 use crate::slope::spencer::SpencerSolution;
-
-/// A method of slices beside Spencer's.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Method {
-    /// Morgenstern–Price: X = λ·f(x)·E, force and moment equilibrium.
-    MorgensternPrice,
-    /// Bishop's simplified: moments about the centre, horizontal inter-slice forces.
-    Bishop,
-    /// Janbu's simplified (uncorrected): horizontal force equilibrium.
-    Janbu,
-    /// The ordinary method (Fellenius): no inter-slice forces, moments about the centre.
-    Ordinary,
-}
 
 /// One method's answer and its accuracy.
 #[derive(Debug, Clone, Copy, PartialEq)]

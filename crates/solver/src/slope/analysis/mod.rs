@@ -19,14 +19,16 @@ use crate::slope::accuracy::{estimate, to_accuracy, Accuracy, Recut};
 use crate::slope::refinement::{refine_slices, RefinementSettings, RefinementStatus};
 use crate::slope::search::{SearchGrid, SearchProblem};
 use crate::slope::slices::{SliceModel, Sliced};
-use crate::slope::spencer::methods::InterSliceFunction;
+use crate::slope::spencer::methods::{method_factor, InterSliceFunction};
 use crate::slope::spencer::{
     factor_curves_around, solve_spencer, with_strength_dropped, NegativeEffectiveStress,
     SpencerSettings, SpencerSolution,
 };
 use crate::slope::SlopeError;
 pub use methods::{Method, MethodAnswer, MethodFactors};
-pub use report::{Refinement, SearchReport, SlopeAnswer, SlopeOutcome, SlopeStage};
+pub use report::{
+    MethodCritical, OwnCritical, Refinement, SearchReport, SlopeAnswer, SlopeOutcome, SlopeStage,
+};
 pub use search_plan::{Candidates, Noncircular, SectionSearch};
 pub use surface::{Analysed, PlacedCircle};
 
@@ -71,6 +73,8 @@ pub struct SlopePlan {
     pub curves: bool,
     /// The other methods to answer beside Spencer's.
     pub methods: Vec<Method>,
+    /// With a search: whether each of `methods` is searched for its own critical circle too.
+    pub per_method: bool,
     /// Morgenstern–Price's inter-slice function.
     pub interslice_function: InterSliceFunction,
     /// The treatment of tension at slice bases, in every method and every search.
@@ -93,6 +97,7 @@ impl SlopePlan {
             max_slices: 10_000,
             curves: false,
             methods: Vec::new(),
+            per_method: false,
             interslice_function: InterSliceFunction::HalfSine,
             negative_effective_stress: NegativeEffectiveStress::Keep,
             candidates: Candidates::default(),
@@ -113,6 +118,8 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         Ok(searched) => searched,
         Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
     };
+    // Spencer's critical surface as found, a candidate of every method's own search.
+    let searched_surface = plan.per_method.then(|| problem.clone());
     let Answered {
         problem,
         solution,
@@ -129,6 +136,13 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
     };
     let methods = (!plan.methods.is_empty())
         .then(|| other_methods(plan, &spencer, &problem, &solution, recut, budget));
+    let critical = match plan.per_method {
+        true => match own_criticals(plan, &spencer, &searched_surface, budget)? {
+            Ok(critical) => critical,
+            Err(stop) => return Ok(stopped(SlopeStage::Search, stop)),
+        },
+        false => Vec::new(),
+    };
     let design = plan.design.map(|d| d.verdict(solution.factor_of_safety));
     Ok(SlopeOutcome::Answered(Box::new(SlopeAnswer {
         problem,
@@ -137,9 +151,77 @@ pub fn analyse(plan: &SlopePlan, budget: &Budget) -> Result<SlopeOutcome, SlopeE
         search,
         curves,
         methods,
+        critical,
         refinement,
         accuracy,
     })))
+}
+
+/// Each planned method's own critical circle: the plan's circle search (bounds, radii, slices,
+/// candidates) with the method's F ranking the circles, without a non-circular stage; nothing
+/// for a plan without a search. Spencer's critical circle (`spencers`) is a candidate too: a
+/// method's critical F is never above its F there (a search stops within its resolution, and
+/// the methods' landscapes differ). `Err(stop)` when the budget ended one of the searches.
+fn own_criticals(
+    plan: &SlopePlan,
+    spencer: &SpencerSettings,
+    spencers: &Option<Analysed>,
+    budget: &Budget,
+) -> Result<Result<Vec<(Method, OwnCritical)>, Stop>, SlopeError> {
+    let spencers = spencers.as_ref().filter(|s| s.circle().is_some());
+    let circles = match &plan.target {
+        Target::SectionSearch(section) => Some(SectionSearch {
+            noncircular: None,
+            ..(**section).clone()
+        }),
+        _ => None,
+    };
+    let mut out = Vec::with_capacity(plan.methods.len());
+    for &method in &plan.methods {
+        let ranked = Some((method, &plan.interslice_function));
+        let found = match (&plan.target, &circles) {
+            (
+                Target::SimpleSearch {
+                    problem,
+                    grid,
+                    hard_bounds,
+                },
+                _,
+            ) => search::simple(
+                problem,
+                *grid,
+                *hard_bounds,
+                spencer,
+                plan.candidates,
+                ranked,
+                budget,
+            )?,
+            (_, Some(circles)) => {
+                search::section(circles, spencer, plan.candidates, ranked, budget)?
+            }
+            _ => return Ok(Ok(Vec::new())),
+        };
+        let (own, report) = match found {
+            Ok((problem, report)) => (Some(problem), Some(report)),
+            Err(Stop::NoCandidate) => (None, None),
+            Err(stop) => return Ok(Err(stop)),
+        };
+        let factor = |p: &Analysed| method_factor(&p.model(), method, &plan.interslice_function);
+        let best = [own, spencers.cloned()]
+            .into_iter()
+            .flatten()
+            .filter_map(|p| factor(&p).map(|f| (f, p)))
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        let critical = best
+            .zip(report)
+            .map(|((factor_of_safety, problem), report)| MethodCritical {
+                problem,
+                factor_of_safety,
+                report,
+            });
+        out.push((method, critical));
+    }
+    Ok(Ok(out))
 }
 
 /// The surface to answer: the plan's own, or the one its search found with the search's
@@ -161,11 +243,12 @@ fn searched(
             *hard_bounds,
             spencer,
             plan.candidates,
+            None,
             budget,
         )?
         .map(|(problem, report)| (problem, Some(report))),
         Target::SectionSearch(section) => {
-            search::section(section, spencer, plan.candidates, budget)?
+            search::section(section, spencer, plan.candidates, None, budget)?
                 .map(|(problem, report)| (problem, Some(report)))
         }
     })

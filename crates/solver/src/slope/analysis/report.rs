@@ -1,7 +1,7 @@
 //! What a slope analysis produced: the surface answered, its solution and the extras the plan
 //! asked for, how a search went (the simple slope's or a section's) and how a refinement went.
 
-use super::methods::MethodFactors;
+use super::methods::{Method, MethodFactors};
 use super::surface::Analysed;
 use crate::budget::Stop;
 use crate::slope::refinement::RefinementStep;
@@ -109,6 +109,8 @@ pub struct SlopeAnswer {
     pub curves: Option<FactorCurves>,
     /// With methods planned: their factors on the answered slices.
     pub methods: Option<MethodFactors>,
+    /// With `per_method`: each method's own critical surface, in the plan's order.
+    pub critical: Vec<(Method, OwnCritical)>,
     /// With a slice tolerance: the refinement.
     pub refinement: Option<Refinement>,
     /// The estimated discretisation error of F at the slices answered.
@@ -116,6 +118,21 @@ pub struct SlopeAnswer {
     /// With a design check: its verdict on F.
     pub design: Option<crate::slope::design::Verdict>,
 }
+
+/// A method's own critical surface (`per_method`): searched with its F, answered with it.
+#[derive(Debug, Clone)]
+pub struct MethodCritical {
+    /// The surface, at the plan's slices.
+    pub problem: Analysed,
+    /// The method's F on it.
+    pub factor_of_safety: f64,
+    /// The search that found it.
+    pub report: SearchReport,
+}
+
+/// A method's own search: its critical surface, or `None` when no circle of the search has an
+/// F by that method.
+pub type OwnCritical = Option<MethodCritical>;
 
 /// Which stage of a slope plan a stop ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -12,6 +12,7 @@ use crate::slope::search::{
 use crate::slope::section::noncircular::{search_noncircular, NoncircularLimits};
 use crate::slope::section::search::{search_circles, CircleSearchSettings};
 use crate::slope::section::{Polyline, SectionProblem, SlipShape};
+use crate::slope::spencer::methods::{InterSliceFunction, Method};
 use crate::slope::spencer::{solve_spencer, SpencerSettings};
 use crate::slope::{SlopeError, SlopeParameter};
 
@@ -29,13 +30,14 @@ fn no_circle(budget: &Budget) -> Stop {
 }
 
 /// The simple slope's critical circle over `grid` (`hard_bounds`: whether its bounds were
-/// given, and stay put).
+/// given, and stay put), ranked by Spencer's F or `method`'s.
 pub(super) fn simple(
     problem: &SearchProblem,
     grid: SearchGrid,
     hard_bounds: bool,
     spencer: &SpencerSettings,
     candidates: Candidates,
+    method: Option<(Method, &InterSliceFunction)>,
     budget: &Budget,
 ) -> Result<Found, SlopeError> {
     let size = problem.embankment.height().max(problem.embankment.length());
@@ -45,6 +47,7 @@ pub(super) fn simple(
         // Automatic bounds may move; not to circles that dwarf the embankment.
         max_radius: (!hard_bounds).then_some(MAX_RADIUS_OVER_SIZE * size),
         min_depth: candidates.min_depth,
+        method,
         ..SearchSettings::default()
     };
     let found = search_critical_circle(problem, grid, &settings, budget);
@@ -66,17 +69,20 @@ pub(super) fn simple(
     Ok(Ok((Analysed::Section(Box::new(answered)), report)))
 }
 
-/// A section's critical circle, then the non-circular stage from it when planned.
+/// A section's critical circle (ranked by Spencer's F or `method`'s), then the non-circular
+/// stage from it when planned.
 pub(super) fn section(
     plan: &SectionSearch,
     spencer: &SpencerSettings,
     candidates: Candidates,
+    method: Option<(Method, &InterSliceFunction)>,
     budget: &Budget,
 ) -> Result<Found, SlopeError> {
     let settings = CircleSearchSettings {
         spencer: *spencer,
         min_depth: candidates.min_depth,
         circles_only: candidates.circles_only,
+        method,
         ..CircleSearchSettings::default()
     };
     let found = search_circles(

@@ -19,6 +19,7 @@ use crate::numerics::{nelder_mead_to, Minimum};
 use crate::slope::circles::{
     self, search, spaced, CentreGrid, CentreResult, CircleFamily, FactorGrid, Start, F_RESOLUTION,
 };
+use crate::slope::spencer::methods::{InterSliceFunction, Method};
 use crate::slope::spencer::{Seismic, SpencerSettings};
 
 /// The radii tried at each centre.
@@ -100,7 +101,7 @@ impl CircleRegion {
 
 /// Settings of the search.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CircleSearchSettings {
+pub struct CircleSearchSettings<'a> {
     /// Settings of each Spencer solution.
     pub spencer: SpencerSettings,
     /// Grid points the refinement starts from. Defaults to 3.
@@ -115,9 +116,12 @@ pub struct CircleSearchSettings {
     /// Whether a circle that would cross the bedrock is no candidate (`false`: it follows the
     /// bedrock, a composite surface). Defaults to false.
     pub circles_only: bool,
+    /// The method the circles are ranked by: Spencer's (`None`, the default) or another's,
+    /// for its own critical circle.
+    pub method: Option<(Method, &'a InterSliceFunction)>,
 }
 
-impl Default for CircleSearchSettings {
+impl Default for CircleSearchSettings<'_> {
     fn default() -> Self {
         Self {
             spencer: SpencerSettings::default(),
@@ -126,6 +130,7 @@ impl Default for CircleSearchSettings {
             max_regrids: 3,
             min_depth: 0.0,
             circles_only: false,
+            method: None,
         }
     }
 }
@@ -146,6 +151,8 @@ struct Evaluator<'a> {
     min_depth: f64,
     /// Circles that would cross the bedrock are no candidates.
     circles_only: bool,
+    /// The method the circles are ranked by (`None`: Spencer's).
+    method: Option<(Method, &'a InterSliceFunction)>,
 }
 
 impl Evaluator<'_> {
@@ -162,6 +169,7 @@ impl Evaluator<'_> {
             seismic: self.seismic,
             spencer: &self.spencer,
             min_depth: self.min_depth,
+            method: self.method,
         };
         trial(&setup, &SlipShape::Circle { centre, radius }, near, |cut| {
             self.circles_only && self.crosses_bedrock(cut, centre, radius)
@@ -268,7 +276,7 @@ impl Evaluator<'_> {
         radii: &Radii,
         starts: &[Start],
         factors: &FactorGrid,
-        settings: &CircleSearchSettings,
+        settings: &CircleSearchSettings<'_>,
     ) -> Vec<Minimum> {
         let (xs, ys) = (factors.xs.as_slice(), factors.ys.as_slice());
         let (dx, dy) = centres.cell();
@@ -330,7 +338,7 @@ impl<'a> Evaluator<'a> {
         section: &'a Section,
         slices: NonZeroUsize,
         seismic: Seismic,
-        settings: &CircleSearchSettings,
+        settings: &CircleSearchSettings<'a>,
         budget: &'a Budget,
     ) -> Self {
         let (_, _, y_low, y_top) = relief(section);
@@ -350,6 +358,7 @@ impl<'a> Evaluator<'a> {
             deep,
             min_depth: settings.min_depth,
             circles_only: settings.circles_only,
+            method: settings.method,
         }
     }
 }
@@ -372,7 +381,7 @@ struct SeveralRadii<'a> {
     evaluator: Evaluator<'a>,
     radii: &'a Radii,
     hard: bool,
-    settings: &'a CircleSearchSettings,
+    settings: &'a CircleSearchSettings<'a>,
 }
 
 impl CircleFamily for SeveralRadii<'_> {
@@ -447,7 +456,7 @@ pub fn search_circles(
     hard: bool,
     slices: NonZeroUsize,
     seismic: Seismic,
-    settings: &CircleSearchSettings,
+    settings: &CircleSearchSettings<'_>,
     budget: &Budget,
 ) -> CircleSearch {
     let family = SeveralRadii {

@@ -6,8 +6,10 @@ use super::cut::{place_for_search, Cut};
 use super::model::Section;
 use super::shape::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
+use crate::slope::spencer::methods::{method_factor, InterSliceFunction, Method};
 use crate::slope::spencer::{
-    spencer_factor_outcome_near, FactorOutcome, Seismic, SpencerFactor, SpencerSettings,
+    drives_towards_toe, spencer_factor_outcome_near, FactorOutcome, Seismic, SpencerFactor,
+    SpencerSettings,
 };
 
 /// A trial surface's F (and θ); `Err(None)` when it cuts no mass, `Err(Some(bishop))` when it
@@ -30,6 +32,9 @@ pub struct TrialSetup<'a> {
     pub spencer: &'a SpencerSettings,
     /// Masses shallower than this cut no mass (are no candidates).
     pub min_depth: f64,
+    /// The method that ranks the surfaces: Spencer's (`None`), or another for its own
+    /// critical surface (with Morgenstern–Price's inter-slice function).
+    pub method: Option<(Method, &'a InterSliceFunction)>,
 }
 
 /// Spencer's F (and θ) of the trial circle through `centre` of `radius` of a search
@@ -61,6 +66,7 @@ pub(super) fn trial(
         seismic,
         spencer,
         min_depth,
+        method,
     } = *setup;
     let cut = place_for_search(section, mirror, shape, slices, seismic).map_err(|e| match e {
         // A drawdown stage without a solution: a mass that cannot be answered.
@@ -73,10 +79,22 @@ pub(super) fn trial(
     if cut.model.depth() < min_depth || excluded(&cut) {
         return Err(None);
     }
-    let outcome = match spencer_factor_outcome_near(&cut.model, spencer, near) {
-        FactorOutcome::Solved(s) => Ok(s),
-        FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
-        FactorOutcome::Undriven => Err(None),
+    let outcome = match method {
+        None => match spencer_factor_outcome_near(&cut.model, spencer, near) {
+            FactorOutcome::Solved(s) => Ok(s),
+            FactorOutcome::Unsolved { bishop } => Err(Some(bishop)),
+            FactorOutcome::Undriven => Err(None),
+        },
+        // Another method's F in the place of Spencer's (no θ); undriven masses are no
+        // candidates, as in Spencer's search.
+        Some(_) if !drives_towards_toe(&cut.model) => Err(None),
+        Some((method, function)) => match method_factor(&cut.model, method, function) {
+            Some(f) => Ok(SpencerFactor {
+                factor_of_safety: f,
+                theta_rad: None,
+            }),
+            None => Err(Some(None)),
+        },
     };
     super::buffers::give_back(cut.model.slices, cut.surface);
     outcome

@@ -22,6 +22,19 @@ use super::nonlinear::{effective_normals, method};
 use super::physical::strength_holds;
 use crate::slope::slices::SliceModel;
 
+/// A method of slices beside Spencer's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// Morgenstern–Price: X = λ·f(x)·E, force and moment equilibrium.
+    MorgensternPrice,
+    /// Bishop's simplified: moments about the centre, horizontal inter-slice forces.
+    Bishop,
+    /// Janbu's simplified (uncorrected): horizontal force equilibrium.
+    Janbu,
+    /// The ordinary method (Fellenius): no inter-slice forces, moments about the centre.
+    Ordinary,
+}
+
 /// The inter-slice function of Morgenstern–Price.
 #[derive(Debug, Clone, PartialEq)]
 pub enum InterSliceFunction {
@@ -362,5 +375,29 @@ fn mp_linear(model: &SliceModel, function: &InterSliceFunction, start: (f64, f64
         factor_of_safety: solved.then_some(x.0),
         lambda: solved.then_some(x.1),
         iterations,
+    }
+}
+
+/// The F of `method` alone on `model`, as a search for the method's own critical surface ranks
+/// it; Morgenstern–Price from Bishop's F with λ = 0, then from (1, 0).
+pub fn method_factor(
+    model: &SliceModel,
+    method: Method,
+    function: &InterSliceFunction,
+) -> Option<f64> {
+    match method {
+        Method::Bishop => bishop(model).factor_of_safety,
+        Method::Janbu => janbu(model).factor_of_safety,
+        Method::Ordinary => ordinary(model).factor_of_safety,
+        Method::MorgensternPrice => {
+            let starts = [
+                bishop(model).factor_of_safety.map(|f| (f, 0.0)),
+                Some((1.0, 0.0)),
+            ];
+            starts
+                .into_iter()
+                .flatten()
+                .find_map(|start| morgenstern_price(model, function, start).factor_of_safety)
+        }
     }
 }
