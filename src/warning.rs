@@ -57,6 +57,8 @@ pub enum WarningCode {
     UnsolvedNearMinimum,
     /// The surface runs beyond the ground as stated (taken level there).
     BeyondGround,
+    /// The searched surface reaches the end of the section as stated.
+    MinimumAtSectionEnd,
     /// The non-associative friction iteration did not settle.
     NotSettled,
     /// Nonlinear strength envelopes did not reach a consistent state.

@@ -50,7 +50,7 @@ async fn a_cohesionless_face_answers_a_mechanism_not_a_sliver() {
     let g = default["factor_of_safety"].as_f64().unwrap();
     assert!(g > f + 1e-4, "{g} vs {f}");
     // The values docs/slopes.md shows.
-    assert!((g - 1.4038).abs() < 5e-5, "{g}");
+    assert!((g - 1.4039).abs() < 5e-5, "{g}");
     // Deeper still when asked.
     let (_, _, deep) = server
         .post("/slope/spencer", &cohesionless(json!({"min_depth": 1.0})))
@@ -58,7 +58,7 @@ async fn a_cohesionless_face_answers_a_mechanism_not_a_sliver() {
     assert!(depth(&deep) >= 1.0, "{}", depth(&deep));
     let h = deep["factor_of_safety"].as_f64().unwrap();
     assert!(h >= g);
-    assert!((h - 1.4208).abs() < 5e-5, "{h}");
+    assert!((h - 1.4191).abs() < 5e-5, "{h}");
 }
 
 #[tokio::test]
@@ -119,24 +119,67 @@ async fn candidate_options_are_validated() {
 }
 
 #[tokio::test]
-async fn a_surface_beyond_the_stated_ground_is_flagged() {
-    // The ground stops 1 m behind the crest; the critical circle exits further back, where the
-    // ground is only taken as level: the answer says so (the simple slope, level beyond its
-    // ends by definition, does not).
+async fn a_search_stays_within_the_stated_section_unless_told_otherwise() {
+    // The ground stops 1 m behind the crest; the critical circle would exit further back, where
+    // the ground is only taken as level. The search stays within the section (SPEC §14) and
+    // says that its minimum reaches the section's end; with `beyond_ground` it goes on, and the
+    // answer warns. A fixed circle beyond the ground is refused unless it says the same. The
+    // simple slope, level beyond its ends by definition, is never bounded.
     let server = Server::start().await;
     let soil = json!({"unit_weight": 20, "cohesion": 20, "friction_angle_deg": 25});
-    let short = json!({"section": {"ground": [[10, 0], [20, 0], [40, 10], [41, 10]],
-        "layers": [{"top": null, "soil": soil}]}, "search": {}, "slices": 50});
-    let (_, _, answer) = server.post("/slope/spencer", &short).await;
+    let section = json!({"ground": [[10, 0], [20, 0], [40, 10], [41, 10]],
+        "layers": [{"top": null, "soil": soil}]});
+    let short = json!({"section": section, "search": {}, "slices": 50});
+    let (status, _, within) = server.post("/slope/spencer", &short).await;
+    assert_eq!(status, 200, "{within}");
+    let exit = within["circle"]["upper_exit"]["x"].as_f64().unwrap();
+    let entry = within["circle"]["lower_end"]["x"].as_f64().unwrap();
+    assert!(
+        entry >= 10.0 - 1e-7 && exit <= 41.0 + 1e-7,
+        "{entry} … {exit}"
+    );
+    let codes = within["warnings"].to_string();
+    assert!(codes.contains("minimum_at_section_end"), "{codes}");
+    assert!(!codes.contains("beyond the ground"), "{codes}");
+    assert_eq!(within["search"]["beyond_ground"], false);
+    let mut beyond = short.clone();
+    beyond["search"]["beyond_ground"] = json!(true);
+    let (_, _, answer) = server.post("/slope/spencer", &beyond).await;
     let exit = answer["circle"]["upper_exit"]["x"].as_f64().unwrap();
     assert!(exit > 41.0, "{exit}");
     assert!(answer["warnings"]
         .to_string()
         .contains("beyond the ground as stated"));
+    assert_eq!(answer["search"]["beyond_ground"], true);
+    let f_beyond = answer["factor_of_safety"].as_f64().unwrap();
+    let f_within = within["factor_of_safety"].as_f64().unwrap();
+    assert!(f_beyond < f_within, "{f_beyond} vs {f_within}");
+    // The circle found beyond the ground, stated as a fixed circle: refused, then answered
+    // with the same F when it says beyond_ground.
+    let circle = &answer["circle"];
+    let mut fixed = json!({"section": section, "slices": 50, "circle": {
+        "centre": [circle["centre"]["x"], circle["centre"]["y"]], "radius": circle["radius"]}});
+    let (status, content_type, problem) = server.post("/slope/spencer", &fixed).await;
+    assert_problem(status, &content_type, &problem, 422, "circle");
+    assert!(problem["detail"]
+        .as_str()
+        .unwrap()
+        .contains("extend section.ground"));
+    fixed["circle"]["beyond_ground"] = json!(true);
+    let (status, _, again) = server.post("/slope/spencer", &fixed).await;
+    assert_eq!(status, 200, "{again}");
+    let g = again["factor_of_safety"].as_f64().unwrap();
+    assert!((g - f_beyond).abs() < 1e-9 * g, "{g} vs {f_beyond}");
     let simple = json!({"slope": {"height": 10, "length": 20}, "soil": soil, "search": {},
                         "slices": 50});
     let (_, _, answer) = server.post("/slope/spencer", &simple).await;
     assert!(!answer["warnings"].to_string().contains("beyond the ground"));
+    assert!(!answer["warnings"].to_string().contains("section_end"));
+    assert_eq!(answer["search"]["beyond_ground"], true);
+    let mut refused = simple.clone();
+    refused["search"]["beyond_ground"] = json!(true);
+    let (status, content_type, problem) = server.post("/slope/spencer", &refused).await;
+    assert_problem(status, &content_type, &problem, 422, "search.beyond_ground");
 }
 
 #[tokio::test]

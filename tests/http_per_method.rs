@@ -144,13 +144,13 @@ async fn per_method_needs_methods_and_the_classic_equations() {
 #[tokio::test]
 async fn an_embankment_on_clay_stronger_with_depth_has_bishops_published_minimum() {
     let server = Server::start().await;
-    let body = json!({"section": {"ground": [[0, 8], [10, 8], [26, 16], [40, 16]],
+    let body = json!({"section": {"ground": [[-20, 8], [10, 8], [26, 16], [60, 16]],
         "layers": [
             {"top": null, "soil": {"unit_weight": 20, "cohesion": 95, "friction_angle_deg": 15}},
-            {"top": [[0, 8], [40, 8]], "soil": {"unit_weight": 20, "cohesion": 15, "friction_angle_deg": 0}},
-            {"top": [[0, 4], [40, 4]], "soil": {"unit_weight": 20,
+            {"top": [[-20, 8], [60, 8]], "soil": {"unit_weight": 20, "cohesion": 15, "friction_angle_deg": 0}},
+            {"top": [[-20, 4], [60, 4]], "soil": {"unit_weight": 20,
                 "strength": {"model": "undrained", "cohesion": 15, "gradient": 3.75, "datum": 4}}}],
-        "bedrock": [[0, 0], [40, 0]]},
+        "bedrock": [[-20, 0], [60, 0]]},
         "search": {"per_method": true}, "slices": 50, "methods": ["bishop", "ordinary"],
         "include": []});
     let answer = assert_own_minima(&server, &body).await;

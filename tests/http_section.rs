@@ -486,9 +486,9 @@ async fn slice_layers_count_from_one_like_every_other_index() {
     // from 1. Two layers, the lower from y = -3 down: slices whose base middle lies below -3
     // are in layer 2, the others in layer 1; the simple slope's are all in layer 1.
     let server = Server::start().await;
-    let body = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [40, 10]],
+    let body = json!({"section": {"ground": [[-20, 0], [0, 0], [20, 10], [60, 10]],
         "layers": [{"top": null, "soil": {"unit_weight": 19, "cohesion": 10, "friction_angle_deg": 28}},
-                   {"top": [[-20, -3], [40, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}]},
+                   {"top": [[-20, -3], [60, -3]], "soil": {"unit_weight": 20, "cohesion": 0, "friction_angle_deg": 35}}]},
         "circle": {"centre": [12, 28], "radius": 34}, "slices": 40, "include": ["slices"]});
     let (status, _, answer) = server.post("/slope/spencer", &body).await;
     assert_eq!(status, 200, "{answer}");

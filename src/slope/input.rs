@@ -12,7 +12,7 @@ use thrustline_solver::slope::{
 };
 
 use super::lines::polyline;
-use super::methods::interslice_function;
+use super::methods::{interslice_function, methods_plan, MethodsAsked};
 use super::request::{CircleDto, CompositeDto, SearchDto, SpencerRequest};
 use super::section::{refuse_section_only, search_region, section_from};
 use super::strength::soil as soil_from;
@@ -62,7 +62,7 @@ impl SpencerRequest {
                     finite("moment_centre", c[1]).map(|_| (c[0], c[1]))
                 })
                 .transpose()?;
-            section_target(parts, SlipShape::Polyline(line), centre)?
+            section_target(parts, SlipShape::Polyline(line), centre, false)?
         } else if let Some(search) = &self.search {
             let (target, found) = search_target(search, parts)?;
             candidates = found;
@@ -74,31 +74,12 @@ impl SpencerRequest {
                  for the critical circle",
             ));
         };
-        let mut methods = self.methods.clone();
-        methods.dedup();
-        if self.interslice_function.is_some()
-            && !methods.contains(&super::methods::MethodName::MorgensternPrice)
-        {
-            return Err(ApiError::invalid(
-                "interslice_function",
-                "is Morgenstern–Price's: add \"morgenstern_price\" to methods, or leave it out",
-            ));
-        }
-        let per_method = self.search.as_ref().is_some_and(|s| s.per_method);
-        if per_method && methods.is_empty() {
-            return Err(ApiError::invalid(
-                "search.per_method",
-                "names no method to search: list them in methods (bishop, janbu, ordinary, \
-                 morgenstern_price)",
-            ));
-        }
-        if per_method && self.negative_effective_stress != Default::default() {
-            return Err(ApiError::invalid(
-                "search.per_method",
-                "searches each method on its classic equations: it does not combine with \
-                 negative_effective_stress other than keep",
-            ));
-        }
+        let (methods, per_method) = methods_plan(MethodsAsked {
+            names: &self.methods,
+            interslice_function: self.interslice_function.is_some(),
+            per_method: self.search.as_ref().is_some_and(|s| s.per_method),
+            classic: self.negative_effective_stress == Default::default(),
+        })?;
         Ok(SlopePlan {
             target,
             per_method,
@@ -107,7 +88,7 @@ impl SpencerRequest {
             estimate_accuracy: true,
             max_slices: MAX_SLICES,
             curves: self.curves,
-            methods: methods.into_iter().map(Into::into).collect(),
+            methods,
             interslice_function: interslice_function(self.interslice_function.as_deref())?,
             negative_effective_stress: self.negative_effective_stress.into(),
             candidates,
@@ -241,6 +222,7 @@ fn search_candidates(search: &SearchDto, height: f64) -> Result<Candidates, ApiE
     Ok(Candidates {
         min_depth,
         circles_only: search.composite == CompositeDto::CirclesOnly,
+        beyond_ground: search.beyond_ground,
     })
 }
 
@@ -290,7 +272,7 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
                 centre: (centre[0], centre[1]),
                 radius,
             };
-            section_target(parts, shape, None)
+            section_target(parts, shape, None, circle.beyond_ground)
         }
         (None, None, None, None) => Err(ApiError::invalid(
             "circle",
@@ -315,16 +297,35 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
 
 /// An absolute circle or a polyline on a section (the simple slope becomes the section
 /// [(0, 0), (L, H)], continued level both ways, with its soil).
+/// A surface that leaves the section's x-range is refused naming `circle` or `surface`, unless
+/// `beyond_ground` allows it (a circle's `beyond_ground`; a polyline's points are the user's own).
 fn section_target(
     parts: Parts,
     shape: SlipShape,
     moment_centre: Option<(f64, f64)>,
+    beyond_ground: bool,
 ) -> Result<Target, ApiError> {
+    let field = match shape {
+        SlipShape::Circle { .. } => "circle",
+        SlipShape::Polyline(_) => "surface",
+    };
     let section = match parts.ground {
         Ground::Section(section) => *section,
         Ground::Simple(embankment, soil) => Section::simple(&embankment, soil)?,
     };
     let problem = SectionProblem::new(section, shape, parts.slices, parts.seismic, moment_centre)?;
+    if let (false, Some(((low, high), (first, last)))) = (beyond_ground, problem.beyond_ground()) {
+        let circle = " (or circle.beyond_ground: true to take it as level there)";
+        let allow = if field == "circle" { circle } else { "" };
+        return Err(ApiError::invalid(
+            field,
+            format!(
+                "the slip surface runs from x = {low:.4} to {high:.4}, beyond the section's \
+                 ground (x = {first} … {last}): extend section.ground to where the surface \
+                 ends{allow}"
+            ),
+        ));
+    }
     Ok(Target::Surface(Analysed::Section(Box::new(problem))))
 }
 
@@ -416,8 +417,12 @@ fn search_target(search: &SearchDto, parts: Parts) -> Result<(Target, Candidates
                      change from circle to circle",
                 ));
             }
-            let candidates = search_candidates(search, embankment.height())?;
             let target = search_from(search, embankment, soil, parts.slices, parts.seismic)?;
+            // The simple slope's ground runs on level both ways by definition.
+            let candidates = Candidates {
+                beyond_ground: true,
+                ..search_candidates(search, embankment.height())?
+            };
             Ok((target, candidates))
         }
         Ground::Section(section) => {

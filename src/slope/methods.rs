@@ -126,6 +126,48 @@ pub fn interslice_function(points: Option<&[[f64; 2]]>) -> Result<InterSliceFunc
     ))
 }
 
+/// What a request asks of the methods.
+#[derive(Debug, Clone, Copy)]
+pub struct MethodsAsked<'a> {
+    /// `methods`.
+    pub names: &'a [MethodName],
+    /// Whether `interslice_function` is given.
+    pub interslice_function: bool,
+    /// `search.per_method`.
+    pub per_method: bool,
+    /// Whether `negative_effective_stress` is `keep` (the classic equations).
+    pub classic: bool,
+}
+
+/// `methods` and `search.per_method` as planned: the methods in order (repeats next to each
+/// other dropped), and whether each is searched for its own critical circle.
+pub fn methods_plan(asked: MethodsAsked<'_>) -> Result<(Vec<Method>, bool), ApiError> {
+    let mut methods = asked.names.to_vec();
+    methods.dedup();
+    if asked.interslice_function && !methods.contains(&MethodName::MorgensternPrice) {
+        return Err(ApiError::invalid(
+            "interslice_function",
+            "is Morgenstern–Price's: add \"morgenstern_price\" to methods, or leave it out",
+        ));
+    }
+    let per_method = asked.per_method;
+    if per_method && methods.is_empty() {
+        return Err(ApiError::invalid(
+            "search.per_method",
+            "names no method to search: list them in methods (bishop, janbu, ordinary, \
+             morgenstern_price)",
+        ));
+    }
+    if per_method && !asked.classic {
+        return Err(ApiError::invalid(
+            "search.per_method",
+            "searches each method on its classic equations: it does not combine with \
+             negative_effective_stress other than keep",
+        ));
+    }
+    Ok((methods.into_iter().map(Into::into).collect(), per_method))
+}
+
 impl From<MethodName> for Method {
     fn from(name: MethodName) -> Self {
         match name {

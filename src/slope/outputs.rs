@@ -48,6 +48,9 @@ pub struct SearchOutDto {
     /// Whether circles that would cross the bedrock were candidates (`follow_bedrock`) or not
     /// (`circles_only`).
     pub composite: super::options::CompositeDto,
+    /// Whether surfaces could enter or leave the ground beyond the section's x-range
+    /// (`search.beyond_ground`; always on the simple slope, whose ground runs on level).
+    pub beyond_ground: bool,
     /// With `shape: noncircular`: whether a budget (`time_budget_ms`, `max_evaluations` or the
     /// time limit) ended the polyline search: its answer is the best found by then, never
     /// above the critical circle.
@@ -132,6 +135,7 @@ pub(super) fn search_out(search: &SearchReport) -> SearchOutDto {
         } else {
             super::options::CompositeDto::FollowBedrock
         },
+        beyond_ground: search.candidates.beyond_ground,
         budget_exhausted: !search.noncircular_stop.is_finished(),
         path: search.path.clone(),
         path_ms: search.path_ms.clone(),

@@ -31,6 +31,13 @@ const DEFAULT_RADII: usize = 10;
 /// A search on the simple slope: the options only a section's search has are refused, each
 /// naming its field (none is silently ignored).
 pub fn refuse_section_only(search: &SearchDto) -> Result<(), ApiError> {
+    if search.beyond_ground {
+        return Err(ApiError::invalid(
+            "search.beyond_ground",
+            "is for a search over a section; the simple slope's ground runs on level both ways \
+             by definition",
+        ));
+    }
     let section_only = [
         ("search.radius_min", search.radius_min.is_some()),
         ("search.radius_max", search.radius_max.is_some()),

@@ -29,6 +29,7 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
     if let Some(beyond) = beyond_the_ground(solved) {
         warnings.push(beyond);
     }
+    warnings.extend(at_the_section_end(solved));
     if !solution.strength.settled {
         warnings.push(Warning::new(
             Code::StrengthNotConsistent,
@@ -221,30 +222,42 @@ fn supports_in_the_crack(solved: &SolvedSlope) -> Option<Warning> {
 /// there, which the section did not say.
 fn beyond_the_ground(solved: &SolvedSlope) -> Option<Warning> {
     let Analysed::Section(problem) = &solved.problem;
+    let ((low, high), (first, last)) = problem.beyond_ground()?;
+    Some(Warning::new(
+        Code::BeyondGround,
+        format!(
+            "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as stated \
+             (x = {first} … {last}): the ground is taken as level beyond its ends, as asked \
+             (beyond_ground)"
+        ),
+    ))
+}
+
+/// A searched surface that ends where the stated section does: surfaces beyond it were no
+/// candidates (`search.beyond_ground`), and the least F may lie among them.
+fn at_the_section_end(solved: &SolvedSlope) -> Option<Warning> {
+    let search = solved.search.as_ref()?;
+    let Analysed::Section(problem) = &solved.problem;
     let section = problem.section();
-    if section.is_level_beyond_ends() {
+    if search.candidates.beyond_ground || section.is_level_beyond_ends() {
         return None;
     }
     let points = section.ground().points();
     let (first, last) = (points[0].0, points[points.len() - 1].0);
-    // In section coordinates already.
-    let (low, high) = problem
-        .surface()
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p.0), b.max(p.0))
-        });
-    let rounding = 1e-9 * (last - first).abs().max(1.0);
-    (low < first - rounding || high > last + rounding).then(|| {
-        Warning::new(
-            Code::BeyondGround,
-            format!(
-                "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as \
-                 stated (x = {first} … {last}): the ground is taken as level beyond its ends — \
-                 extend section.ground if it is not"
-            ),
-        )
-    })
+    let ((a, _), (b, _)) = problem.ends();
+    let near = 1e-6 * (last - first).abs().max(1.0);
+    let end = [first, last]
+        .into_iter()
+        .find(|e| (a - e).abs() <= near || (b - e).abs() <= near)?;
+    Some(Warning::new(
+        Code::MinimumAtSectionEnd,
+        format!(
+            "the critical surface reaches the end of the section as stated (x = {end}): \
+             surfaces beyond it were not candidates and the least F may lie among them — \
+             extend section.ground where the ground goes on (or search.beyond_ground: true to \
+             take it as level)"
+        ),
+    ))
 }
 
 /// What a search leaves unsure: a minimum on the edge, a non-circular stage out of time,

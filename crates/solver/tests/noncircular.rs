@@ -88,6 +88,7 @@ fn a_weak_layer_draws_the_critical_surface_along_it() {
             vertices: 12,
             max_evaluations: None,
             min_depth: 0.0,
+            beyond_ground: false,
         },
         slices,
         Seismic::default(),

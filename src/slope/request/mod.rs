@@ -54,6 +54,12 @@ pub struct CircleDto {
     #[serde(default)]
     #[schema(examples(80.0))]
     pub radius: Option<f64>,
+    /// On a section: whether the circle may enter or leave the ground beyond the section's
+    /// x-range, the ground taken as level there (answered with the `beyond_ground` warning).
+    /// Defaults to false: such a circle is refused (422), extend `section.ground` instead.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub beyond_ground: bool,
 }
 
 /// Soil properties, the same in every slice.

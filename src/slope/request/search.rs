@@ -96,6 +96,12 @@ pub struct SearchDto {
     #[serde(default, deserialize_with = "crate::nullable::or_default")]
     #[schema(nullable)]
     pub per_method: bool,
+    /// Section only: whether surfaces may enter or leave the ground beyond the section's
+    /// x-range, the ground taken as level there (the answer then warns `beyond_ground`).
+    /// Defaults to false: the search stays within the section as stated.
+    #[serde(default, deserialize_with = "crate::nullable::or_default")]
+    #[schema(nullable)]
+    pub beyond_ground: bool,
 }
 
 fn default_grid() -> usize {

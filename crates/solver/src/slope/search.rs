@@ -146,6 +146,7 @@ pub fn factor_of_safety(
         seismic: problem.seismic,
         spencer: settings,
         min_depth: 0.0,
+        beyond_ground: true,
         method: None,
     };
     outcome(problem, &trials, circle, &Cell::new(None)).ok()
@@ -414,6 +415,8 @@ pub fn search_critical_circle(
             seismic: problem.seismic,
             spencer: &settings.spencer,
             min_depth: settings.min_depth,
+            // The embankment's ground runs on level beyond what any circle reaches.
+            beyond_ground: true,
             method: settings.method,
         },
         settings,

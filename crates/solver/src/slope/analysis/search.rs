@@ -3,7 +3,7 @@
 //! found (rebuilt at the plan's slices) with its report, or the stop that left it without one.
 
 use super::report::SearchReport;
-use super::search_plan::{Candidates, SectionSearch};
+use super::search_plan::{Candidates, Noncircular, SectionSearch};
 use super::surface::Analysed;
 use crate::budget::{Budget, Stop};
 use crate::slope::search::{
@@ -82,12 +82,14 @@ pub(super) fn section(
         spencer: *spencer,
         min_depth: candidates.min_depth,
         circles_only: candidates.circles_only,
+        beyond_ground: candidates.beyond_ground,
         method,
         ..CircleSearchSettings::default()
     };
+    let (section, region) = (&plan.section, &plan.region);
     let found = search_circles(
-        &plan.section,
-        &plan.region,
+        section,
+        region,
         plan.hard,
         plan.slices,
         plan.seismic,
@@ -106,47 +108,76 @@ pub(super) fn section(
         ..SearchReport::of_section(&found, plan.hard)
     };
     if let Some(noncircular) = plan.noncircular {
-        let stage_budget = budget.narrowed(noncircular.budget);
+        let stage = NoncircularStage {
+            plan,
+            noncircular,
+            spencer,
+            candidates,
+            circle_factor: found.factor_of_safety,
+        };
+        problem = stage.run(problem, &mut report, budget)?;
+    }
+    Ok(Ok((Analysed::Section(Box::new(problem)), report)))
+}
+
+/// The non-circular stage of a section's search, from its critical circle.
+struct NoncircularStage<'a> {
+    plan: &'a SectionSearch,
+    noncircular: Noncircular,
+    spencer: &'a SpencerSettings,
+    candidates: Candidates,
+    /// The circle's F, the search's own at the plan's slices.
+    circle_factor: Option<f64>,
+}
+
+impl NoncircularStage<'_> {
+    /// The polyline found from the circle's `problem` where its F is lower (never above the
+    /// best circle: its resampling of the circle starts a little above it, and a short budget
+    /// may end the stage there), else the circle; the stage's work added to `report`.
+    fn run(
+        &self,
+        problem: SectionProblem,
+        report: &mut SearchReport,
+        budget: &Budget,
+    ) -> Result<SectionProblem, SlopeError> {
+        let (plan, candidates) = (self.plan, self.candidates);
+        let stage_budget = budget.narrowed(self.noncircular.budget);
         let better = search_noncircular(
             problem.section(),
             &problem.surface(),
             NoncircularLimits {
-                vertices: noncircular.vertices,
-                max_evaluations: noncircular.max_evaluations,
+                vertices: self.noncircular.vertices,
+                max_evaluations: self.noncircular.max_evaluations,
                 min_depth: candidates.min_depth,
+                beyond_ground: candidates.beyond_ground,
             },
             plan.slices,
             plan.seismic,
-            spencer,
+            self.spencer,
             &stage_budget,
         );
-        if let Some(better) = better {
-            let line = Polyline::new(better.surface.clone()).map_err(|e| SlopeError::Conflict {
-                parameter: SlopeParameter::Search,
-                reason: e.to_string(),
-            })?;
-            let polyline = SectionProblem::new(
-                problem.section().clone(),
-                SlipShape::Polyline(line),
-                plan.slices,
-                plan.seismic,
-                None,
-            )?;
-            // Never above the best circle: the polyline answers only where it is lower (its
-            // resampling of the circle starts a little above it, and a short budget may end
-            // the stage there).
-            // The circle's F is the search's own, at these slices.
-            let g = solve_spencer(polyline.model(), spencer).factor_of_safety;
-            if let (Some(g), Some(c)) = (g, found.factor_of_safety) {
-                if g < c {
-                    problem = polyline;
-                }
-            }
-            report.evaluations += better.evaluations;
-            report.path = Some(better.path);
-            report.path_ms = Some(better.path_ms);
-            report.noncircular_stop = better.stop;
-        }
+        let Some(better) = better else {
+            return Ok(problem);
+        };
+        let line = Polyline::new(better.surface.clone()).map_err(|e| SlopeError::Conflict {
+            parameter: SlopeParameter::Search,
+            reason: e.to_string(),
+        })?;
+        let polyline = SectionProblem::new(
+            problem.section().clone(),
+            SlipShape::Polyline(line),
+            plan.slices,
+            plan.seismic,
+            None,
+        )?;
+        report.evaluations += better.evaluations;
+        report.path = Some(better.path);
+        report.path_ms = Some(better.path_ms);
+        report.noncircular_stop = better.stop;
+        let g = solve_spencer(polyline.model(), self.spencer).factor_of_safety;
+        Ok(match (g, self.circle_factor) {
+            (Some(g), Some(c)) if g < c => polyline,
+            _ => problem,
+        })
     }
-    Ok(Ok((Analysed::Section(Box::new(problem)), report)))
 }

@@ -46,4 +46,8 @@ pub struct Candidates {
     /// Whether a circle that would cross the bedrock is not a candidate (otherwise it follows
     /// the bedrock: a composite surface).
     pub circles_only: bool,
+    /// Whether a surface may enter or leave the ground beyond the section's x-range (the
+    /// ground taken level there); otherwise it is no candidate. The simple slope's ground runs
+    /// on level by definition.
+    pub beyond_ground: bool,
 }

@@ -40,6 +40,18 @@ pub(super) struct Cut {
     pub drawdown: Option<super::drawdown::DrawdownStages>,
 }
 
+impl Cut {
+    /// Whether the mass enters and leaves the ground within the section's x-range, to rounding
+    /// (`section` and `mirror`, the section seen from behind: the frames a cut may be in).
+    pub fn within_ground(&self, section: &Section, mirror: &Section) -> bool {
+        let frame = if self.mirrored { mirror } else { section };
+        let p = frame.ground.points();
+        let (first, last) = (p[0].0, p[p.len() - 1].0);
+        let rounding = 1e-9 * (last - first).abs().max(1.0);
+        self.ends.0 .0 >= first - rounding && self.ends.1 .0 <= last + rounding
+    }
+}
+
 /// y of the slip surface (before bedrock) at x.
 fn shape_y(shape: &SlipShape, x: f64) -> f64 {
     match shape {

@@ -243,6 +243,26 @@ impl SectionProblem {
         points
     }
 
+    /// Where the slip surface runs beyond the section's ground as stated, `(low, high)` its
+    /// x-range against the ground's `(first, last)`: `None` when it stays within (to rounding),
+    /// or on the simple embankment, whose ground runs on level by definition.
+    pub fn beyond_ground(&self) -> Option<((f64, f64), (f64, f64))> {
+        let section = self.section();
+        if section.is_level_beyond_ends() {
+            return None;
+        }
+        let points = section.ground().points();
+        let (first, last) = (points[0].0, points[points.len() - 1].0);
+        let (low, high) = self
+            .surface()
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p.0), b.max(p.0))
+            });
+        let rounding = 1e-9 * (last - first).abs().max(1.0);
+        (low < first - rounding || high > last + rounding).then_some(((low, high), (first, last)))
+    }
+
     /// Entry and exit of the slip surface on the ground (toe end, crest end), in section
     /// coordinates; with a tension crack the crest end is the top of the crack.
     pub fn ends(&self) -> ((f64, f64), (f64, f64)) {

@@ -234,12 +234,14 @@ fn confirmed_factor(
         slices,
         seismic,
         min_depth,
+        beyond_ground,
     } = slicing;
     let doubled = NonZeroUsize::new(4 * slices.get()).unwrap_or(slices);
     let at = |n: NonZeroUsize| -> Option<f64> {
         let cut = place(section, Some(mirror), shape, n, seismic, None).ok()?;
-        // Shallower than `search.min_depth`: not a candidate (as in the circle stage).
-        if cut.model.depth() < min_depth {
+        // Shallower than `search.min_depth`, or beyond the section: not a candidate (as in
+        // the circle stage).
+        if cut.model.depth() < min_depth || !(beyond_ground || cut.within_ground(section, mirror)) {
             return None;
         }
         match spencer_factor_outcome(&cut.model, settings) {
@@ -301,6 +303,8 @@ struct Slicing {
     seismic: Seismic,
     /// The least depth of a candidate (`search.min_depth`; zero: any).
     min_depth: f64,
+    /// Whether a candidate may end beyond the section's x-range.
+    beyond_ground: bool,
 }
 
 /// How far a non-circular search goes and which surfaces it may answer.
@@ -312,6 +316,8 @@ pub struct NoncircularLimits {
     pub max_evaluations: Option<usize>,
     /// Surfaces shallower than this are no candidates (zero: any).
     pub min_depth: f64,
+    /// Whether a surface may end beyond the section's x-range (otherwise no candidate).
+    pub beyond_ground: bool,
 }
 
 /// Searches from `start` (a circle's polyline, left to right) with `limits.vertices` points,
@@ -335,6 +341,7 @@ pub fn search_noncircular(
         vertices,
         max_evaluations,
         min_depth,
+        beyond_ground,
     } = limits;
     let start_settings = *settings;
     let trials = Trials {
@@ -344,6 +351,7 @@ pub fn search_noncircular(
             slices,
             seismic,
             min_depth,
+            beyond_ground,
         },
         settings: SpencerSettings {
             fallback: false,

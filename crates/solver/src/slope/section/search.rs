@@ -116,6 +116,9 @@ pub struct CircleSearchSettings<'a> {
     /// Whether a circle that would cross the bedrock is no candidate (`false`: it follows the
     /// bedrock, a composite surface). Defaults to false.
     pub circles_only: bool,
+    /// Whether a circle may enter or leave the ground beyond the section's x-range (the ground
+    /// taken level there). Defaults to false: such a circle is no candidate.
+    pub beyond_ground: bool,
     /// The method the circles are ranked by: Spencer's (`None`, the default) or another's,
     /// for its own critical circle.
     pub method: Option<(Method, &'a InterSliceFunction)>,
@@ -130,6 +133,7 @@ impl Default for CircleSearchSettings<'_> {
             max_regrids: 3,
             min_depth: 0.0,
             circles_only: false,
+            beyond_ground: false,
             method: None,
         }
     }
@@ -151,6 +155,8 @@ struct Evaluator<'a> {
     min_depth: f64,
     /// Circles that would cross the bedrock are no candidates.
     circles_only: bool,
+    /// Circles beyond the section's x-range are candidates.
+    beyond_ground: bool,
     /// The method the circles are ranked by (`None`: Spencer's).
     method: Option<(Method, &'a InterSliceFunction)>,
 }
@@ -169,6 +175,7 @@ impl Evaluator<'_> {
             seismic: self.seismic,
             spencer: &self.spencer,
             min_depth: self.min_depth,
+            beyond_ground: self.beyond_ground,
             method: self.method,
         };
         trial(&setup, &SlipShape::Circle { centre, radius }, near, |cut| {
@@ -358,6 +365,7 @@ impl<'a> Evaluator<'a> {
             deep,
             min_depth: settings.min_depth,
             circles_only: settings.circles_only,
+            beyond_ground: settings.beyond_ground,
             method: settings.method,
         }
     }

@@ -570,6 +570,7 @@ fn a_searched_circle_answers_the_same_after_other_circles_on_its_thread() {
             seismic: Seismic::default(),
             spencer: &settings,
             min_depth: 0.0,
+            beyond_ground: true,
             method: None,
         };
         trial::circle_outcome(&setup, centre, radius, None).unwrap()

@@ -32,6 +32,9 @@ pub struct TrialSetup<'a> {
     pub spencer: &'a SpencerSettings,
     /// Masses shallower than this cut no mass (are no candidates).
     pub min_depth: f64,
+    /// Whether a mass may enter or leave the ground beyond the section's x-range (the ground
+    /// taken level there); otherwise such a surface is no candidate.
+    pub beyond_ground: bool,
     /// The method that ranks the surfaces: Spencer's (`None`), or another for its own
     /// critical surface (with Morgenstern–Price's inter-slice function).
     pub method: Option<(Method, &'a InterSliceFunction)>,
@@ -66,6 +69,7 @@ pub(super) fn trial(
         seismic,
         spencer,
         min_depth,
+        beyond_ground,
         method,
     } = *setup;
     let cut = place_for_search(section, mirror, shape, slices, seismic).map_err(|e| match e {
@@ -76,7 +80,8 @@ pub(super) fn trial(
         } => Some(None),
         _ => None,
     })?;
-    if cut.model.depth() < min_depth || excluded(&cut) {
+    let outside = !beyond_ground && !cut.within_ground(section, mirror);
+    if cut.model.depth() < min_depth || outside || excluded(&cut) {
         return Err(None);
     }
     let outcome = match method {
