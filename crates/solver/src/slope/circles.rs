@@ -39,6 +39,15 @@ pub struct CentreGrid {
 }
 
 impl CentreGrid {
+    /// The grid seen from behind (x → −x).
+    pub fn mirrored(&self) -> Self {
+        Self {
+            x_min: -self.x_max,
+            x_max: -self.x_min,
+            ..*self
+        }
+    }
+
     /// The centres' x, evenly from `x_min` to `x_max`.
     pub fn xs(&self) -> Vec<f64> {
         spaced(self.x_min, self.x_max, self.nx)
@@ -87,6 +96,21 @@ pub struct FactorGrid {
     pub ys: Vec<f64>,
     /// F at (xs[i], ys[j]) in `factors[j][i]`; `None` where the centre gives no valid circle.
     pub factors: Vec<Vec<Option<f64>>>,
+}
+
+impl FactorGrid {
+    /// The grid seen from behind (x → −x): columns in increasing x again.
+    pub fn mirrored(&self) -> Self {
+        Self {
+            xs: self.xs.iter().rev().map(|x| -x).collect(),
+            ys: self.ys.clone(),
+            factors: self
+                .factors
+                .iter()
+                .map(|row| row.iter().rev().copied().collect())
+                .collect(),
+        }
+    }
 }
 
 /// What a search found (how it ended is its [`Stop`]).

@@ -70,7 +70,12 @@ pub(super) fn simple(
 }
 
 /// A section's critical circle (ranked by Spencer's F or `method`'s), then the non-circular
-/// stage from it when planned.
+/// stage from it when planned. A section whose ground rises to the left has its circles
+/// searched seen from behind and the circle found turned back, so that a section and its mirror
+/// image are searched in one frame and find the same circle, bit for bit (model §4.4): the
+/// grid and the refinement's simplex are not symmetric in x. (The non-circular stage runs in
+/// the section's own frame: seen from behind, its moves reach roots next to a pole of m_α on
+/// some published sections that the rule for roots does not yet reject.)
 pub(super) fn section(
     plan: &SectionSearch,
     spencer: &SpencerSettings,
@@ -78,6 +83,58 @@ pub(super) fn section(
     method: Option<(Method, &InterSliceFunction)>,
     budget: &Budget,
 ) -> Result<Found, SlopeError> {
+    let found = if plan.section.rises_to_the_left() {
+        let seen = plan.mirrored();
+        critical_circle(&seen, spencer, candidates, method, budget)?.map(|mut circle| {
+            circle.centre.0 = -circle.centre.0;
+            circle.report.grid = circle.report.grid.mirrored();
+            circle
+        })
+    } else {
+        critical_circle(plan, spencer, candidates, method, budget)?
+    };
+    let Circle {
+        centre,
+        radius,
+        factor_of_safety,
+        mut report,
+    } = match found {
+        Ok(circle) => circle,
+        Err(stop) => return Ok(Err(stop)),
+    };
+    let shape = SlipShape::Circle { centre, radius };
+    let mut problem =
+        SectionProblem::new(plan.section.clone(), shape, plan.slices, plan.seismic, None)?;
+    if let Some(noncircular) = plan.noncircular {
+        let stage = NoncircularStage {
+            plan,
+            noncircular,
+            spencer,
+            candidates,
+            circle_factor: factor_of_safety,
+        };
+        problem = stage.run(problem, &mut report, budget)?;
+    }
+    Ok(Ok((Analysed::Section(Box::new(problem)), report)))
+}
+
+/// A critical circle found, with the search's report.
+struct Circle {
+    centre: (f64, f64),
+    radius: f64,
+    /// Its F, the search's own at the plan's slices.
+    factor_of_safety: Option<f64>,
+    report: SearchReport,
+}
+
+/// A section's critical circle in its own frame.
+fn critical_circle(
+    plan: &SectionSearch,
+    spencer: &SpencerSettings,
+    candidates: Candidates,
+    method: Option<(Method, &InterSliceFunction)>,
+    budget: &Budget,
+) -> Result<Result<Circle, Stop>, SlopeError> {
     let settings = CircleSearchSettings {
         spencer: *spencer,
         min_depth: candidates.min_depth,
@@ -100,24 +157,16 @@ pub(super) fn section(
         (SearchStatus::Found, Stop::Finished, Some(circle)) => circle,
         _ => return Ok(Err(no_circle(budget))),
     };
-    let shape = SlipShape::Circle { centre, radius };
-    let mut problem =
-        SectionProblem::new(plan.section.clone(), shape, plan.slices, plan.seismic, None)?;
-    let mut report = SearchReport {
+    let report = SearchReport {
         candidates,
         ..SearchReport::of_section(&found, plan.hard)
     };
-    if let Some(noncircular) = plan.noncircular {
-        let stage = NoncircularStage {
-            plan,
-            noncircular,
-            spencer,
-            candidates,
-            circle_factor: found.factor_of_safety,
-        };
-        problem = stage.run(problem, &mut report, budget)?;
-    }
-    Ok(Ok((Analysed::Section(Box::new(problem)), report)))
+    Ok(Ok(Circle {
+        centre,
+        radius,
+        factor_of_safety: found.factor_of_safety,
+        report,
+    }))
 }
 
 /// The non-circular stage of a section's search, from its critical circle.

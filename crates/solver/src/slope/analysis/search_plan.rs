@@ -26,6 +26,20 @@ pub struct SectionSearch {
     pub noncircular: Option<Noncircular>,
 }
 
+impl SectionSearch {
+    /// The search of the section seen from behind (x → −x).
+    pub(super) fn mirrored(&self) -> Self {
+        Self {
+            section: self.section.mirrored(),
+            region: CircleRegion {
+                centres: self.region.centres.mirrored(),
+                radii: self.region.radii.clone(),
+            },
+            ..self.clone()
+        }
+    }
+}
+
 /// The non-circular stage: a polyline of `vertices` points, moved from the best circle's.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Noncircular {

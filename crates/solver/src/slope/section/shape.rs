@@ -18,7 +18,8 @@ pub enum SlipShape {
 }
 
 impl SlipShape {
-    pub(super) fn mirrored(&self) -> Self {
+    /// The surface seen from behind (x → −x).
+    pub fn mirrored(&self) -> Self {
         match self {
             Self::Circle { centre, radius } => Self::Circle {
                 centre: (-centre.0, centre.1),

@@ -33,6 +33,28 @@ impl Section {
         Self::new(one_soil(ground, soil, None))
     }
 
+    /// Whether the ground rises towards the left: its left end higher than its right, or, with
+    /// both ends level, more of its relief (the area above its lowest point) left of its
+    /// middle. Exactly one of a section and its mirror image rises to the left, unless the
+    /// ground is symmetric; a search runs in the frame where it does not, so that a section and
+    /// its mirror image are searched alike (model §14).
+    pub fn rises_to_the_left(&self) -> bool {
+        let p = self.ground.points();
+        let (first, last) = (p[0], p[p.len() - 1]);
+        if first.1 != last.1 {
+            return first.1 > last.1;
+        }
+        let low = p.iter().fold(f64::INFINITY, |m, q| m.min(q.1));
+        let (mut area, mut moment) = (0.0, 0.0);
+        for w in p.windows(2) {
+            let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+            let (h0, h1) = (y0 - low, y1 - low);
+            area += 0.5 * (h0 + h1) * (x1 - x0);
+            moment += (x1 - x0) / 6.0 * (x0 * (2.0 * h0 + h1) + x1 * (h0 + 2.0 * h1));
+        }
+        area > 0.0 && moment < 0.5 * (first.0 + last.0) * area
+    }
+
     /// The section seen from behind (x → −x).
     pub(crate) fn mirrored(&self) -> Self {
         let line = |l: &Option<Polyline>| l.as_ref().map(Polyline::mirrored);

@@ -71,6 +71,8 @@ impl WaterLine {
 struct GridPoint {
     position: Point2<f64>,
     u: f64,
+    /// Its index in the points as given.
+    index: usize,
 }
 
 impl HasPosition for GridPoint {
@@ -101,10 +103,19 @@ pub enum GridError {
 }
 
 /// Pore pressures at points, linear over their Delaunay triangulation.
+///
+/// Where the triangulation is not unique (four or more points on one circle: every cell of a
+/// rectangular grid), one choice of diagonals would make the field, and every F on it, depend
+/// on which way the section faces. The grid then also keeps the triangulation of its mirror
+/// image (x → −x), and u is the mean of the two interpolants: the same for a section and its
+/// mirror, bit for bit. Points are inserted in sorted order, so that the triangulation depends
+/// on the points, not on the order they are listed in.
 #[derive(Clone)]
 pub struct PoreGrid {
     points: Arc<[(f64, f64, f64)]>,
     triangulation: Arc<DelaunayTriangulation<GridPoint>>,
+    /// The triangulation of the points at −x, where it is not the mirror of `triangulation`.
+    mirror: Option<Arc<DelaunayTriangulation<GridPoint>>>,
     /// −1 when the section is seen from behind (queries at −x).
     sign: f64,
 }
@@ -113,6 +124,7 @@ impl std::fmt::Debug for PoreGrid {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("PoreGrid")
             .field("points", &self.points.len())
+            .field("ambiguous", &self.mirror.is_some())
             .field("sign", &self.sign)
             .finish()
     }
@@ -122,6 +134,47 @@ impl PartialEq for PoreGrid {
     fn eq(&self, other: &Self) -> bool {
         self.points == other.points && self.sign == other.sign
     }
+}
+
+/// The Delaunay triangulation of `points` with x multiplied by `sign`, inserted in sorted order.
+fn triangulate(
+    points: &[(f64, f64, f64)],
+    sign: f64,
+) -> Result<DelaunayTriangulation<GridPoint>, GridError> {
+    let mut vertices: Vec<GridPoint> = points
+        .iter()
+        .enumerate()
+        .map(|(index, &(x, y, u))| GridPoint {
+            position: Point2::new(sign * x, y),
+            u,
+            index,
+        })
+        .collect();
+    vertices.sort_by(|a, b| {
+        (a.position.x.total_cmp(&b.position.x)).then(a.position.y.total_cmp(&b.position.y))
+    });
+    let mut triangulation = DelaunayTriangulation::<GridPoint>::new();
+    for v in vertices {
+        let index = v.index;
+        triangulation
+            .insert(v)
+            .map_err(|_| GridError::Refused { index })?;
+    }
+    Ok(triangulation)
+}
+
+/// The triangles of `triangulation` as sorted triples of the points' indices, sorted.
+fn triangle_set(triangulation: &DelaunayTriangulation<GridPoint>) -> Vec<[usize; 3]> {
+    let mut out: Vec<[usize; 3]> = triangulation
+        .inner_faces()
+        .map(|f| {
+            let mut t = f.vertices().map(|v| v.data().index);
+            t.sort_unstable();
+            t
+        })
+        .collect();
+    out.sort_unstable();
+    out
 }
 
 impl PoreGrid {
@@ -145,25 +198,17 @@ impl PoreGrid {
                 index: w[0].2.max(w[1].2),
             });
         }
-        let vertices: Vec<GridPoint> = points
-            .iter()
-            .map(|&(x, y, u)| GridPoint {
-                position: Point2::new(x, y),
-                u,
-            })
-            .collect();
-        let mut triangulation = DelaunayTriangulation::<GridPoint>::new();
-        for (index, v) in vertices.into_iter().enumerate() {
-            triangulation
-                .insert(v)
-                .map_err(|_| GridError::Refused { index })?;
-        }
+        let triangulation = triangulate(&points, 1.0)?;
         if triangulation.num_inner_faces() == 0 {
             return Err(GridError::Collinear);
         }
+        let mirror = triangulate(&points, -1.0)?;
+        let mirror =
+            (triangle_set(&mirror) != triangle_set(&triangulation)).then(|| Arc::new(mirror));
         Ok(Self {
             points: points.into(),
             triangulation: Arc::new(triangulation),
+            mirror,
             sign: 1.0,
         })
     }
@@ -173,19 +218,29 @@ impl PoreGrid {
         &self.points
     }
 
-    /// The triangles as index triples into [`PoreGrid::points`].
+    /// The triangles as index triples into [`PoreGrid::points`] (where the triangulation is
+    /// not unique, one of its choices).
     pub fn triangles(&self) -> Vec<[usize; 3]> {
         self.triangulation
             .inner_faces()
-            .map(|f| f.vertices().map(|v| v.fix().index()))
+            .map(|f| f.vertices().map(|v| v.data().index))
             .collect()
     }
 
     /// u at (x, y); `None` outside the grid's hull.
     pub fn pressure(&self, x: f64, y: f64) -> Option<f64> {
-        self.triangulation
-            .barycentric()
-            .interpolate(|v| v.data().u, Point2::new(self.sign * x, y))
+        let at = |t: &DelaunayTriangulation<GridPoint>, x: f64| {
+            t.barycentric()
+                .interpolate(|v| v.data().u, Point2::new(x, y))
+        };
+        let own = at(&self.triangulation, self.sign * x);
+        let Some(mirror) = &self.mirror else {
+            return own;
+        };
+        match (own, at(mirror, -self.sign * x)) {
+            (Some(a), Some(b)) => Some(0.5 * (a + b)),
+            (a, b) => a.or(b),
+        }
     }
 
     /// The grid seen from behind (x → −x).
