@@ -166,3 +166,72 @@ async fn an_embankment_on_clay_stronger_with_depth_has_bishops_published_minimum
     let codes = answer["warnings"].to_string();
     assert!(codes.contains("unsolved_below_minimum"), "{codes}");
 }
+
+/// ACADS 1(a) with a study of `method`: a sensitivity study whose first point is the stated
+/// cohesion, and a probabilistic one of vanishing spread.
+fn studied(method: &str, surface: &str) -> Value {
+    let mut body = acads_1a();
+    body["methods"] = json!(["bishop", "janbu"]);
+    body["sensitivity"] = json!({"method": method, "variables": [
+        {"field": "section.layers[0].soil.cohesion", "from": 3, "to": 4, "points": 2}]});
+    body["probabilistic"] = json!({"method": method, "samples": 4, "seed": 1, "surface": surface,
+        "variables": [{"field": "section.layers[0].soil.cohesion", "distribution": "normal",
+                       "std": 1e-12}]});
+    body
+}
+
+#[tokio::test]
+async fn studies_on_a_chosen_method_equal_that_method_at_zero_spread() {
+    let server = Server::start().await;
+    for (method, surface) in [
+        ("bishop", "fixed"),
+        ("bishop", "search"),
+        ("janbu", "search"),
+    ] {
+        let answer = spencer(&server, &studied(method, surface)).await;
+        // The deterministic F of the method: on its own critical circle (per_method), which a
+        // fixed-surface study keeps and a searching one finds again.
+        let own = number(&answer["methods"][method]["critical"]["factor_of_safety"]);
+        let p = &answer["probabilistic"];
+        assert_eq!(p["method"], method, "{p}");
+        let mean = number(&p["mean"]);
+        assert!(
+            (mean - own).abs() < 1e-9 * own,
+            "{method} {surface}: mean {mean} vs {own}"
+        );
+        let s = &answer["sensitivity"];
+        assert_eq!(s["method"], method, "{s}");
+        let first = number(&s["variables"][0]["points"][0]["factor"]);
+        assert!(
+            (first - own).abs() < 1e-9 * own,
+            "{method}: {first} vs {own}"
+        );
+    }
+    // Spencer's (the default) as before: no method echoed, the headline F.
+    let mut plain = studied("spencer", "fixed");
+    plain["probabilistic"]
+        .as_object_mut()
+        .unwrap()
+        .remove("method");
+    let answer = spencer(&server, &plain).await;
+    assert!(answer["probabilistic"].get("method").is_none());
+    let f = number(&answer["factor_of_safety"]);
+    let mean = number(&answer["probabilistic"]["mean"]);
+    assert!((mean - f).abs() < 1e-9 * f, "{mean} vs {f}");
+}
+
+#[tokio::test]
+async fn a_study_method_must_be_among_the_methods() {
+    let server = Server::start().await;
+    let mut body = studied("ordinary", "fixed");
+    body["sensitivity"]["method"] = json!("spencer");
+    let (status, _, problem) = server.post("/slope/spencer", &body).await;
+    assert_eq!(status, 422, "{problem}");
+    assert_eq!(problem["field"], "probabilistic.method", "{problem}");
+    let arch = json!({"geometry": {"kind": "circular", "radius": 10, "thickness": 1, "voussoirs": 20},
+        "loads": [{"block": 6, "fy": -1}], "include": [],
+        "sensitivity": {"method": "bishop", "variables": [{"field": "loads[0].fy", "from": -2, "to": -1}]}});
+    let (status, _, problem) = server.post("/arch/live-load", &arch).await;
+    assert_eq!(status, 422, "{problem}");
+    assert_eq!(problem["field"], "sensitivity.method", "{problem}");
+}

@@ -57,6 +57,22 @@ pub async fn run_live(
 
 /// The request's studies, checked against its `body` as sent (None without any).
 pub fn plan(request: &LiveLoadRequest, body: &Value) -> Result<Option<Study>, ApiError> {
+    let methods = [
+        (
+            "probabilistic.method",
+            request.probabilistic.as_ref().and_then(|p| p.method),
+        ),
+        (
+            "sensitivity.method",
+            request.sensitivity.as_ref().and_then(|s| s.method),
+        ),
+    ];
+    if let Some((field, _)) = methods.iter().find(|(_, m)| m.is_some()) {
+        return Err(ApiError::invalid(
+            *field,
+            "is for slopes: an arch study answers its load factor λ",
+        ));
+    }
     if let Some(p) = &request.probabilistic {
         if p.surface == Some(StudySurfaceDto::Search) {
             return Err(ApiError::invalid(
@@ -76,7 +92,8 @@ pub fn plan(request: &LiveLoadRequest, body: &Value) -> Result<Option<Study>, Ap
 /// The studies as the job the route's solve runs after its analysis.
 fn job(study: Study, tally: Arc<Tally>) -> StudyJob {
     Box::new(move |budget: &Budget| {
-        let evaluate = |request: Value, budget: &Budget| evaluate(request, budget);
+        // An arch has one answer, λ: `method` is refused when the study is planned.
+        let evaluate = |request: Value, _, budget: &Budget| evaluate(request, budget);
         crate::study::run(&study, &study.base, evaluate, budget, &tally)
     })
 }

@@ -8,18 +8,73 @@
 
 use serde_json::{json, Value};
 use thrustline_solver::budget::Budget;
-use thrustline_solver::slope::analysis::{analyse, Analysed, SlopeAnswer, SlopeOutcome};
+use thrustline_solver::slope::analysis::{
+    analyse, Analysed, Method, MethodAnswer, SlopeAnswer, SlopeOutcome, Target,
+};
 use thrustline_solver::slope::section::SlipShape;
 use thrustline_solver::slope::spencer::SpencerStatus;
 use thrustline_solver::slope::Sliced;
 
-use super::request::SpencerRequest;
+use super::methods::MethodName;
+use super::request::{NegativeEffectiveStressDto, SpencerRequest};
 use crate::error::ApiError;
+use crate::study::request::{StudyMethodDto, StudySurfaceDto};
 use crate::study::run::{Sampled, StudyStop, Tally};
 use crate::study::{Study, StudyAnswers};
 
+/// The method of slices a study's method names (`None`: Spencer's, the headline).
+fn method_of(method: StudyMethodDto) -> Option<MethodName> {
+    match method {
+        StudyMethodDto::Spencer => None,
+        StudyMethodDto::MorgensternPrice => Some(MethodName::MorgensternPrice),
+        StudyMethodDto::Bishop => Some(MethodName::Bishop),
+        StudyMethodDto::Janbu => Some(MethodName::Janbu),
+        StudyMethodDto::Ordinary => Some(MethodName::Ordinary),
+    }
+}
+
+/// A study's method other than Spencer's must be among `methods` (so that the deterministic
+/// answer has its F as well), and searched on the classic equations when samples search.
+fn check_methods(request: &SpencerRequest) -> Result<(), ApiError> {
+    let probabilistic = request.probabilistic.as_ref();
+    let searches = probabilistic.is_some_and(|p| p.surface == Some(StudySurfaceDto::Search));
+    let asked = [
+        (
+            "probabilistic.method",
+            probabilistic.and_then(|p| p.method),
+            searches,
+        ),
+        (
+            "sensitivity.method",
+            request.sensitivity.as_ref().and_then(|s| s.method),
+            request.search.is_some(),
+        ),
+    ];
+    for (field, method, searching) in asked {
+        let Some(name) = method.and_then(method_of) else {
+            continue;
+        };
+        if !request.methods.contains(&name) {
+            return Err(ApiError::invalid(
+                field,
+                "names a method that is not among methods: add it there, so that the \
+                 deterministic answer has its F too",
+            ));
+        }
+        if searching && request.negative_effective_stress != NegativeEffectiveStressDto::Keep {
+            return Err(ApiError::invalid(
+                field,
+                "searches each sample for the method's own circle on its classic equations: it \
+                 does not combine with negative_effective_stress other than keep",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The request's studies, checked against its `body` as sent (None without any).
 pub fn plan(request: &SpencerRequest, body: &Value) -> Result<Option<Study>, ApiError> {
+    check_methods(request)?;
     crate::study::plan::<SpencerRequest>(
         body,
         (request.probabilistic.as_ref(), request.sensitivity.as_ref()),
@@ -36,22 +91,32 @@ pub fn run(
     budget: &Budget,
     tally: &Tally,
 ) -> Result<StudyAnswers, (&'static str, StudyStop)> {
-    let fixed = study.probabilistic.as_ref().is_some_and(|p| p.fixed);
-    let sampled = match fixed {
-        true => with_fixed_surface(&study.base, answer),
-        false => study.base.clone(),
+    let sampled = match &study.probabilistic {
+        Some(p) if p.fixed => with_fixed_surface(&study.base, answer, p.method),
+        _ => study.base.clone(),
     };
     crate::study::run(study, &sampled, evaluate, budget, tally)
 }
 
-/// `base` with the deterministic answer's surface fixed: the circle or polyline answered, at
-/// its slice count, without a search or refinement.
-pub fn with_fixed_surface(base: &Value, answer: &SlopeAnswer) -> Value {
+/// `base` with the deterministic answer's surface fixed: the circle or polyline answered (for
+/// a study of another method, that method's own critical circle when the answer searched it),
+/// at its slice count, without a search or refinement.
+pub fn with_fixed_surface(base: &Value, answer: &SlopeAnswer, method: StudyMethodDto) -> Value {
     let mut fixed = base.clone();
     let Some(object) = fixed.as_object_mut() else {
         return fixed;
     };
-    let Analysed::Section(section_problem) = &answer.problem;
+    let own = method_of(method).and_then(|name| {
+        let method = Method::from(name);
+        answer
+            .critical
+            .iter()
+            .find(|(m, _)| *m == method)?
+            .1
+            .as_ref()
+    });
+    let problem = own.map_or(&answer.problem, |c| &c.problem);
+    let Analysed::Section(section_problem) = problem;
     if object.get("search").is_some_and(|s| !s.is_null()) {
         for key in ["search", "circle", "surface", "moment_centre"] {
             object.remove(key);
@@ -76,9 +141,10 @@ pub fn with_fixed_surface(base: &Value, answer: &SlopeAnswer) -> Value {
     fixed
 }
 
-/// One sample: `request` read, validated and analysed; its F when Spencer's equations (or the
-/// φ = 0 moment equation) answer it with the strengths settled.
-pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
+/// One sample: `request` read, validated and analysed; its F by `method` — Spencer's when his
+/// equations (or the φ = 0 moment equation) answer it with the strengths settled; another's on
+/// the surface given, or on its own critical circle when the sample searches.
+pub fn evaluate(request: Value, method: StudyMethodDto, budget: &Budget) -> Sampled {
     let typed: SpencerRequest = match serde_json::from_value(request) {
         Ok(typed) => typed,
         Err(e) => return Sampled::Refused(e.to_string()),
@@ -88,21 +154,49 @@ pub fn evaluate(request: Value, budget: &Budget) -> Sampled {
         Err(e) => return Sampled::Refused(e.to_string()),
     };
     plan.estimate_accuracy = false;
-    plan.methods.clear();
     plan.curves = false;
-    match analyse(&plan, budget) {
-        Ok(SlopeOutcome::Answered(answer)) => {
+    let other = method_of(method).map(Method::from);
+    let searches = !matches!(plan.target, Target::Surface(_));
+    plan.methods = other.into_iter().collect();
+    plan.per_method = other.is_some() && searches;
+    let answer = match analyse(&plan, budget) {
+        Ok(SlopeOutcome::Answered(answer)) => answer,
+        Ok(SlopeOutcome::Stopped { .. }) => return Sampled::Unsolved,
+        Err(e) => return Sampled::Refused(e.to_string()),
+    };
+    let f = match other {
+        None => {
             let s = &answer.solution;
             let answered = matches!(
                 s.status,
                 SpencerStatus::Converged | SpencerStatus::MomentOnly
             );
-            match s.factor_of_safety {
-                Some(f) if answered && s.strength.settled => Sampled::Solved(f),
-                _ => Sampled::Unsolved,
-            }
+            s.factor_of_safety
+                .filter(|_| answered && s.strength.settled)
         }
-        Ok(SlopeOutcome::Stopped { .. }) => Sampled::Unsolved,
-        Err(e) => Sampled::Refused(e.to_string()),
+        Some(m) if searches => answer
+            .critical
+            .iter()
+            .find(|(c, _)| *c == m)
+            .and_then(|(_, c)| c.as_ref().map(|c| c.factor_of_safety)),
+        Some(m) => answer
+            .methods
+            .as_ref()
+            .and_then(|found| answer_of(found, m))
+            .and_then(|a| a.factor.factor_of_safety),
+    };
+    f.map_or(Sampled::Unsolved, Sampled::Solved)
+}
+
+/// `method`'s answer among `found`.
+fn answer_of(
+    found: &thrustline_solver::slope::analysis::MethodFactors,
+    method: Method,
+) -> Option<&MethodAnswer> {
+    match method {
+        Method::MorgensternPrice => found.morgenstern_price.as_ref(),
+        Method::Bishop => found.bishop.as_ref(),
+        Method::Janbu => found.janbu.as_ref(),
+        Method::Ordinary => found.ordinary.as_ref(),
     }
 }

@@ -21,7 +21,7 @@ use crate::state::AppState;
 use crate::stop::Work;
 use crate::warning::{Warning, WarningCode};
 use plan::{ProbabilisticPlan, SensitivityPlan};
-use request::{ProbabilisticDto, SensitivityDto};
+use request::{ProbabilisticDto, SensitivityDto, StudyMethodDto};
 use response::{ProbabilisticOutDto, SensitivityOutDto};
 use run::{Sampled, StudyStop, Tally};
 
@@ -94,7 +94,8 @@ pub fn analyses(study: &Study) -> usize {
     samples + points
 }
 
-/// Runs the studies within `budget`, each sample analysed by `evaluate`; the probabilistic
+/// Runs the studies within `budget`, each sample analysed by `evaluate` (with the study's
+/// method); the probabilistic
 /// samples start from `sampled` (the base, its surface fixed where the plan says). A study that
 /// did not finish is the field that sets its work, and why.
 pub fn run<E>(
@@ -105,20 +106,32 @@ pub fn run<E>(
     tally: &Tally,
 ) -> Result<StudyAnswers, (&'static str, StudyStop)>
 where
-    E: Fn(Value, &Budget) -> Sampled + Sync,
+    E: Fn(Value, StudyMethodDto, &Budget) -> Sampled + Sync,
 {
     let progress = |_: usize, _: usize| tally.count();
     let probabilistic = match &study.probabilistic {
         Some(p) => Some(
-            run::probabilistic(p, sampled, &evaluate, budget, &progress)
-                .map_err(|stop| ("probabilistic.samples", stop))?,
+            run::probabilistic(
+                p,
+                sampled,
+                |v, b| evaluate(v, p.method, b),
+                budget,
+                &progress,
+            )
+            .map_err(|stop| ("probabilistic.samples", stop))?,
         ),
         None => None,
     };
     let sensitivity = match &study.sensitivity {
         Some(s) => Some(
-            run::sensitivity(s, &study.base, &evaluate, budget, &progress)
-                .map_err(|stop| ("sensitivity.variables", StudyStop::Stopped(stop)))?,
+            run::sensitivity(
+                s,
+                &study.base,
+                |v, b| evaluate(v, s.method, b),
+                budget,
+                &progress,
+            )
+            .map_err(|stop| ("sensitivity.variables", StudyStop::Stopped(stop)))?,
         ),
         None => None,
     };

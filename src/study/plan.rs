@@ -10,7 +10,8 @@ use thrustline_solver::study::{Distribution, Sampling, Variable};
 
 use super::paths::JsonPath;
 use super::request::{
-    DistributionDto, ProbabilisticDto, SamplingDto, SensitivityDto, StudySurfaceDto, VariableDto,
+    DistributionDto, ProbabilisticDto, SamplingDto, SensitivityDto, StudyMethodDto,
+    StudySurfaceDto, VariableDto,
 };
 use crate::error::ApiError;
 use crate::limits::{
@@ -45,6 +46,8 @@ pub struct ProbabilisticPlan {
     pub fixed: bool,
     /// Bars of the histogram.
     pub bins: usize,
+    /// The method whose F the samples answer.
+    pub method: StudyMethodDto,
 }
 
 /// A sensitivity study, resolved: each variable's path and values.
@@ -52,6 +55,8 @@ pub struct ProbabilisticPlan {
 pub struct SensitivityPlan {
     /// Per variable: where it is written, and its values.
     pub variables: Vec<(JsonPath, Vec<f64>)>,
+    /// The method whose F the points answer.
+    pub method: StudyMethodDto,
 }
 
 /// Reads `dto` against `request` (the route's request `R` as JSON).
@@ -112,6 +117,7 @@ pub fn probabilistic<R: DeserializeOwned>(
         seed: dto.seed.unwrap_or(0),
         fixed: dto.surface.unwrap_or(StudySurfaceDto::Fixed) == StudySurfaceDto::Fixed,
         bins,
+        method: dto.method.unwrap_or_default(),
     })
 }
 
@@ -152,7 +158,10 @@ pub fn sensitivity<R: DeserializeOwned>(
         let values = (0..n).map(|j| evenly(from, to, j, n)).collect();
         variables.push((path, values));
     }
-    Ok(SensitivityPlan { variables })
+    Ok(SensitivityPlan {
+        variables,
+        method: dto.method.unwrap_or_default(),
+    })
 }
 
 /// The j-th of n values from `from` to `to`, to 12 significant digits (0.3 + 0.1 is 0.4 here,

@@ -40,6 +40,28 @@ pub struct ProbabilisticDto {
     #[serde(default)]
     #[schema(examples(20))]
     pub histogram_bins: Option<usize>,
+    /// Slopes: the method whose F each sample answers (it must be among `methods`); with
+    /// `surface: search`, each sample searches that method's own critical circle. Defaults to
+    /// `spencer`. Arches: leave it out.
+    #[serde(default)]
+    pub method: Option<StudyMethodDto>,
+}
+
+/// The method whose F a slope study's samples answer.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum StudyMethodDto {
+    /// Spencer's (the headline).
+    #[default]
+    Spencer,
+    /// Morgenstern–Price.
+    MorgensternPrice,
+    /// Bishop's simplified.
+    Bishop,
+    /// Janbu's simplified.
+    Janbu,
+    /// The ordinary method.
+    Ordinary,
 }
 
 /// How a probabilistic study draws its samples.
@@ -120,6 +142,10 @@ pub struct CorrelationDto {
 pub struct SensitivityDto {
     /// The variables, 1 to 20.
     pub variables: Vec<SensitivityVariableDto>,
+    /// Slopes: the method whose F each point answers, as `probabilistic.method`. Defaults to
+    /// `spencer`.
+    #[serde(default)]
+    pub method: Option<StudyMethodDto>,
 }
 
 /// One variable of a sensitivity study.

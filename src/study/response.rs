@@ -3,7 +3,7 @@
 use serde::Serialize;
 use utoipa::ToSchema;
 
-use super::request::{SamplingDto, StudySurfaceDto};
+use super::request::{SamplingDto, StudyMethodDto, StudySurfaceDto};
 
 /// What a probabilistic study found. Failure is an answer below 1 (F for slopes, λ for
 /// arches); samples without an answer are counted apart, neither safe nor failed.
@@ -17,6 +17,9 @@ pub struct ProbabilisticOutDto {
     pub seed: u64,
     /// The surface each sample was analysed on (arches: `fixed`).
     pub surface: StudySurfaceDto,
+    /// The method whose F the samples answered, when not Spencer's (`method`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<StudyMethodDto>,
     /// The share of answered samples below 1; null when none was answered.
     pub probability_of_failure: Option<f64>,
     /// Its standard error √(p(1 − p)/n) as Monte Carlo sampling gives it (Latin hypercube
@@ -57,6 +60,9 @@ pub struct BinDto {
 /// What a sensitivity study found.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct SensitivityOutDto {
+    /// The method whose F the points answered, when not Spencer's (`method`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<StudyMethodDto>,
     /// Per variable, its values and the answers there.
     pub variables: Vec<SensitivityCurveDto>,
     /// Wall time of the study in milliseconds.

@@ -10,7 +10,7 @@ use thrustline_solver::budget::{Budget, Stop};
 use thrustline_solver::study::{self, summarise, Progress, StudyError};
 
 use super::plan::{ProbabilisticPlan, SensitivityPlan};
-use super::request::{SamplingDto, StudySurfaceDto};
+use super::request::{SamplingDto, StudyMethodDto, StudySurfaceDto};
 use super::response::{
     BinDto, ProbabilisticOutDto, SensitivityCurveDto, SensitivityOutDto, SensitivityPointDto,
 };
@@ -133,6 +133,7 @@ fn probabilistic_out(
             true => StudySurfaceDto::Fixed,
             false => StudySurfaceDto::Search,
         },
+        method: (plan.method != StudyMethodDto::Spencer).then_some(plan.method),
         probability_of_failure: s.probability_of_failure,
         probability_of_failure_standard_error: s
             .probability_of_failure
@@ -211,6 +212,7 @@ where
         })
         .collect();
     Ok(SensitivityOutDto {
+        method: (plan.method != StudyMethodDto::Spencer).then_some(plan.method),
         variables,
         time_ms: start.elapsed().as_secs_f64() * 1e3,
     })
