@@ -91,6 +91,7 @@ pub fn slope_field(parameter: SlopeParameter) -> String {
         SlopeParameter::TensionCrackDepth => "section.tension_crack.depth".to_owned(),
         SlopeParameter::TensionCrackWater => "section.tension_crack.water_depth".to_owned(),
         SlopeParameter::CircleCentre => "circle.centre".to_owned(),
+        SlopeParameter::CircleMass => "circle.mass".to_owned(),
         SlopeParameter::CircleRadius => "circle.radius".to_owned(),
         SlopeParameter::Surface => "surface".to_owned(),
         SlopeParameter::SurfaceVertex { index } => format!("surface[{index}]"),

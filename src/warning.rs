@@ -59,6 +59,8 @@ pub enum WarningCode {
     BeyondGround,
     /// The searched surface reaches the end of the section as stated.
     MinimumAtSectionEnd,
+    /// The circle cuts the ground into several masses: one is analysed.
+    SeveralMasses,
     /// The non-associative friction iteration did not settle.
     NotSettled,
     /// Nonlinear strength envelopes did not reach a consistent state.

@@ -235,3 +235,30 @@ async fn a_study_method_must_be_among_the_methods() {
     assert_eq!(status, 422, "{problem}");
     assert_eq!(problem["field"], "sensitivity.method", "{problem}");
 }
+
+/// Li & Lumb (1987), Slide2's problem 36: a 1:1 face, c′ 18, φ′ 30°, r_u 0.2; published Bishop
+/// 1.334 (Hassan & Wolff) and 1.340 (Slide2). And Baker (2001), problem 43, with the dry crack
+/// of the Rankine depth that its steep cohesive face has: both methods solve (docs/slopes.md).
+#[tokio::test]
+async fn steep_faces_give_the_published_bishop_minimum_and_solve_with_their_crack() {
+    let server = Server::start().await;
+    let li_lumb = json!({"section": {"ground": [[0, 5], [5, 5], [15, 15], [20, 15]],
+        "layers": [{"top": null, "soil": {"unit_weight": 18, "cohesion": 18,
+            "friction_angle_deg": 30, "pore_pressure_ratio": 0.2}}]},
+        "search": {"per_method": true}, "slices": 50, "methods": ["bishop"], "include": []});
+    let answer = assert_own_minima(&server, &li_lumb).await;
+    let bishop = number(&answer["methods"]["bishop"]["critical"]["factor_of_safety"]);
+    assert!((1.334 * 0.995..=1.340).contains(&bishop), "Bishop {bishop}");
+    let cracked = json!({"section": {"ground": [[-10, 0], [0, 0], [3, 10], [20, 10]],
+        "layers": [{"top": null, "soil": {"unit_weight": 20, "cohesion": 30, "friction_angle_deg": 30}}],
+        "tension_crack": {"depth": 5.2, "water_depth": 0}},
+        "search": {"per_method": true}, "slices": 50, "methods": ["bishop"], "include": []});
+    let answer = spencer(&server, &cracked).await;
+    assert!(
+        (number(&answer["factor_of_safety"]) - 1.1661).abs() < 5e-5,
+        "{answer}"
+    );
+    let bishop = number(&answer["methods"]["bishop"]["critical"]["factor_of_safety"]);
+    assert!((bishop - 1.1752).abs() < 5e-5, "{bishop}");
+    assert_eq!(answer["search"]["unsolved"], 0, "{}", answer["search"]);
+}

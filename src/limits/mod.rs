@@ -214,6 +214,9 @@ pub const HEAD_FACTOR: Range = Range::closed(0.0, 1.0);
 
 /// Slices of a slip surface.
 pub const SLICES: Count = Count::new(1, MAX_SLICES);
+
+/// `circle.mass` as an index: the k-th mass from the left a circle cuts out of the ground.
+pub const CIRCLE_MASS: Count = Count::new(1, 1000);
 /// Voussoirs of a circular arch, blocks of a chain or an assembly.
 pub const BLOCKS: Count = Count::new(1, MAX_VOUSSOIRS);
 /// Rings of a circular arch.

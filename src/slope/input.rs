@@ -7,20 +7,19 @@ use std::num::NonZeroUsize;
 
 use thrustline_solver::slope::section::{Section, SectionProblem, SlipShape};
 use thrustline_solver::slope::{
-    Embankment, ExternalLoad, SearchGrid, SearchProblem, Seismic, SlipCircle, SlopeError,
-    SlopeParameter, Soil,
+    Embankment, ExternalLoad, Seismic, SlipCircle, SlopeError, SlopeParameter, Soil,
 };
 
 use super::lines::polyline;
 use super::methods::{interslice_function, methods_plan, MethodsAsked};
-use super::request::{CircleDto, CompositeDto, SearchDto, SpencerRequest};
-use super::section::{refuse_section_only, search_region, section_from};
+use super::request::{CircleDto, CompositeDto, MassDto, SearchDto, SpencerRequest};
+use super::section::{search_region, section_from};
+use super::simple_search::simple_search;
 use super::strength::soil as soil_from;
 use crate::error::ApiError;
 use crate::limits::{
-    CENTRE_HEIGHT, FORCE, GRID_POINTS, LENGTH, LOADS, LOWER_END_FACTOR, LOWER_END_FACTOR_MAX,
-    MAX_GRID_SLICES, MAX_SLICES, MIN_DEPTH, RADIUS, SEARCH_LOWER_END_FACTOR, SEISMIC_KH,
-    SEISMIC_KV, SLICES,
+    CENTRE_HEIGHT, CIRCLE_MASS, FORCE, LENGTH, LOADS, LOWER_END_FACTOR, MAX_SLICES, MIN_DEPTH,
+    RADIUS, SEISMIC_KH, SEISMIC_KV, SLICES,
 };
 use crate::validation::{count, count_within, finite, within};
 use thrustline_solver::slope::analysis::{Analysed, Candidates, SectionSearch, SlopePlan, Target};
@@ -62,7 +61,7 @@ impl SpencerRequest {
                     finite("moment_centre", c[1]).map(|_| (c[0], c[1]))
                 })
                 .transpose()?;
-            section_target(parts, SlipShape::Polyline(line), centre, false)?
+            section_target(parts, SlipShape::Polyline(line), centre, (None, false))?
         } else if let Some(search) = &self.search {
             let (target, found) = search_target(search, parts)?;
             candidates = found;
@@ -272,7 +271,11 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
                 centre: (centre[0], centre[1]),
                 radius,
             };
-            section_target(parts, shape, None, circle.beyond_ground)
+            let mass = match circle.mass {
+                Some(MassDto::Index(k)) => Some(count_within("circle.mass", k, CIRCLE_MASS)? - 1),
+                _ => None,
+            };
+            section_target(parts, shape, None, (mass, circle.beyond_ground))
         }
         (None, None, None, None) => Err(ApiError::invalid(
             "circle",
@@ -297,13 +300,14 @@ fn circle_target(circle: &CircleDto, parts: Parts) -> Result<Target, ApiError> {
 
 /// An absolute circle or a polyline on a section (the simple slope becomes the section
 /// [(0, 0), (L, H)], continued level both ways, with its soil).
-/// A surface that leaves the section's x-range is refused naming `circle` or `surface`, unless
-/// `beyond_ground` allows it (a circle's `beyond_ground`; a polyline's points are the user's own).
+/// A circle's `mass` (from the left, from 0; `None`: the largest) is analysed. A surface that
+/// leaves the section's x-range is refused naming `circle` or `surface`, unless `beyond_ground`
+/// allows it (a circle's `beyond_ground`; a polyline's points are the user's own).
 fn section_target(
     parts: Parts,
     shape: SlipShape,
     moment_centre: Option<(f64, f64)>,
-    beyond_ground: bool,
+    (mass, beyond_ground): (Option<usize>, bool),
 ) -> Result<Target, ApiError> {
     let field = match shape {
         SlipShape::Circle { .. } => "circle",
@@ -314,6 +318,10 @@ fn section_target(
         Ground::Simple(embankment, soil) => Section::simple(&embankment, soil)?,
     };
     let problem = SectionProblem::new(section, shape, parts.slices, parts.seismic, moment_centre)?;
+    let problem = match mass {
+        Some(index) => problem.with_mass(index)?,
+        None => problem,
+    };
     if let (false, Some(((low, high), (first, last)))) = (beyond_ground, problem.beyond_ground()) {
         let circle = " (or circle.beyond_ground: true to take it as level there)";
         let allow = if field == "circle" { circle } else { "" };
@@ -329,83 +337,6 @@ fn section_target(
     Ok(Target::Surface(Analysed::Section(Box::new(problem))))
 }
 
-fn search_from(
-    search: &SearchDto,
-    embankment: Embankment,
-    soil: Soil,
-    slices: NonZeroUsize,
-    seismic: Seismic,
-) -> Result<Target, ApiError> {
-    refuse_section_only(search)?;
-    let lower_end_factor = within(
-        "search.lower_end_factor",
-        search.lower_end_factor,
-        SEARCH_LOWER_END_FACTOR,
-    )?;
-    let lower_end_factor_max = search
-        .lower_end_factor_max
-        .map(|m| within("search.lower_end_factor_max", m, LOWER_END_FACTOR_MAX))
-        .transpose()?;
-    let automatic = SearchGrid::automatic(&embankment, lower_end_factor);
-    let nx = count_within("search.nx", search.nx, GRID_POINTS)?;
-    let ny = count_within("search.ny", search.ny, GRID_POINTS)?;
-    let cost = nx * ny * slices.get();
-    if cost > MAX_GRID_SLICES {
-        return Err(ApiError::invalid(
-            "search",
-            format!(
-                "nx·ny·slices = {cost} is out of range: allowed is at most {MAX_GRID_SLICES} \
-                 (fewer grid points or slices)"
-            ),
-        ));
-    }
-    let bound = |field: &str, value: Option<f64>, default: f64| {
-        value.map_or(Ok(default), |v| finite(field, v))
-    };
-    let grid = SearchGrid {
-        x_min: bound("search.x_min", search.x_min, automatic.x_min)?,
-        x_max: bound("search.x_max", search.x_max, automatic.x_max)?,
-        y_min: bound("search.y_min", search.y_min, automatic.y_min)?,
-        y_max: bound("search.y_max", search.y_max, automatic.y_max)?,
-        nx,
-        ny,
-    };
-    if grid.x_max <= grid.x_min {
-        return Err(ApiError::invalid(
-            "search.x_max",
-            "must be greater than search.x_min",
-        ));
-    }
-    if grid.y_max <= grid.y_min {
-        return Err(ApiError::invalid(
-            "search.y_max",
-            "must be greater than search.y_min",
-        ));
-    }
-    if grid.y_max <= 0.0 {
-        return Err(ApiError::invalid(
-            "search.y_max",
-            "must be > 0: centres lie above the lower end",
-        ));
-    }
-    let problem = SearchProblem {
-        embankment,
-        slices,
-        soil,
-        seismic,
-        lower_end_factor,
-        lower_end_factor_max,
-    };
-    let hard = [search.x_min, search.x_max, search.y_min, search.y_max]
-        .iter()
-        .any(Option::is_some);
-    Ok(Target::SimpleSearch {
-        problem,
-        grid,
-        hard_bounds: hard,
-    })
-}
-
 /// A search on the simple slope or a section, and what it may answer.
 fn search_target(search: &SearchDto, parts: Parts) -> Result<(Target, Candidates), ApiError> {
     match parts.ground {
@@ -417,7 +348,7 @@ fn search_target(search: &SearchDto, parts: Parts) -> Result<(Target, Candidates
                      change from circle to circle",
                 ));
             }
-            let target = search_from(search, embankment, soil, parts.slices, parts.seismic)?;
+            let target = simple_search(search, embankment, soil, parts.slices, parts.seismic)?;
             // The simple slope's ground runs on level both ways by definition.
             let candidates = Candidates {
                 beyond_ground: true,

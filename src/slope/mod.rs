@@ -23,6 +23,7 @@ pub mod request;
 pub mod response;
 pub mod routes;
 pub mod section;
+pub mod simple_search;
 pub mod slices;
 pub mod solve;
 pub mod solved;

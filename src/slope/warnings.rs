@@ -30,6 +30,7 @@ pub fn warnings(solved: &SolvedSlope) -> Vec<Warning> {
         warnings.push(beyond);
     }
     warnings.extend(at_the_section_end(solved));
+    warnings.extend(several_masses(solved));
     if !solution.strength.settled {
         warnings.push(Warning::new(
             Code::StrengthNotConsistent,
@@ -229,6 +230,44 @@ fn beyond_the_ground(solved: &SolvedSlope) -> Option<Warning> {
             "the slip surface runs from x = {low:.4} to {high:.4}, beyond the ground as stated \
              (x = {first} … {last}): the ground is taken as level beyond its ends, as asked \
              (beyond_ground)"
+        ),
+    ))
+}
+
+/// A circle that cuts the ground into several masses that could slide: which one is analysed,
+/// and the others (a lens that nothing drives is not named).
+fn several_masses(solved: &SolvedSlope) -> Option<Warning> {
+    let Analysed::Section(problem) = &solved.problem;
+    let masses = problem.masses();
+    if masses.len() < 2 {
+        return None;
+    }
+    let ((a, _), (b, _)) = problem.ends();
+    let entry = a.min(b);
+    let analysed = masses
+        .iter()
+        .enumerate()
+        .min_by(|x, y| (x.1 .0 - entry).abs().total_cmp(&(y.1 .0 - entry).abs()))
+        .map_or(0, |(i, _)| i);
+    let listed: Vec<String> = masses
+        .iter()
+        .enumerate()
+        .filter(|(i, m)| *i != analysed && m.2)
+        .map(|(i, m)| format!("{} (x = {:.4} … {:.4})", i + 1, m.0, m.1))
+        .collect();
+    if listed.is_empty() {
+        return None;
+    }
+    let (x0, x1, _) = masses[analysed];
+    Some(Warning::new(
+        Code::SeveralMasses,
+        format!(
+            "the circle cuts {} masses out of the ground: mass {} (x = {x0:.4} … {x1:.4}) is \
+             analysed, the largest within the section that something drives; the others that \
+             could slide are {} — circle.mass: k (from the left) analyses another",
+            masses.len(),
+            analysed + 1,
+            listed.join(", ")
         ),
     ))
 }

@@ -54,6 +54,11 @@ pub struct CircleDto {
     #[serde(default)]
     #[schema(examples(80.0))]
     pub radius: Option<f64>,
+    /// On a section, a circle that cuts the ground more than twice: which mass is analysed —
+    /// `"largest"` (the largest within the section that something drives; the default) or k,
+    /// the k-th mass from the left (from 1).
+    #[serde(default)]
+    pub mass: Option<MassDto>,
     /// On a section: whether the circle may enter or leave the ground beyond the section's
     /// x-range, the ground taken as level there (answered with the `beyond_ground` warning).
     /// Defaults to false: such a circle is refused (422), extend `section.ground` instead.
@@ -350,4 +355,22 @@ impl From<NegativeEffectiveStressDto>
             NegativeEffectiveStressDto::DropStrength => Self::DropStrength,
         }
     }
+}
+
+/// Which of the masses a circle cuts out of the ground is analysed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(untagged)]
+pub enum MassDto {
+    /// `"largest"`: the largest within the section that something drives.
+    Largest(LargestDto),
+    /// The k-th mass from the left, from 1.
+    Index(usize),
+}
+
+/// The largest mass.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum LargestDto {
+    /// The largest within the section that something drives.
+    Largest,
 }

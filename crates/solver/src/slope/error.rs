@@ -79,6 +79,8 @@ pub enum SlopeParameter {
     TensionCrackWater,
     /// The centre of an absolute circle.
     CircleCentre,
+    /// Which of the masses a circle cuts is analysed.
+    CircleMass,
     /// The radius of an absolute circle.
     CircleRadius,
     /// A polyline slip surface.
@@ -176,6 +178,7 @@ impl std::fmt::Display for SlopeParameter {
             Self::TensionCrackDepth => write!(f, "tension crack depth"),
             Self::TensionCrackWater => write!(f, "tension crack water depth"),
             Self::CircleCentre => write!(f, "circle centre"),
+            Self::CircleMass => write!(f, "circle mass"),
             Self::CircleRadius => write!(f, "circle radius"),
             Self::Surface => write!(f, "slip surface"),
             Self::SurfaceVertex { index } => write!(f, "slip surface vertex {index}"),

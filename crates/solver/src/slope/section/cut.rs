@@ -17,7 +17,7 @@ use super::slicing::{slice_all, still_water_level, Slicing};
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::slices::{BaseSlice, SliceModel};
 use crate::slope::spare;
-use crate::slope::spencer::{drives_towards_toe, ExternalLoad, Seismic};
+use crate::slope::spencer::{ExternalLoad, Seismic};
 
 /// Relative distance below which two cuts are one.
 const SAME_CUT: f64 = 1e-9;
@@ -84,121 +84,6 @@ fn add_shape_crossings(
                 .map(|c| c.0),
         ),
         SlipShape::Polyline(surface) => xs.extend(surface.crossings(line, a, b)),
-    }
-}
-
-/// Places `shape` on `section` and cuts it, in the solver's frame: mirrored (with `mirror`, the
-/// section seen from behind, when the caller has it) when the crest lies to the left.
-pub(super) fn place(
-    section: &Section,
-    mirror: Option<&Section>,
-    shape: &SlipShape,
-    slices: NonZeroUsize,
-    seismic: Seismic,
-    moment_centre: Option<(f64, f64)>,
-) -> Result<Cut, SlopeError> {
-    place_checked(section, mirror, shape, slices, seismic, moment_centre, true)
-}
-
-/// [`place`] for a search, which solves the cut at once and counts a mass that nothing drives
-/// as no candidate either way (Spencer's method checks what drives a circle's mass): a surface
-/// of one piece is not checked twice.
-pub(super) fn place_for_search(
-    section: &Section,
-    mirror: &Section,
-    shape: &SlipShape,
-    slices: NonZeroUsize,
-    seismic: Seismic,
-) -> Result<Cut, SlopeError> {
-    place_checked(section, Some(mirror), shape, slices, seismic, None, false)
-}
-
-/// [`place`]; `check_single`: whether a surface of one piece is checked for what drives it.
-fn place_checked(
-    section: &Section,
-    mirror: Option<&Section>,
-    shape: &SlipShape,
-    slices: NonZeroUsize,
-    seismic: Seismic,
-    moment_centre: Option<(f64, f64)>,
-    check_single: bool,
-) -> Result<Cut, SlopeError> {
-    // The deepest mass that something drives towards the toe: a lens under level ground
-    // beside a shallow slide on the face does not slide, the slide does.
-    let pieces = super::ends::ends(&section.ground, shape)?;
-    if let (false, [ends]) = (check_single, pieces.as_slice()) {
-        return place_between(
-            section,
-            mirror,
-            shape,
-            *ends,
-            slices,
-            seismic,
-            moment_centre,
-        );
-    }
-    let mut first_error = None;
-    for (i, &ends) in pieces.iter().enumerate() {
-        match place_between(section, mirror, shape, ends, slices, seismic, moment_centre) {
-            Ok(cut) if drives_towards_toe(&cut.model) => return Ok(cut),
-            Ok(_) => {}
-            Err(e) if i == 0 => first_error = Some(e),
-            Err(_) => {}
-        }
-    }
-    Err(first_error.unwrap_or_else(|| SlopeError::NoSlipMass {
-        parameter: SlopeParameter::CircleCentre,
-        reason: "nothing drives the circle's mass towards the toe: it lies under level ground, \
-                 symmetric about the centre's vertical — move the centre towards the slope"
-            .to_owned(),
-    }))
-}
-
-/// The mass between `entry` and `exit`, cut in the frame where the crest lies to the right.
-fn place_between(
-    section: &Section,
-    mirror: Option<&Section>,
-    shape: &SlipShape,
-    (entry, exit): (f64, f64),
-    slices: NonZeroUsize,
-    seismic: Seismic,
-    moment_centre: Option<(f64, f64)>,
-) -> Result<Cut, SlopeError> {
-    let ground = &section.ground;
-    let rises_left = ground.y_at(entry) > ground.y_at(exit)
-        || (ground.y_at(entry) == ground.y_at(exit) && {
-            let p = ground.points();
-            p[0].1 > p[p.len() - 1].1
-        });
-    if rises_left {
-        let owned;
-        let mirrored = match mirror {
-            Some(m) => m,
-            None => {
-                owned = section.mirrored();
-                &owned
-            }
-        };
-        let centre = moment_centre.map(|c| (-c.0, c.1));
-        Cut::new(
-            mirrored,
-            &shape.mirrored(),
-            (-exit, -entry),
-            slices,
-            seismic,
-            centre,
-            true,
-        )
-    } else {
-        Cut::new(
-            section,
-            shape,
-            (entry, exit),
-            slices,
-            seismic,
-            moment_centre,
-            false,
-        )
     }
 }
 

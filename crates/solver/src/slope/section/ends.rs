@@ -2,6 +2,7 @@
 
 use smallvec::{smallvec, SmallVec};
 
+use super::model::Section;
 use super::polyline::Polyline;
 use super::shape::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
@@ -17,59 +18,62 @@ const VERTEX_ROUNDING: f64 = 1e-12;
 pub(super) type Pieces = SmallVec<[(f64, f64); 4]>;
 
 /// The x of entry and exit (entry < exit) of the masses `shape` may cut out of `ground`, the
-/// deepest first (a polyline cuts one).
-pub(super) fn ends(ground: &Polyline, shape: &SlipShape) -> Result<Pieces, SlopeError> {
+/// largest within the stated ground first (a polyline cuts one).
+pub(super) fn ends(section: &Section, shape: &SlipShape) -> Result<Pieces, SlopeError> {
+    let ground = &section.ground;
+    // The masses are sized within the stated ground, unless it runs on level by definition.
+    let p = ground.points();
+    let span = (!section.is_level_beyond_ends()).then(|| (p[0].0, p[p.len() - 1].0));
     match shape {
-        SlipShape::Circle { centre, radius } => circle_ends(ground, *centre, *radius),
+        SlipShape::Circle { centre, radius } => circle_ends(ground, span, *centre, *radius),
         SlipShape::Polyline(line) => polyline_ends(ground, line).map(|e| smallvec![e]),
     }
 }
 
 /// The pairs of the arc's crossings of the ground that bound a part of it below the ground, the
-/// deepest part first (the deepest two reaching equally deep is ambiguous: an error).
-fn circle_ends(ground: &Polyline, centre: (f64, f64), radius: f64) -> Result<Pieces, SlopeError> {
+/// largest mass within the section's x-range first (the area between the ground and the arc
+/// over the stated ground; two reaching equally large is ambiguous: an error).
+fn circle_ends(
+    ground: &Polyline,
+    span: Option<(f64, f64)>,
+    centre: (f64, f64),
+    radius: f64,
+) -> Result<Pieces, SlopeError> {
     let (xc, yc) = centre;
     let (left, right) = (xc - radius, xc + radius);
     let arc = |x: f64| yc - (radius * radius - (x - xc).powi(2)).max(0.0).sqrt();
     let cuts = arc_cuts(ground, centre, radius);
-    // Of the pieces of the lower half that lie below the ground, the one where the arc lies
-    // deepest below the ground (a sliver where the arc grazes the ground is not it). Ground
-    // minus arc is concave on each straight stretch of the ground (slope m), largest where the
-    // arc has the ground's slope, x − x_c = m·R/√(1 + m²), or at the stretch's nearer end.
     let depth = |x: f64| ground.y_at(x) - arc(x);
-    let deepest = cuts
+    let masses = cuts
         .windows(2)
         .filter(|w| {
             let m = 0.5 * (w[0] + w[1]);
             w[1] > w[0] && depth(m) > 0.0
         })
         .map(|w| {
-            let (a, b) = (w[0], w[1]);
-            let deepest = ground
-                .pieces(a, b)
-                .map(|(x0, x1, m, _)| depth((xc + m * radius / (m * m + 1.0).sqrt()).clamp(x0, x1)))
-                .fold(f64::NEG_INFINITY, f64::max);
-            (a, b, deepest)
+            (
+                w[0],
+                w[1],
+                mass_area(ground, span, centre, radius, (w[0], w[1])),
+            )
         })
         .collect::<SmallVec<[_; 4]>>();
-    let deepest_depth = deepest
+    let largest = masses.iter().map(|p| p.2).fold(f64::NEG_INFINITY, f64::max);
+    let ties = masses
         .iter()
-        .map(|p| p.2)
-        .fold(f64::NEG_INFINITY, f64::max);
-    let ties = deepest
-        .iter()
-        .filter(|p| p.2 >= deepest_depth - 1e-9 * deepest_depth.abs().max(radius))
+        .filter(|p| p.2 >= largest - 1e-9 * largest.abs().max(radius * radius))
         .count();
     if ties > 1 {
         return Err(SlopeError::NoSlipMass {
             parameter: SlopeParameter::CircleCentre,
             reason: format!(
-                "the circle cuts the ground into {ties} pieces that reach equally deep below it: \
-                 which one slides is ambiguous — move the centre or change the radius"
+                "the circle cuts the ground into {ties} masses of the same size: which one \
+                 slides is ambiguous — move the centre, change the radius or choose one \
+                 (circle.mass)"
             ),
         });
     }
-    let mut pieces = deepest;
+    let mut pieces = masses;
     pieces.sort_by(|a, b| b.2.total_cmp(&a.2));
     let Some(&(entry, exit, _)) = pieces.first() else {
         return Err(SlopeError::NoSlipMass {
@@ -96,6 +100,32 @@ fn circle_ends(ground: &Polyline, centre: (f64, f64), radius: f64) -> Result<Pie
         .filter(|p| p.0 != left && p.1 != right)
         .map(|(a, b, _)| (snap(a), snap(b)))
         .collect())
+}
+
+/// The area between the ground and the arc over [a, b], clipped to `span` when given (the
+/// ground straight on each piece, the arc integrated in closed form).
+fn mass_area(
+    ground: &Polyline,
+    span: Option<(f64, f64)>,
+    (xc, yc): (f64, f64),
+    radius: f64,
+    (a, b): (f64, f64),
+) -> f64 {
+    let (a, b) = span.map_or((a, b), |(first, last)| (a.max(first), b.min(last)));
+    if b <= a {
+        return 0.0;
+    }
+    // ∫ √(R² − u²) du.
+    let root = |x: f64| {
+        let u = (x - xc).clamp(-radius, radius);
+        0.5 * (u * (radius * radius - u * u).max(0.0).sqrt()
+            + radius * radius * (u / radius).asin())
+    };
+    let under_ground: f64 = ground
+        .pieces(a, b)
+        .map(|(x0, x1, m, c)| 0.5 * m * (x1 * x1 - x0 * x0) + c * (x1 - x0))
+        .sum();
+    under_ground - (yc * (b - a) - (root(b) - root(a)))
 }
 
 /// The ends of the circle's lower half and its crossings of the ground between them, sorted,

@@ -20,6 +20,7 @@ mod level_tests;
 mod method_tests;
 mod model;
 pub mod noncircular;
+mod place;
 mod plain;
 pub mod polyline;
 pub mod search;
@@ -111,6 +112,8 @@ pub struct SectionProblem {
     cut: cut::Cut,
     /// Known forces given per slice (the thesis' F_x, F_y, M1), already in `cut.model.loads`.
     slice_loads: Vec<ExternalLoad>,
+    /// Which mass of a circle is analysed, from the left from 0 (`None`: the largest driven).
+    mass: Option<usize>,
 }
 
 /// A circle a section takes: finite coordinates, |x|, |y| ≤ 1e9, and 0 < R ≤ 1e9.
@@ -181,7 +184,7 @@ impl SectionProblem {
                 });
             }
         }
-        let cut = cut::place(&section, None, &shape, slices, seismic, moment_centre)?;
+        let cut = place::place(&section, None, &shape, slices, seismic, moment_centre)?;
         Ok(Self {
             section,
             shape,
@@ -190,7 +193,50 @@ impl SectionProblem {
             moment_centre,
             cut,
             slice_loads: Vec::new(),
+            mass: None,
         })
+    }
+
+    /// The same circle with its `index`-th mass analysed (from the left, from 0) instead of the
+    /// largest.
+    pub fn with_mass(mut self, index: usize) -> Result<Self, SlopeError> {
+        self.cut = place::place_mass(
+            &self.section,
+            &self.shape,
+            self.slices,
+            self.seismic,
+            Some(index),
+        )?;
+        self.mass = Some(index);
+        Ok(self)
+    }
+
+    /// Every mass the surface cuts out of the ground, left to right, in section coordinates:
+    /// entry and exit x, and whether something drives it towards its toe (a lens under level
+    /// ground, symmetric about the centre's vertical, cannot slide). One for a polyline.
+    pub fn masses(&self) -> Vec<(f64, f64, bool)> {
+        let mut out: Vec<(f64, f64)> = ends::ends(&self.section, &self.shape)
+            .map(|p| p.into_iter().collect())
+            .unwrap_or_default();
+        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let driven = |i: usize| {
+            let cut = place::place_mass(
+                &self.section,
+                &self.shape,
+                self.slices,
+                self.seismic,
+                Some(i),
+            );
+            cut.is_ok()
+        };
+        match out.len() {
+            0 | 1 => out.into_iter().map(|(a, b)| (a, b, true)).collect(),
+            _ => out
+                .into_iter()
+                .enumerate()
+                .map(|(i, (a, b))| (a, b, driven(i)))
+                .collect(),
+        }
     }
 
     /// The same surface with known forces on given slices (the thesis' F_x, F_y and M1 at the
@@ -309,12 +355,16 @@ impl Sliced for SectionProblem {
                 reason: "loads are given per slice: the slices cannot change".to_owned(),
             });
         }
-        Self::new(
+        let problem = Self::new(
             self.section.clone(),
             self.shape.clone(),
             slices,
             self.seismic,
             self.moment_centre,
-        )
+        )?;
+        match self.mass {
+            Some(index) => problem.with_mass(index),
+            None => Ok(problem),
+        }
     }
 }

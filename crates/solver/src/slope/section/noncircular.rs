@@ -13,8 +13,8 @@ use std::num::NonZeroUsize;
 use std::time::Instant;
 
 use super::blocks;
-use super::cut::place;
 use super::model::Section;
+use super::place::place;
 use super::polyline::Polyline;
 use super::shape::SlipShape;
 use crate::budget::{Budget, Stop};

@@ -2,8 +2,9 @@
 
 use std::num::NonZeroUsize;
 
-use super::cut::{place_for_search, Cut};
+use super::cut::Cut;
 use super::model::Section;
+use super::place::place_for_search;
 use super::shape::SlipShape;
 use crate::slope::error::{SlopeError, SlopeParameter};
 use crate::slope::spencer::methods::{method_factor, InterSliceFunction, Method};
