@@ -59,7 +59,8 @@ expect "morgenstern_price: "
 expect "solver: solved, assembly, 37 stops"
 # Milankovitch's minimum D/R = 0.1075 (N = 200 voussoirs) and the critical circle of docs/slopes.md.
 expect "thickness_to_radius: 0.1074"
-expect "search: 795 circles, 0 unsolved"
+# One grid circle of the 795 has no admissible root (a base below its envelope's apex, model §2.2).
+expect "search: 795 circles, 1 unsolved"
 expect "factor_of_safety: 1.01457"
 # The study panel (issue 43). It streams its progress (/slope/spencer/stream) when solved again
 # after the page has loaded; headless Chromium's virtual time does not wait for a stream's lines
