@@ -31,8 +31,18 @@ impl Server {
         }
     }
 
-    /// POSTs `body` to `path`; returns the status, the content type and the JSON body.
+    /// POSTs `body` to `path`; returns the status, the content type and the JSON body. Every
+    /// searched Spencer answer of the suite is checked on the way (SPEC §14): its surface,
+    /// stated as a fixed surface, gives the same status and F.
     pub async fn post(&self, path: &str, body: &Value) -> (u16, String, Value) {
+        let answer = self.post_once(path, body).await;
+        if path == "/slope/spencer" && answer.0 == 200 {
+            self.assert_fixed_resolve(body, &answer.2).await;
+        }
+        answer
+    }
+
+    async fn post_once(&self, path: &str, body: &Value) -> (u16, String, Value) {
         let response = self
             .client
             .post(format!("{}{path}", self.base))
@@ -41,6 +51,41 @@ impl Server {
             .await
             .unwrap();
         Self::parts(response).await
+    }
+
+    /// A searched answer's critical circle re-solved as a fixed circle, at the request's
+    /// slices, without the studies: the same status and F (1e-9 relative).
+    async fn assert_fixed_resolve(&self, body: &Value, answer: &Value) {
+        // At the request's own slices: a refined answer's count is not one a request states.
+        let searched = body.get("search").is_some_and(|s| !s.is_null())
+            && ["external_loads", "slice_tolerance", "accuracy"]
+                .iter()
+                .all(|k| body.get(*k).is_none_or(Value::is_null));
+        let Some(f) = answer["factor_of_safety"].as_f64().filter(|_| searched) else {
+            return;
+        };
+        let mut fixed = body.clone();
+        let object = fixed.as_object_mut().unwrap();
+        let beyond = body["search"]["beyond_ground"] == true || body.get("slope").is_some();
+        for key in ["search", "probabilistic", "sensitivity"] {
+            object.remove(key);
+        }
+        object.insert("include".into(), json!([]));
+        // Circles only: a polyline answer's surface as cut carries a crack's vertical face.
+        let Some(radius) = answer["circle"].get("radius") else {
+            return;
+        };
+        let centre = &answer["circle"]["centre"];
+        let mut circle = json!({"centre": [centre["x"], centre["y"]], "radius": radius});
+        if beyond && body.get("section").is_some() {
+            circle["beyond_ground"] = json!(true);
+        }
+        object.insert("circle".into(), circle);
+        let (status, _, again) = self.post_once("/slope/spencer", &fixed).await;
+        assert_eq!(status, 200, "the searched surface re-solved: {again}");
+        assert_eq!(again["status"], answer["status"], "re-solved: {again}");
+        let g = again["factor_of_safety"].as_f64().unwrap();
+        assert!((g - f).abs() <= 1e-9 * f, "searched F {f}, re-solved {g}");
     }
 
     pub async fn post_raw(
