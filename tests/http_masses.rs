@@ -122,10 +122,16 @@ async fn the_largest_mass_is_analysed_and_the_others_named() {
         (a - x0).abs() < 1e-6 && (b - x1).abs() < 1e-6,
         "{a} … {b} vs {x0} … {x1}"
     );
-    // No third mass, and masses count from 1.
-    for k in [0, 3] {
-        let (status, content_type, problem) =
-            server.post("/slope/spencer", &body(Some(json!(k)))).await;
+    // No third mass, masses count from 1, and a mass is "largest" or a whole number.
+    for k in [
+        json!(0),
+        json!(3),
+        json!(-1),
+        json!(1.5),
+        json!("smallest"),
+        json!(1e9),
+    ] {
+        let (status, content_type, problem) = server.post("/slope/spencer", &body(Some(k))).await;
         assert_problem(status, &content_type, &problem, 422, "circle.mass");
     }
 }

@@ -358,7 +358,7 @@ impl From<NegativeEffectiveStressDto>
 }
 
 /// Which of the masses a circle cuts out of the ground is analysed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
 #[serde(untagged)]
 pub enum MassDto {
     /// `"largest"`: the largest within the section that something drives.
@@ -373,4 +373,21 @@ pub enum MassDto {
 pub enum LargestDto {
     /// The largest within the section that something drives.
     Largest,
+}
+
+impl<'de> Deserialize<'de> for MassDto {
+    /// `"largest"` or a whole number, with words that say so otherwise.
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let value = serde_json::Value::deserialize(d)?;
+        match (&value, value.as_u64()) {
+            (serde_json::Value::String(s), _) if s == "largest" => {
+                Ok(Self::Largest(LargestDto::Largest))
+            }
+            (_, Some(k)) => Ok(Self::Index(usize::try_from(k).unwrap_or(usize::MAX))),
+            _ => Err(serde::de::Error::custom(format!(
+                "{value} is not a mass: give \"largest\" or k, the k-th mass from the left \
+                 (1 ≤ k ≤ 1000)"
+            ))),
+        }
+    }
 }
