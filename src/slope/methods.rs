@@ -200,14 +200,12 @@ impl MethodsDto {
     /// `critical` has one for it.
     pub fn new(found: &MethodFactors, critical: &[(Method, OwnCritical)]) -> Self {
         let of = |method: Method| critical.iter().find(|(m, _)| *m == method).map(|(_, c)| c);
-        let dto = |answer: &Option<MethodAnswer>, method: Method| {
-            answer.as_ref().map(|a| MethodDto::new(a, of(method)))
-        };
+        let dto = |method: Method| found.of(method).map(|a| MethodDto::new(a, of(method)));
         Self {
-            morgenstern_price: dto(&found.morgenstern_price, Method::MorgensternPrice),
-            bishop: dto(&found.bishop, Method::Bishop),
-            janbu: dto(&found.janbu, Method::Janbu),
-            ordinary: dto(&found.ordinary, Method::Ordinary),
+            morgenstern_price: dto(Method::MorgensternPrice),
+            bishop: dto(Method::Bishop),
+            janbu: dto(Method::Janbu),
+            ordinary: dto(Method::Ordinary),
         }
     }
 }

@@ -398,8 +398,7 @@ fn surcharges(dto: &SectionDto) -> Result<Vec<Surcharge>, ApiError> {
 /// A line load beyond the ground as stated would act on its level continuation, which the
 /// section does not describe: refused rather than placed there silently.
 fn on_the_ground(ground: &Polyline, line_loads: &[LineLoad]) -> Result<(), ApiError> {
-    let points = ground.points();
-    let (first, last) = (points[0].0, points[points.len() - 1].0);
+    let (first, last) = ground.x_range();
     match line_loads
         .iter()
         .enumerate()

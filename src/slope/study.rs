@@ -9,7 +9,7 @@
 use serde_json::{json, Value};
 use thrustline_solver::budget::Budget;
 use thrustline_solver::slope::analysis::{
-    analyse, Analysed, Method, MethodAnswer, SlopeAnswer, SlopeOutcome, Target,
+    analyse, Analysed, Method, SlopeAnswer, SlopeOutcome, Target,
 };
 use thrustline_solver::slope::section::SlipShape;
 use thrustline_solver::slope::spencer::SpencerStatus;
@@ -182,21 +182,8 @@ pub fn evaluate(request: Value, method: StudyMethodDto, budget: &Budget) -> Samp
         Some(m) => answer
             .methods
             .as_ref()
-            .and_then(|found| answer_of(found, m))
+            .and_then(|found| found.of(m))
             .and_then(|a| a.factor.factor_of_safety),
     };
     f.map_or(Sampled::Unsolved, Sampled::Solved)
-}
-
-/// `method`'s answer among `found`.
-fn answer_of(
-    found: &thrustline_solver::slope::analysis::MethodFactors,
-    method: Method,
-) -> Option<&MethodAnswer> {
-    match method {
-        Method::MorgensternPrice => found.morgenstern_price.as_ref(),
-        Method::Bishop => found.bishop.as_ref(),
-        Method::Janbu => found.janbu.as_ref(),
-        Method::Ordinary => found.ordinary.as_ref(),
-    }
 }

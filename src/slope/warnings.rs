@@ -281,8 +281,7 @@ fn at_the_section_end(solved: &SolvedSlope) -> Option<Warning> {
     if search.candidates.beyond_ground || section.is_level_beyond_ends() {
         return None;
     }
-    let points = section.ground().points();
-    let (first, last) = (points[0].0, points[points.len() - 1].0);
+    let (first, last) = section.ground().x_range();
     let ((a, _), (b, _)) = problem.ends();
     let near = 1e-6 * (last - first).abs().max(1.0);
     let end = [first, last]

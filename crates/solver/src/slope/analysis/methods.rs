@@ -41,6 +41,18 @@ pub struct MethodFactors {
     pub ordinary: Option<MethodAnswer>,
 }
 
+impl MethodFactors {
+    /// `method`'s answer, when it was asked for.
+    pub fn of(&self, method: Method) -> Option<&MethodAnswer> {
+        match method {
+            Method::MorgensternPrice => self.morgenstern_price.as_ref(),
+            Method::Bishop => self.bishop.as_ref(),
+            Method::Janbu => self.janbu.as_ref(),
+            Method::Ordinary => self.ordinary.as_ref(),
+        }
+    }
+}
+
 /// Each method of `methods` on `model`; Morgenstern–Price starts from Spencer's (F, tan θ), then
 /// Bishop's F with λ = 0, then (1, 0), and answers the first start that converges.
 pub fn side_by_side(

@@ -45,8 +45,7 @@ impl Cut {
     /// (`section` and `mirror`, the section seen from behind: the frames a cut may be in).
     pub fn within_ground(&self, section: &Section, mirror: &Section) -> bool {
         let frame = if self.mirrored { mirror } else { section };
-        let p = frame.ground.points();
-        let (first, last) = (p[0].0, p[p.len() - 1].0);
+        let (first, last) = frame.ground.x_range();
         let rounding = 1e-9 * (last - first).abs().max(1.0);
         self.ends.0 .0 >= first - rounding && self.ends.1 .0 <= last + rounding
     }

@@ -22,8 +22,7 @@ pub(super) type Pieces = SmallVec<[(f64, f64); 4]>;
 pub(super) fn ends(section: &Section, shape: &SlipShape) -> Result<Pieces, SlopeError> {
     let ground = &section.ground;
     // The masses are sized within the stated ground, unless it runs on level by definition.
-    let p = ground.points();
-    let span = (!section.is_level_beyond_ends()).then(|| (p[0].0, p[p.len() - 1].0));
+    let span = (!section.is_level_beyond_ends()).then(|| ground.x_range());
     match shape {
         SlipShape::Circle { centre, radius } => circle_ends(ground, span, *centre, *radius),
         SlipShape::Polyline(line) => polyline_ends(ground, line).map(|e| smallvec![e]),

@@ -200,13 +200,7 @@ impl SectionProblem {
     /// The same circle with its `index`-th mass analysed (from the left, from 0) instead of the
     /// largest.
     pub fn with_mass(mut self, index: usize) -> Result<Self, SlopeError> {
-        self.cut = place::place_mass(
-            &self.section,
-            &self.shape,
-            self.slices,
-            self.seismic,
-            Some(index),
-        )?;
+        self.cut = place::place_mass(&self.section, &self.shape, self.slices, self.seismic, index)?;
         self.mass = Some(index);
         Ok(self)
     }
@@ -220,13 +214,7 @@ impl SectionProblem {
             .unwrap_or_default();
         out.sort_by(|a, b| a.0.total_cmp(&b.0));
         let driven = |i: usize| {
-            let cut = place::place_mass(
-                &self.section,
-                &self.shape,
-                self.slices,
-                self.seismic,
-                Some(i),
-            );
+            let cut = place::place_mass(&self.section, &self.shape, self.slices, self.seismic, i);
             cut.is_ok()
         };
         match out.len() {
@@ -297,8 +285,7 @@ impl SectionProblem {
         if section.is_level_beyond_ends() {
             return None;
         }
-        let points = section.ground().points();
-        let (first, last) = (points[0].0, points[points.len() - 1].0);
+        let (first, last) = section.ground().x_range();
         let (low, high) = self
             .surface()
             .iter()

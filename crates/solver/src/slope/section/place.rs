@@ -23,18 +23,15 @@ pub(super) fn place(
     place_checked(section, mirror, shape, slices, seismic, moment_centre, true)
 }
 
-/// [`place`] of the `index`-th mass a circle cuts, counted from the left from 0 (`None`: the
-/// largest that something drives, as [`place`]).
+/// [`place`] of the `index`-th mass a circle cuts, counted from the left from 0, instead of the
+/// largest that something drives.
 pub(super) fn place_mass(
     section: &Section,
     shape: &SlipShape,
     slices: NonZeroUsize,
     seismic: Seismic,
-    index: Option<usize>,
+    index: usize,
 ) -> Result<Cut, SlopeError> {
-    let Some(index) = index else {
-        return place(section, None, shape, slices, seismic, None);
-    };
     let mut pieces = super::ends::ends(section, shape)?;
     pieces.sort_by(|a, b| a.0.total_cmp(&b.0));
     let Some(&ends) = pieces.get(index) else {

@@ -118,6 +118,11 @@ impl Polyline {
         &self.points
     }
 
+    /// The x of its first and last points: the range it is stated over.
+    pub fn x_range(&self) -> (f64, f64) {
+        (self.points[0].0, self.points[self.points.len() - 1].0)
+    }
+
     /// The same line seen from behind (x → −x): for sections facing left.
     pub fn mirrored(&self) -> Self {
         Self::through(self.points.iter().rev().map(|&(x, y)| (-x, y)).collect())

@@ -278,7 +278,7 @@ impl Support {
 /// x range; a tieback's bond no longer than the tieback.
 pub(super) fn check(supports: &[Support], ground: &Polyline) -> Result<(), SlopeError> {
     let points = ground.points();
-    let (g0, g1) = (points[0].0, points[points.len() - 1].0);
+    let (g0, g1) = ground.x_range();
     let scale = points
         .iter()
         .fold(g1 - g0, |m, p| m.max(p.1.abs()))

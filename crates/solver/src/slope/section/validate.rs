@@ -141,10 +141,7 @@ fn loads(parts: &SectionParts) -> Result<(), SlopeError> {
 
 /// Loads and lines over the ground, bedrock below it.
 fn placement(parts: &SectionParts) -> Result<(), SlopeError> {
-    let (g0, g1) = {
-        let p = parts.ground.points();
-        (p[0].0, p[p.len() - 1].0)
-    };
+    let (g0, g1) = parts.ground.x_range();
     for (index, s) in parts.surcharges.iter().enumerate() {
         if s.x_end < g0 || s.x_start > g1 {
             return Err(SlopeError::Conflict {
